@@ -1,0 +1,51 @@
+// Mesh diagnosis (what `acd info` prints) and the safe repairs done before decomposition.
+#pragma once
+
+#include <acd/mesh.hpp>
+#include <acd/status.hpp>
+
+#include <string>
+#include <vector>
+
+namespace acd {
+
+struct MeshDiagnosis {
+  int vertices = 0;
+  int faces = 0;
+  int edges = 0;
+  int boundaryEdges = 0;
+  int nonManifoldEdges = 0;    // edges with more than two faces
+  int nonManifoldVertices = 0; // vertices whose faces form several fans
+  int components = 0;          // edge-connected
+  int degenerateFaces = 0;     // repeated index or zero area
+  int duplicateFaces = 0;      // same vertex set as an earlier face
+  int duplicateVertices = 0;   // same position as an earlier vertex
+  int unreferencedVertices = 0;
+  int nonFiniteVertices = 0;
+  int indexOutOfRange = 0;
+  bool orientationConsistent = true;
+  bool closed = false;         // no boundary and no non-manifold edges
+  int genus = -1;              // from Euler's formula, per closed component summed; -1 when not defined
+  double volume = 0.0;         // signed, in input units; meaningful when closed
+  double area = 0.0;
+  Box3 bbox;
+  std::string firstProblem;    // one line naming the first offending element, empty when none
+};
+
+MeshDiagnosis diagnose(const TriMesh& mesh);
+
+/// Result of checking and repairing a mesh for solid decomposition.
+struct PreparedSolid {
+  Status status;                      // not ok: the mesh cannot be decomposed as a solid
+  std::vector<TriMesh> components;    // closed, consistently outward-oriented pieces
+  std::vector<std::string> repairs;   // what was changed, one line each, for the report
+};
+
+/// Validates in a fixed order and applies only safe repairs: merge duplicate
+/// vertices, drop faces with a repeated index and exact duplicate faces, orient
+/// each piece consistently and outward, split into edge-connected components.
+/// Refuses (status not ok) non-finite coordinates, bad indices, empty meshes,
+/// non-manifold edges or vertices, open meshes and zero-area faces it cannot drop safely.
+PreparedSolid prepareSolid(const TriMesh& mesh);
+
+}  // namespace acd

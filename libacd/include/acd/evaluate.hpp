@@ -1,0 +1,40 @@
+// Measures any decomposition (a set of convex hulls) against the model it approximates.
+#pragma once
+
+#include <acd/mesh.hpp>
+#include <acd/status.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace acd {
+
+struct EvaluateOptions {
+  std::int64_t volumeSamples = 2'000'000;  // Monte-Carlo points in the joint bounding box
+  std::int64_t surfaceSamples = 200'000;   // points on surfaces for the distance measures
+  std::uint64_t seed = 1;
+  int threads = 0;                         // 0 = all cores; results do not depend on it
+};
+
+/// Every length and volume is in the model's normalised units (minimum enclosing sphere radius 1).
+struct Evaluation {
+  Status status;
+  int hulls = 0;
+  double modelVolume = 0.0;          // exact (divergence theorem)
+  double unionVolume = 0.0;          // Monte-Carlo volume of the union of the hulls
+  double unionVolumeStdErr = 0.0;
+  double unionToModelRatio = 0.0;
+  double misclassifiedShare = 0.0;   // of the sampled points in the box: inside exactly one of model / union
+  double iou = 0.0;                  // |model ∩ union| / |model ∪ union|
+  double iouStdErr = 0.0;
+  double hullOutsideMax = 0.0;       // largest distance from a hull-surface point to the model's solid
+  double hullOutsideMean = 0.0;
+  double modelToHullsMax = 0.0;      // largest distance from a model-surface point to the union of hulls
+  double modelToHullsMean = 0.0;
+  double seconds = 0.0;
+};
+
+Evaluation evaluate(const TriMesh& model, const std::vector<TriMesh>& hulls,
+                    const EvaluateOptions& options = {});
+
+}  // namespace acd

@@ -1,0 +1,37 @@
+// Mesh files: OFF, OBJ, PLY (ASCII and binary), STL (ASCII and binary).
+#pragma once
+
+#include <acd/mesh.hpp>
+#include <acd/status.hpp>
+
+#include <string>
+#include <vector>
+
+namespace acd {
+
+struct ReadResult {
+  Status status;
+  TriMesh mesh;  // polygons are fan-triangulated; STL corners are merged by exact position
+};
+
+/// Reads a mesh by file extension (case-insensitive). Never throws: a missing
+/// file, a parse error or an unknown extension comes back as a Status naming it.
+ReadResult readMesh(const std::string& path);
+
+/// Writes by extension (.off, .obj, .ply, .stl).
+Status writeMesh(const std::string& path, const TriMesh& mesh);
+
+/// One OBJ with one `o NAME` object per mesh: the form physics engines load.
+Status writeObjObjects(const std::string& path, const std::vector<TriMesh>& meshes,
+                       const std::vector<std::string>& names);
+
+struct ObjObjects {
+  Status status;
+  std::vector<TriMesh> objects;  // one per `o` or `g` group, vertices compacted
+  std::vector<std::string> names;
+};
+
+/// Reads an OBJ that holds several objects (ours, CoACD's or V-HACD's hull files).
+ObjObjects readObjObjects(const std::string& path);
+
+}  // namespace acd

@@ -1,0 +1,59 @@
+// Indexed triangle mesh: the one geometry type that crosses libacd's API.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace acd {
+
+using Vec3 = Eigen::Vector3d;
+using Face = std::array<int, 3>;
+
+/// A triangle soup with shared vertices. Faces are counter-clockwise seen from
+/// outside (outward normals) when the mesh bounds a solid.
+struct TriMesh {
+  std::vector<Vec3> vertices;
+  std::vector<Face> faces;
+
+  bool empty() const { return faces.empty(); }
+};
+
+/// Axis-aligned bounding box.
+struct Box3 {
+  Vec3 lo = Vec3::Constant(0.0);
+  Vec3 hi = Vec3::Constant(0.0);
+  Vec3 size() const { return hi - lo; }
+  Vec3 center() const { return 0.5 * (lo + hi); }
+};
+
+Box3 boundingBox(const TriMesh& mesh);
+
+/// Signed volume (divergence theorem); positive for outward-oriented closed meshes.
+double signedVolume(const TriMesh& mesh);
+
+double surfaceArea(const TriMesh& mesh);
+
+/// Unnormalised face normal (cross product of two edges; length = 2 * area).
+Vec3 faceNormal(const TriMesh& mesh, int face);
+
+/// Undirected edge key for hash maps: (min << 32) | max.
+inline std::uint64_t edgeKey(int a, int b) {
+  const auto lo = static_cast<std::uint64_t>(a < b ? a : b);
+  const auto hi = static_cast<std::uint64_t>(a < b ? b : a);
+  return (lo << 32) | hi;
+}
+
+/// Splits a mesh into edge-connected pieces, each with compacted vertices.
+std::vector<TriMesh> splitEdgeConnected(const TriMesh& mesh);
+
+/// Drops vertices no face uses and renumbers the rest (order kept).
+TriMesh compact(const TriMesh& mesh);
+
+/// True when every edge has exactly two faces that use it in opposite directions.
+bool isClosedOriented(const TriMesh& mesh);
+
+}  // namespace acd

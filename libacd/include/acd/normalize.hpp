@@ -1,0 +1,23 @@
+// The paper's units: the model scaled so that its minimum enclosing sphere has radius 1.
+#pragma once
+
+#include <acd/mesh.hpp>
+
+namespace acd {
+
+/// x_normalised = (x - center) * scale.
+struct Normalization {
+  Vec3 center = Vec3::Zero();
+  double scale = 1.0;  // 1 / radius of the minimum enclosing sphere
+
+  Vec3 apply(const Vec3& p) const { return (p - center) * scale; }
+  Vec3 undo(const Vec3& p) const { return p / scale + center; }
+};
+
+/// Minimum enclosing sphere of the vertices (exact, Welzl-style via CGAL).
+Normalization minimumSphereNormalization(const TriMesh& mesh);
+
+TriMesh applyNormalization(const TriMesh& mesh, const Normalization& n);
+TriMesh undoNormalization(const TriMesh& mesh, const Normalization& n);
+
+}  // namespace acd
