@@ -1,0 +1,36 @@
+// Cutting a closed solid by a plane into closed solids (the cross-section is capped).
+#pragma once
+
+#include <acd/mesh.hpp>
+
+#include <string>
+#include <vector>
+
+namespace acd {
+
+/// The plane normal . x = offset; `normal` need not be unit length.
+struct Plane {
+  Vec3 normal = Vec3::UnitZ();
+  double offset = 0.0;
+
+  double signedDistance(const Vec3& p) const { return (normal.dot(p) - offset) / normal.norm(); }
+  static Plane through(const Vec3& point, const Vec3& normal) { return {normal, normal.dot(point)}; }
+};
+
+struct CutResult {
+  bool ok = false;
+  std::string error;             // why the cut failed (the caller may try a nudged plane)
+  std::vector<TriMesh> below;    // edge-connected closed pieces with normal . x <= offset
+  std::vector<TriMesh> above;
+};
+
+/// Splits a closed, outward-oriented mesh. Vertices within `snap` of the plane
+/// count as on it (they are kept where they are, not moved), so no sliver
+/// triangles are made; faces lying in the plane go to the side their normal
+/// points away from. Each cross-section is triangulated once (constrained
+/// Delaunay, exact predicates) and shared by both sides with opposite
+/// orientations, so the pieces' volumes add up to the input's. Fails cleanly
+/// (ok = false) when the section is not a set of simple, disjoint loops.
+CutResult cutByPlane(const TriMesh& mesh, const Plane& plane, double snap = 1e-10);
+
+}  // namespace acd
