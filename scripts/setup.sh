@@ -57,11 +57,16 @@ fi
 
 mapfile -t missing_pic < <(missing_of "${PICTURE_PKGS[@]}")
 if (( ${#missing_pic[@]} > 0 )); then
-    if ! apt-cache policy f3d 2>/dev/null | grep -q 'Candidate: [0-9]'; then
+    # (capture first: `apt-cache ... | grep -q` can fail under pipefail via SIGPIPE)
+    f3d_candidate() { apt-cache policy f3d 2>/dev/null | sed -n 's/^ *Candidate: *//p'; }
+    cand="$(f3d_candidate || true)"
+    if [[ -z "$cand" || "$cand" == "(none)" ]] && (( APT_UPDATED == 0 )); then
         # apt-cache may know nothing before the first update.
-        if (( APT_UPDATED == 0 )); then "${SUDO[@]}" apt-get update -qq >/dev/null 2>&1 || true; APT_UPDATED=1; fi
+        "${SUDO[@]}" apt-get update -qq >/dev/null 2>&1 || true
+        APT_UPDATED=1
+        cand="$(f3d_candidate || true)"
     fi
-    if apt-cache policy f3d 2>/dev/null | grep -q 'Candidate: [0-9]'; then
+    if [[ -n "$cand" && "$cand" != "(none)" ]]; then
         echo "[setup] installing picture packages: ${missing_pic[*]}"
         if ! apt_install "${missing_pic[@]}" >"$LOG" 2>&1; then
             echo "[setup] WARNING: picture packages failed to install (rendering disabled): ${missing_pic[*]}" >&2
