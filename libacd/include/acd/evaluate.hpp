@@ -18,20 +18,28 @@ struct EvaluateOptions {
 
 /// Every length and volume is in the model's normalised units (minimum enclosing sphere radius 1).
 struct Evaluation {
-  Status status;
-  int hulls = 0;
+  Status status;                     // ok; its message notes skipped hulls when there are any
+  int hulls = 0;                     // hulls measured (input hulls minus skipped ones)
+  int skippedHulls = 0;              // hulls with fewer than 4 non-coplanar vertices: ignored
   double modelVolume = 0.0;          // exact (divergence theorem)
   double unionVolume = 0.0;          // Monte-Carlo volume of the union of the hulls
   double unionVolumeStdErr = 0.0;
   double unionToModelRatio = 0.0;
   double misclassifiedShare = 0.0;   // of the sampled points in the box: inside exactly one of model / union
   double iou = 0.0;                  // |model ∩ union| / |model ∪ union|
-  double iouStdErr = 0.0;
+  double iouStdErr = 0.0;            // binomial given the K samples in model or union: sqrt(iou (1 - iou) / K)
   double hullOutsideMax = 0.0;       // largest distance from a hull-surface point to the model's solid
-  double hullOutsideMean = 0.0;
+  double hullOutsideMean = 0.0;      // means are over all surface samples, covered ones counting 0
   double modelToHullsMax = 0.0;      // largest distance from a model-surface point to the union of hulls
   double modelToHullsMean = 0.0;
-  double seconds = 0.0;
+  double seconds = 0.0;              // wall time of the call
+
+  // Raw Monte-Carlo counts (identical for any thread count with the same seed and sample counts).
+  double boxVolume = 0.0;            // sampling box: bounding box of the model and the hulls
+  std::int64_t volumeSamples = 0;
+  std::int64_t samplesInModel = 0;
+  std::int64_t samplesInUnion = 0;
+  std::int64_t samplesInBoth = 0;
 };
 
 Evaluation evaluate(const TriMesh& model, const std::vector<TriMesh>& hulls,

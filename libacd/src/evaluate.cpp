@@ -1,0 +1,804 @@
+// Measures a decomposition (any set of hulls) against the closed model it approximates.
+//
+// Everything happens in the model's normalised units (minimum enclosing sphere of radius 1).
+// Random numbers come from a counter-based hash of (seed, stream, sample index), and work is
+// split into fixed blocks whose partial results are combined in block order, so the result
+// does not depend on the number of threads.
+//
+// Point-in-model test: a ray from the query point towards +z; the signed crossings with the
+// model's triangles (sign = orientation of the triangle's xy-projection) sum to the winding
+// number, and a point is inside when it is not zero. The predicates are exact (filtered,
+// with CGAL's exact fallback), and a query point lying exactly on a projected edge or vertex
+// is moved symbolically by (eps, eps^2) in xy, so every ray meets a shared edge exactly once.
+// Only points exactly on the model's surface get an arbitrary (but deterministic) answer.
+//
+// Hulls: the convex hull of each input hull's vertices (so any input orientation or
+// non-convexity is harmless), as half-spaces n.x <= d for the volume test, as triangles
+// (a canonical fan per planar facet) for surface sampling and exact point-to-hull distances.
+#include <acd/evaluate.hpp>
+#include <acd/normalize.hpp>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/convex_hull_3.h>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <string>
+#include <unordered_map>
+
+namespace acd {
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using P2 = K::Point_2;
+using P3 = K::Point_3;
+
+// Slack of the half-space test, in normalised units: inside a hull iff n.x <= d + kHullSlack.
+constexpr double kHullSlack = 1e-10;
+
+// ---------------------------------------------------------------- random numbers
+
+inline std::uint64_t mix64(std::uint64_t z) {
+  z += 0x9E3779B97F4A7C15ull;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+/// Counter-based uniform numbers in [0, 1): value k of sample i depends only on (seed, stream, i, k).
+struct Stream {
+  std::uint64_t key;
+  Stream(std::uint64_t seed, std::uint64_t stream) : key(mix64(mix64(seed) ^ (stream * 0xD1B54A32D192ED03ull))) {}
+  double uniform(std::uint64_t i, unsigned k) const {
+    return static_cast<double>(mix64(key ^ mix64(i * 4 + k)) >> 11) * 0x1p-53;
+  }
+};
+
+// ---------------------------------------------------------------- parallel blocks
+
+template <class F>
+void forEachBlock(tbb::task_arena& arena, std::size_t blocks, const F& f) {
+  arena.execute([&] {
+    tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, blocks, 1),
+        [&](const tbb::blocked_range<std::size_t>& r) {
+          for (std::size_t b = r.begin(); b != r.end(); ++b) f(b);
+        },
+        tbb::simple_partitioner());
+  });
+}
+
+// ---------------------------------------------------------------- exact predicates
+
+inline int sign(double v) { return (v > 0) - (v < 0); }
+
+/// Exact sign of orient2d(a, b, q) (positive when q is left of a->b).
+inline int orient2d(double ax, double ay, double bx, double by, double qx, double qy) {
+  const double l = (bx - ax) * (qy - ay), r = (by - ay) * (qx - ax);
+  const double det = l - r;
+  const double bound = 3.3306690738754716e-16 * (std::abs(l) + std::abs(r));
+  if (det > bound) return 1;
+  if (-det > bound) return -1;
+  return static_cast<int>(CGAL::orientation(P2(ax, ay), P2(bx, by), P2(qx, qy)));
+}
+
+/// orient2d(a, b, q') with q' = q + (eps, eps^2), eps -> 0: zero only when a and b coincide in xy.
+inline int orient2dPerturbed(double ax, double ay, double bx, double by, double qx, double qy) {
+  const int s = orient2d(ax, ay, bx, by, qx, qy);
+  if (s != 0) return s;
+  if (by != ay) return by < ay ? 1 : -1;  // d/dqx of the determinant is -(by - ay)
+  return bx > ax ? 1 : (bx < ax ? -1 : 0);  // d/dqy is (bx - ax)
+}
+
+// ---------------------------------------------------------------- point in model
+
+class ModelLocator {
+ public:
+  explicit ModelLocator(const TriMesh& m) {
+    const Box3 box = boundingBox(m);
+    lo_ = box.lo;
+    hi_ = box.hi;
+    tris_.reserve(m.faces.size());
+    for (const Face& f : m.faces) {
+      const Vec3 &a = m.vertices[f[0]], &b = m.vertices[f[1]], &c = m.vertices[f[2]];
+      const int s = orient2d(a.x(), a.y(), b.x(), b.y(), c.x(), c.y());
+      if (s == 0) continue;  // vertical in projection: no generic vertical ray meets it
+      Tri t{a, b, c, a.cwiseMin(b).cwiseMin(c), a.cwiseMax(b).cwiseMax(c), s};
+      tris_.push_back(t);
+    }
+    // Grid over xy with about two cells per triangle.
+    const double w = std::max(hi_.x() - lo_.x(), 1e-300), h = std::max(hi_.y() - lo_.y(), 1e-300);
+    const double cells = std::clamp(2.0 * static_cast<double>(tris_.size()), 1.0, 4.0e6);
+    nx_ = std::clamp(static_cast<int>(std::sqrt(cells * w / h)), 1, 4096);
+    ny_ = std::clamp(static_cast<int>(cells / nx_), 1, 4096);
+    sx_ = nx_ / w;
+    sy_ = ny_ / h;
+    start_.assign(static_cast<std::size_t>(nx_) * ny_ + 1, 0);
+    for (int pass = 0; pass < 2; ++pass) {
+      std::vector<int> fill;
+      if (pass == 1) {
+        std::partial_sum(start_.begin(), start_.end(), start_.begin());
+        items_.resize(start_.back());
+        fill.assign(start_.begin(), start_.end() - 1);
+      }
+      for (int t = 0; t < static_cast<int>(tris_.size()); ++t) {
+        const int x0 = cellX(tris_[t].lo.x()), x1 = cellX(tris_[t].hi.x());
+        const int y0 = cellY(tris_[t].lo.y()), y1 = cellY(tris_[t].hi.y());
+        for (int y = y0; y <= y1; ++y)
+          for (int x = x0; x <= x1; ++x) {
+            const std::size_t c = static_cast<std::size_t>(y) * nx_ + x;
+            if (pass == 0)
+              ++start_[c + 1];
+            else
+              items_[fill[c]++] = Item{down(tris_[t].lo.x()), up(tris_[t].hi.x()), down(tris_[t].lo.y()),
+                                       up(tris_[t].hi.y()), up(tris_[t].hi.z()), t};
+          }
+      }
+    }
+  }
+
+  bool inside(const Vec3& q) const {
+    if (!(q.x() >= lo_.x() && q.x() <= hi_.x() && q.y() >= lo_.y() && q.y() <= hi_.y() && q.z() <= hi_.z()))
+      return false;
+    const std::size_t c = static_cast<std::size_t>(cellY(q.y())) * nx_ + cellX(q.x());
+    int winding = 0;
+    for (int k = start_[c]; k < start_[c + 1]; ++k) {
+      // Conservative prefilter on the cell's contiguous records (boxes rounded outwards to float).
+      const Item& it = items_[k];
+      if (q.z() > it.maxz || q.x() < it.minx || q.x() >= it.maxx || q.y() < it.miny || q.y() >= it.maxy) continue;
+      const Tri& t = tris_[it.tri];
+      if (q.z() > t.hi.z()) continue;  // entirely below the point
+      // Bounding box of the triangle against q' = q + (eps, eps^2).
+      if (q.x() < t.lo.x() || q.x() >= t.hi.x() || q.y() < t.lo.y() || q.y() >= t.hi.y()) continue;
+      if (orient2dPerturbed(t.a.x(), t.a.y(), t.b.x(), t.b.y(), q.x(), q.y()) != t.s) continue;
+      if (orient2dPerturbed(t.b.x(), t.b.y(), t.c.x(), t.c.y(), q.x(), q.y()) != t.s) continue;
+      if (orient2dPerturbed(t.c.x(), t.c.y(), t.a.x(), t.a.y(), q.x(), q.y()) != t.s) continue;
+      bool above = q.z() < t.lo.z();
+      if (!above) {
+        // Below the triangle's plane iff the orientation is opposite to the projected one.
+        const auto o = CGAL::orientation(P3(t.a.x(), t.a.y(), t.a.z()), P3(t.b.x(), t.b.y(), t.b.z()),
+                                         P3(t.c.x(), t.c.y(), t.c.z()), P3(q.x(), q.y(), q.z()));
+        above = static_cast<int>(o) == -t.s;
+      }
+      if (above) winding += t.s;
+    }
+    return winding != 0;
+  }
+
+ private:
+  struct Tri {
+    Vec3 a, b, c, lo, hi;
+    int s;  // orientation of the xy-projection
+  };
+  struct Item {
+    float minx, maxx, miny, maxy, maxz;
+    int tri;
+  };
+  static float down(double x) {
+    float f = static_cast<float>(x);
+    return f > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+  }
+  static float up(double x) {
+    float f = static_cast<float>(x);
+    return f < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+  }
+  // Monotone in x, so a point inside a triangle's box always lands in one of the triangle's cells.
+  int cellX(double x) const { return std::clamp(static_cast<int>(std::floor((x - lo_.x()) * sx_)), 0, nx_ - 1); }
+  int cellY(double y) const { return std::clamp(static_cast<int>(std::floor((y - lo_.y()) * sy_)), 0, ny_ - 1); }
+
+  Vec3 lo_, hi_;
+  std::vector<Tri> tris_;
+  int nx_ = 1, ny_ = 1;
+  double sx_ = 1, sy_ = 1;
+  std::vector<int> start_;
+  std::vector<Item> items_;
+};
+
+// ---------------------------------------------------------------- convex hulls
+
+inline bool lexLess(const Vec3& a, const Vec3& b) {
+  return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+}
+
+struct Hull {
+  std::vector<Vec3> normals;  // outward unit normals
+  std::vector<double> offsets;
+  std::vector<std::array<Vec3, 3>> triangles;  // boundary of the convex hull, in a canonical order
+  Vec3 lo, hi;
+
+  // Hulls with many facets get a cell grid over their box. A cell lists the planes that some
+  // corner of the cell violates; the others hold in the whole cell (it is convex), so only the
+  // listed ones are tested. Cells inside every plane or strictly outside one need no test.
+  enum : int { kInside = -1, kOutside = -2 };
+  int res = 0;  // 0: no grid
+  Vec3 cellScale = Vec3::Zero();
+  std::vector<int> cellStart;   // kInside / kOutside, or the start in cellPlanes
+  std::vector<int> cellPlanes;  // listed plane indices, cell after cell; cellStart has one more entry
+
+  bool contains(const Vec3& p) const {
+    if (res == 0) return satisfies(p, 0, static_cast<int>(normals.size()), nullptr);
+    if ((p.array() < lo.array() - kHullSlack).any() || (p.array() > hi.array() + kHullSlack).any()) return false;
+    int c[3];
+    for (int a = 0; a < 3; ++a) c[a] = std::clamp(static_cast<int>(std::floor((p[a] - lo[a]) * cellScale[a])), 0, res - 1);
+    const int cell = (c[2] * res + c[1]) * res + c[0];
+    const int first = cellStart[2 * cell], last = cellStart[2 * cell + 1];
+    if (first == kInside) return true;
+    if (first == kOutside) return false;
+    return satisfies(p, first, last, cellPlanes.data());
+  }
+
+ private:
+  bool satisfies(const Vec3& p, int first, int last, const int* list) const {
+    for (int k = first; k < last; ++k) {
+      const int i = list ? list[k] : k;
+      if (normals[i].dot(p) > offsets[i] + kHullSlack) return false;
+    }
+    return true;
+  }
+
+ public:
+  void buildGrid() {
+    const int planes = static_cast<int>(normals.size());
+    if (planes <= 24) return;
+    res = std::clamp(static_cast<int>(std::lround(2.0 * std::cbrt(static_cast<double>(planes)))), 4, 16);
+    const Vec3 size = hi - lo;
+    for (int a = 0; a < 3; ++a) cellScale[a] = size[a] > 0 ? res / size[a] : 0.0;
+    cellStart.assign(2 * static_cast<std::size_t>(res) * res * res, 0);
+    std::vector<Vec3> corner(8);
+    for (int z = 0; z < res; ++z)
+      for (int y = 0; y < res; ++y)
+        for (int x = 0; x < res; ++x) {
+          for (int k = 0; k < 8; ++k) {
+            const Vec3 t((x + (k & 1)) / static_cast<double>(res), (y + ((k >> 1) & 1)) / static_cast<double>(res),
+                         (z + ((k >> 2) & 1)) / static_cast<double>(res));
+            corner[k] = lo + size.cwiseProduct(t);
+          }
+          const int cell = (z * res + y) * res + x;
+          const int first = static_cast<int>(cellPlanes.size());
+          bool outside = false;
+          for (int i = 0; i < planes && !outside; ++i) {
+            int violated = 0, clear = 0;
+            for (const Vec3& q : corner) {
+              const double v = normals[i].dot(q) - offsets[i];
+              violated += v > 0.0;
+              clear += v > 2 * kHullSlack;
+            }
+            if (clear == 8) outside = true;
+            else if (violated > 0) cellPlanes.push_back(i);
+          }
+          if (outside) {
+            cellPlanes.resize(first);
+            cellStart[2 * cell] = kOutside;
+          } else if (static_cast<int>(cellPlanes.size()) == first) {
+            cellStart[2 * cell] = kInside;
+          } else {
+            cellStart[2 * cell] = first;
+            cellStart[2 * cell + 1] = static_cast<int>(cellPlanes.size());
+          }
+        }
+  }
+};
+
+/// Convex hull of the points as half-spaces and triangles; false for fewer than 4 non-coplanar points.
+/// The output does not depend on the order of the points nor on the hull algorithm's internal order.
+bool buildHull(const std::vector<Vec3>& points, Hull& hull) {
+  std::vector<P3> pts;
+  pts.reserve(points.size());
+  for (const Vec3& p : points) pts.emplace_back(p.x(), p.y(), p.z());
+  // Exact full-dimensionality check.
+  std::size_t i1 = 0, i2 = 0, i3 = 0;
+  while (i1 < pts.size() && pts[i1] == pts[0]) ++i1;
+  if (i1 == pts.size()) return false;
+  while (i2 < pts.size() && CGAL::collinear(pts[0], pts[i1], pts[i2])) ++i2;
+  if (i2 == pts.size()) return false;
+  while (i3 < pts.size() && CGAL::coplanar(pts[0], pts[i1], pts[i2], pts[i3])) ++i3;
+  if (i3 == pts.size()) return false;
+
+  CGAL::Surface_mesh<P3> sm;
+  CGAL::convex_hull_3(pts.begin(), pts.end(), sm);
+  std::vector<Vec3> used;
+  for (auto v : sm.vertices()) {
+    const P3& p = sm.point(v);
+    used.emplace_back(p.x(), p.y(), p.z());
+  }
+  std::sort(used.begin(), used.end(), lexLess);
+  hull.lo = hull.hi = used.front();
+  Vec3 centroid = Vec3::Zero();
+  for (const Vec3& p : used) {
+    hull.lo = hull.lo.cwiseMin(p);
+    hull.hi = hull.hi.cwiseMax(p);
+    centroid += p;
+  }
+  centroid /= static_cast<double>(used.size());
+  // Facets: faces joined across edges where they are exactly coplanar, so that the result does not
+  // depend on how the hull algorithm happened to triangulate a planar facet.
+  const auto nf = static_cast<int>(sm.number_of_faces());
+  std::vector<int> group(nf);
+  std::iota(group.begin(), group.end(), 0);
+  auto root = [&](int x) {
+    while (group[x] != x) x = group[x] = group[group[x]];
+    return x;
+  };
+  for (auto e : sm.edges()) {
+    const auto h = sm.halfedge(e), o = sm.opposite(h);
+    if (sm.is_border(h) || sm.is_border(o)) continue;
+    const P3 &p = sm.point(sm.source(h)), &q = sm.point(sm.target(h));
+    const P3 &r = sm.point(sm.target(sm.next(h))), &t = sm.point(sm.target(sm.next(o)));
+    if (CGAL::coplanar(p, q, r, t)) group[root(static_cast<int>(sm.face(h)))] = root(static_cast<int>(sm.face(o)));
+  }
+  std::vector<std::vector<Vec3>> facets(nf);
+  for (auto f : sm.faces())
+    for (auto v : CGAL::vertices_around_face(sm.halfedge(f), sm)) {
+      const P3& p = sm.point(v);
+      facets[root(static_cast<int>(f))].emplace_back(p.x(), p.y(), p.z());
+    }
+  std::vector<std::vector<Vec3>> polygons;
+  for (auto& vs : facets) {
+    if (vs.size() < 3) continue;
+    std::sort(vs.begin(), vs.end(), lexLess);
+    vs.erase(std::unique(vs.begin(), vs.end()), vs.end());
+    if (vs.size() < 3) continue;
+    // Normal from the vertex set alone: the widest triangle on the first vertex, turned outwards.
+    std::size_t far = 1;
+    for (std::size_t k = 2; k < vs.size(); ++k)
+      if ((vs[k] - vs[0]).squaredNorm() > (vs[far] - vs[0]).squaredNorm()) far = k;
+    Vec3 n = Vec3::Zero();
+    for (std::size_t k = 1; k < vs.size(); ++k) {
+      const Vec3 c = (vs[far] - vs[0]).cross(vs[k] - vs[0]);
+      if (c.squaredNorm() > n.squaredNorm()) n = c;
+    }
+    if (!(n.squaredNorm() > 0.0)) continue;
+    if (n.dot(centroid - vs[0]) > 0) n = -n;
+    // Counter-clockwise around the outward normal, from the smallest vertex; then a fan.
+    const Vec3 u = (vs[far] - vs[0]).normalized(), w = n.normalized().cross(u);
+    Vec3 mid = Vec3::Zero();
+    for (const Vec3& v : vs) mid += v;
+    mid /= static_cast<double>(vs.size());
+    std::vector<std::pair<double, int>> angle;
+    for (std::size_t k = 0; k < vs.size(); ++k)
+      angle.emplace_back(std::atan2((vs[k] - mid).dot(w), (vs[k] - mid).dot(u)), static_cast<int>(k));
+    std::sort(angle.begin(), angle.end());
+    std::vector<Vec3> poly;
+    for (const auto& [a, k] : angle) poly.push_back(vs[k]);
+    std::rotate(poly.begin(), std::min_element(poly.begin(), poly.end(), lexLess), poly.end());
+    polygons.push_back(std::move(poly));
+  }
+  std::sort(polygons.begin(), polygons.end(), [](const auto& a, const auto& b) {
+    return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end(), lexLess);
+  });
+  for (const auto& poly : polygons) {
+    Vec3 n = Vec3::Zero();  // Newell normal of the facet
+    for (std::size_t k = 0; k < poly.size(); ++k) n += poly[k].cross(poly[(k + 1) % poly.size()]);
+    for (std::size_t k = 1; k + 1 < poly.size(); ++k) hull.triangles.push_back({poly[0], poly[k], poly[k + 1]});
+    const double len = n.norm();
+    if (!(len > 0.0)) continue;
+    n /= len;
+    if (n.dot(centroid) > n.dot(poly[0])) n = -n;  // outward
+    // Supporting offset over all hull vertices: a rounded normal cannot cut the hull.
+    double d = -std::numeric_limits<double>::infinity();
+    for (const Vec3& p : used) d = std::max(d, n.dot(p));
+    hull.normals.push_back(n);
+    hull.offsets.push_back(d);
+  }
+  if (hull.normals.empty()) return false;
+  hull.buildGrid();
+  return true;
+}
+
+/// Uniform grid over the sampling box listing, per cell, the hulls whose box meets it.
+class HullIndex {
+ public:
+  HullIndex(const std::vector<Hull>& hulls, const Box3& box) : hulls_(hulls), lo_(box.lo) {
+    n_ = std::clamp(static_cast<int>(std::ceil(std::cbrt(8.0 * static_cast<double>(hulls.size())))), 1, 32);
+    const Vec3 size = box.size();
+    for (int a = 0; a < 3; ++a) s_[a] = n_ / std::max(size[a], 1e-300);
+    cells_.resize(static_cast<std::size_t>(n_) * n_ * n_);
+    for (int h = 0; h < static_cast<int>(hulls.size()); ++h) {
+      const Vec3 lo = hulls[h].lo - Vec3::Constant(kHullSlack), hi = hulls[h].hi + Vec3::Constant(kHullSlack);
+      const int x0 = cell(lo, 0), x1 = cell(hi, 0), y0 = cell(lo, 1), y1 = cell(hi, 1), z0 = cell(lo, 2),
+                z1 = cell(hi, 2);
+      for (int z = z0; z <= z1; ++z)
+        for (int y = y0; y <= y1; ++y)
+          for (int x = x0; x <= x1; ++x) cells_[(static_cast<std::size_t>(z) * n_ + y) * n_ + x].push_back(h);
+    }
+  }
+
+  bool inUnion(const Vec3& p) const {
+    const auto& list = cells_[(static_cast<std::size_t>(cell(p, 2)) * n_ + cell(p, 1)) * n_ + cell(p, 0)];
+    for (int h : list) {
+      const Hull& hull = hulls_[h];
+      if ((p.array() < hull.lo.array() - kHullSlack).any() || (p.array() > hull.hi.array() + kHullSlack).any())
+        continue;
+      if (hull.contains(p)) return true;
+    }
+    return false;
+  }
+
+ private:
+  int cell(const Vec3& p, int a) const {
+    return std::clamp(static_cast<int>(std::floor((p[a] - lo_[a]) * s_[a])), 0, n_ - 1);
+  }
+  const std::vector<Hull>& hulls_;
+  Vec3 lo_;
+  double s_[3] = {1, 1, 1};
+  int n_ = 1;
+  std::vector<std::vector<int>> cells_;
+};
+
+/// Closest point on triangle abc to p (Ericson, Real-Time Collision Detection, 5.1.5).
+Vec3 closestOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return a;
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + (d1 / (d1 - d3)) * ab;
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + (d2 / (d2 - d6)) * ac;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
+  const double denom = va + vb + vc;
+  if (!(denom > 0)) {  // degenerate triangle: nearest of the three edges' endpoints is good enough
+    const double da = (p - a).squaredNorm(), db = (p - b).squaredNorm(), dc = (p - c).squaredNorm();
+    return da <= db && da <= dc ? a : (db <= dc ? b : c);
+  }
+  const double v = vb / denom, w = vc / denom;
+  return a + v * ab + w * ac;
+}
+
+/// Distance from p to the solid convex hull (0 inside).
+double distanceToHull(const Hull& h, const Vec3& p) {
+  if (h.contains(p)) return 0.0;
+  double best = std::numeric_limits<double>::infinity();
+  for (const auto& t : h.triangles) best = std::min(best, (closestOnTriangle(p, t[0], t[1], t[2]) - p).squaredNorm());
+  return std::sqrt(best);
+}
+
+double boxDistance(const Vec3& lo, const Vec3& hi, const Vec3& p) {
+  return (lo - p).cwiseMax(p - hi).cwiseMax(0.0).norm();
+}
+
+/// Bounding-volume hierarchy over triangles for exact closest-distance queries
+/// (nearer child first, boxes farther than the best distance so far are skipped).
+class TriangleBvh {
+ public:
+  explicit TriangleBvh(std::vector<std::array<Vec3, 3>> tris) : tris_(std::move(tris)) {
+    std::vector<int> order(tris_.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::vector<Vec3> centre(tris_.size());
+    for (std::size_t t = 0; t < tris_.size(); ++t) centre[t] = (tris_[t][0] + tris_[t][1] + tris_[t][2]) / 3.0;
+    nodes_.reserve(2 * tris_.size() / kLeaf + 2);
+    if (!tris_.empty()) build(order, centre, 0, static_cast<int>(order.size()));
+    std::vector<std::array<Vec3, 3>> sorted(tris_.size());
+    for (std::size_t k = 0; k < order.size(); ++k) sorted[k] = tris_[order[k]];
+    tris_.swap(sorted);
+  }
+
+  double distance(const Vec3& p) const {
+    if (nodes_.empty()) return std::numeric_limits<double>::infinity();
+    double best = std::numeric_limits<double>::infinity();
+    int stack[128];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const Node& n = nodes_[stack[--top]];
+      if (box2(n, p) >= best) continue;
+      if (n.count > 0) {
+        for (int k = n.first; k < n.first + n.count; ++k) {
+          const auto& t = tris_[k];
+          best = std::min(best, (closestOnTriangle(p, t[0], t[1], t[2]) - p).squaredNorm());
+        }
+        continue;
+      }
+      const int l = n.first, r = n.first + 1;
+      const double dl = box2(nodes_[l], p), dr = box2(nodes_[r], p);
+      if (dl <= dr) {
+        if (dr < best) stack[top++] = r;
+        if (dl < best) stack[top++] = l;
+      } else {
+        if (dl < best) stack[top++] = l;
+        if (dr < best) stack[top++] = r;
+      }
+    }
+    return std::sqrt(best);
+  }
+
+ private:
+  static constexpr int kLeaf = 4;
+  struct Node {
+    Vec3 lo, hi;
+    int first = 0;  // leaf: first triangle; inner: index of the left child (right = first + 1)
+    int count = 0;  // triangles in a leaf, 0 for inner nodes
+  };
+  static double box2(const Node& n, const Vec3& p) { return (n.lo - p).cwiseMax(p - n.hi).cwiseMax(0.0).squaredNorm(); }
+
+  void build(std::vector<int>& order, const std::vector<Vec3>& centre, int begin, int end) {
+    // Median splits: depth ~ log2(n / kLeaf), far below what the query stack holds.
+    struct Job { int node, begin, end; };
+    nodes_.emplace_back();
+    std::vector<Job> jobs{{0, begin, end}};
+    while (!jobs.empty()) {
+      const Job j = jobs.back();
+      jobs.pop_back();
+      Vec3 lo = tris_[order[j.begin]][0], hi = lo, clo = centre[order[j.begin]], chi = clo;
+      for (int k = j.begin; k < j.end; ++k) {
+        for (const Vec3& v : tris_[order[k]]) {
+          lo = lo.cwiseMin(v);
+          hi = hi.cwiseMax(v);
+        }
+        clo = clo.cwiseMin(centre[order[k]]);
+        chi = chi.cwiseMax(centre[order[k]]);
+      }
+      nodes_[j.node].lo = lo;
+      nodes_[j.node].hi = hi;
+      if (j.end - j.begin <= kLeaf) {
+        nodes_[j.node].first = j.begin;
+        nodes_[j.node].count = j.end - j.begin;
+        continue;
+      }
+      int axis = 0;
+      (chi - clo).maxCoeff(&axis);
+      const int mid = (j.begin + j.end) / 2;
+      std::nth_element(order.begin() + j.begin, order.begin() + mid, order.begin() + j.end, [&](int a, int b) {
+        return centre[a][axis] < centre[b][axis] || (centre[a][axis] == centre[b][axis] && a < b);
+      });
+      const int left = static_cast<int>(nodes_.size());
+      nodes_.emplace_back();
+      nodes_.emplace_back();
+      nodes_[j.node].first = left;
+      jobs.push_back({left, j.begin, mid});
+      jobs.push_back({left + 1, mid, j.end});
+    }
+  }
+
+  std::vector<std::array<Vec3, 3>> tris_;
+  std::vector<Node> nodes_;
+};
+
+// ---------------------------------------------------------------- surface sampling
+
+/// Area-weighted triangle picking; samples are a pure function of (stream, index).
+class SurfaceSampler {
+ public:
+  explicit SurfaceSampler(std::vector<std::array<Vec3, 3>> tris) : tris_(std::move(tris)) {
+    cdf_.reserve(tris_.size());
+    double total = 0.0;
+    for (const auto& t : tris_) {
+      total += 0.5 * (t[1] - t[0]).cross(t[2] - t[0]).norm();
+      cdf_.push_back(total);
+    }
+  }
+  double area() const { return cdf_.empty() ? 0.0 : cdf_.back(); }
+  Vec3 sample(const Stream& rng, std::uint64_t i) const {
+    const double u = rng.uniform(i, 0) * cdf_.back();
+    std::size_t k = static_cast<std::size_t>(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin());
+    k = std::min(k, tris_.size() - 1);
+    const double r1 = std::sqrt(rng.uniform(i, 1)), r2 = rng.uniform(i, 2);
+    const auto& t = tris_[k];
+    return (1.0 - r1) * t[0] + r1 * (1.0 - r2) * t[1] + r1 * r2 * t[2];
+  }
+
+ private:
+  std::vector<std::array<Vec3, 3>> tris_;
+  std::vector<double> cdf_;
+};
+
+// ---------------------------------------------------------------- input checks
+
+Status checkMesh(const TriMesh& m, const std::string& name, bool needClosed) {
+  for (std::size_t v = 0; v < m.vertices.size(); ++v)
+    if (!m.vertices[v].allFinite())
+      return Status::error(StatusCode::NonFiniteVertex, name + " vertex " + std::to_string(v) + " is not finite");
+  for (std::size_t f = 0; f < m.faces.size(); ++f)
+    for (int v : m.faces[f])
+      if (v < 0 || v >= static_cast<int>(m.vertices.size()))
+        return Status::error(StatusCode::IndexOutOfRange,
+                             name + " face " + std::to_string(f) + " uses vertex " + std::to_string(v) +
+                                 " of " + std::to_string(m.vertices.size()));
+  if (!needClosed || isClosedOriented(m)) return Status::success();
+  std::unordered_map<std::uint64_t, int> uses;
+  for (const Face& f : m.faces)
+    for (int k = 0; k < 3; ++k) ++uses[edgeKey(f[k], f[(k + 1) % 3])];
+  for (const auto& [key, n] : uses) {
+    const std::string edge = std::to_string(key >> 32) + "-" + std::to_string(key & 0xffffffffu);
+    if (n == 1) return Status::error(StatusCode::OpenMesh, name + " is not closed: boundary edge " + edge);
+    if (n > 2) return Status::error(StatusCode::NonManifoldEdge, name + " has non-manifold edge " + edge);
+  }
+  return Status::error(StatusCode::InconsistentOrientation, name + " is not consistently oriented");
+}
+
+}  // namespace
+
+Evaluation evaluate(const TriMesh& model, const std::vector<TriMesh>& hulls, const EvaluateOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  Evaluation ev;
+  auto fail = [&](Status s) {
+    ev.status = std::move(s);
+    ev.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return ev;
+  };
+  if (options.volumeSamples < 1 || options.surfaceSamples < 0 || options.threads < 0)
+    return fail(Status::error(StatusCode::InvalidParameter,
+                              "volumeSamples must be >= 1, surfaceSamples >= 0 and threads >= 0"));
+  if (model.empty()) return fail(Status::error(StatusCode::EmptyMesh, "model has no faces"));
+  if (Status s = checkMesh(model, "model", true); !s.ok()) return fail(s);
+  if (hulls.empty()) return fail(Status::error(StatusCode::InvalidParameter, "no hulls"));
+  for (std::size_t h = 0; h < hulls.size(); ++h)
+    if (Status s = checkMesh(hulls[h], "hull " + std::to_string(h), false); !s.ok()) return fail(s);
+
+  const Normalization norm = minimumSphereNormalization(model);
+  const TriMesh m = applyNormalization(model, norm);
+  ev.modelVolume = std::abs(signedVolume(m));
+  if (!(ev.modelVolume > 1e-12)) return fail(Status::error(StatusCode::InvalidParameter, "model encloses no volume"));
+
+  // Hulls: convex hull of the (used) vertices, normalised with the model's transform.
+  std::vector<Hull> hs;
+  for (const TriMesh& in : hulls) {
+    std::vector<Vec3> pts;
+    if (in.faces.empty()) {
+      for (const Vec3& p : in.vertices) pts.push_back(norm.apply(p));
+    } else {
+      std::vector<char> used(in.vertices.size(), 0);
+      for (const Face& f : in.faces)
+        for (int v : f) used[v] = 1;
+      for (std::size_t v = 0; v < in.vertices.size(); ++v)
+        if (used[v]) pts.push_back(norm.apply(in.vertices[v]));
+    }
+    Hull h;
+    if (buildHull(pts, h))
+      hs.push_back(std::move(h));
+    else
+      ++ev.skippedHulls;
+  }
+  ev.hulls = static_cast<int>(hs.size());
+  if (hs.empty())
+    return fail(Status::error(StatusCode::InvalidParameter,
+                              "no usable hulls: all " + std::to_string(hulls.size()) +
+                                  " have fewer than 4 non-coplanar vertices"));
+
+  Box3 box = boundingBox(m);
+  for (const Hull& h : hs) {
+    box.lo = box.lo.cwiseMin(h.lo);
+    box.hi = box.hi.cwiseMax(h.hi);
+  }
+  const Vec3 size = box.size();
+  ev.boxVolume = size.prod();
+
+  const ModelLocator locator(m);
+  const HullIndex index(hs, box);
+  tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+
+  // ---- Monte-Carlo volumes.
+  {
+    constexpr std::int64_t kBlock = 1 << 14;
+    const std::int64_t n = options.volumeSamples;
+    const std::size_t blocks = static_cast<std::size_t>((n + kBlock - 1) / kBlock);
+    struct Counts { std::int64_t model = 0, onion = 0, both = 0; };
+    std::vector<Counts> per(blocks);
+    const Stream rng(options.seed, 1);
+    forEachBlock(arena, blocks, [&](std::size_t b) {
+      Counts c;
+      const std::int64_t end = std::min<std::int64_t>(n, static_cast<std::int64_t>(b + 1) * kBlock);
+      for (std::int64_t i = static_cast<std::int64_t>(b) * kBlock; i < end; ++i) {
+        const auto u = static_cast<std::uint64_t>(i);
+        const Vec3 p(box.lo.x() + size.x() * rng.uniform(u, 0), box.lo.y() + size.y() * rng.uniform(u, 1),
+                     box.lo.z() + size.z() * rng.uniform(u, 2));
+        const bool inU = index.inUnion(p), inM = locator.inside(p);
+        c.model += inM;
+        c.onion += inU;
+        c.both += inM && inU;
+      }
+      per[b] = c;
+    });
+    for (const Counts& c : per) {
+      ev.samplesInModel += c.model;
+      ev.samplesInUnion += c.onion;
+      ev.samplesInBoth += c.both;
+    }
+    ev.volumeSamples = n;
+    const double N = static_cast<double>(n);
+    const double pU = ev.samplesInUnion / N;
+    ev.unionVolume = ev.boxVolume * pU;
+    ev.unionVolumeStdErr = ev.boxVolume * std::sqrt(pU * (1.0 - pU) / N);
+    ev.unionToModelRatio = ev.unionVolume / ev.modelVolume;
+    ev.misclassifiedShare = static_cast<double>(ev.samplesInModel + ev.samplesInUnion - 2 * ev.samplesInBoth) / N;
+    // IoU standard error: given the K samples that fell in model or union, the number in both is
+    // Binomial(K, IoU), so SE = sqrt(IoU (1 - IoU) / K) (the randomness of K itself is ignored).
+    const std::int64_t k = ev.samplesInModel + ev.samplesInUnion - ev.samplesInBoth;
+    if (k > 0) {
+      ev.iou = static_cast<double>(ev.samplesInBoth) / static_cast<double>(k);
+      ev.iouStdErr = std::sqrt(ev.iou * (1.0 - ev.iou) / static_cast<double>(k));
+    }
+  }
+
+  // ---- Surface distances.
+  if (options.surfaceSamples > 0) {
+    constexpr std::int64_t kBlock = 1 << 12;
+    const std::int64_t n = options.surfaceSamples;
+    const std::size_t blocks = static_cast<std::size_t>((n + kBlock - 1) / kBlock);
+    struct Acc { double sum = 0.0, max = 0.0; };
+
+    // Hull surfaces -> model solid.
+    std::vector<std::array<Vec3, 3>> modelSurface;
+    modelSurface.reserve(m.faces.size());
+    for (const Face& f : m.faces) modelSurface.push_back({m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]});
+    const TriangleBvh tree(modelSurface);
+
+    std::vector<std::array<Vec3, 3>> hullSurface;
+    for (const Hull& h : hs) hullSurface.insert(hullSurface.end(), h.triangles.begin(), h.triangles.end());
+    const SurfaceSampler hullSampler(std::move(hullSurface)), modelSampler(std::move(modelSurface));
+
+    std::vector<Acc> per(blocks);
+    const Stream hullRng(options.seed, 2), modelRng(options.seed, 3);
+    forEachBlock(arena, blocks, [&](std::size_t b) {
+      Acc acc;
+      const std::int64_t end = std::min<std::int64_t>(n, static_cast<std::int64_t>(b + 1) * kBlock);
+      for (std::int64_t i = static_cast<std::int64_t>(b) * kBlock; i < end; ++i) {
+        const Vec3 p = hullSampler.sample(hullRng, static_cast<std::uint64_t>(i));
+        if (locator.inside(p)) continue;
+        const double d = tree.distance(p);
+        acc.sum += d;
+        acc.max = std::max(acc.max, d);
+      }
+      per[b] = acc;
+    });
+    double sum = 0.0;
+    for (const Acc& a : per) {
+      sum += a.sum;
+      ev.hullOutsideMax = std::max(ev.hullOutsideMax, a.max);
+    }
+    ev.hullOutsideMean = sum / static_cast<double>(n);
+
+    // Model surface -> union of hulls.
+    std::fill(per.begin(), per.end(), Acc{});
+    if (modelSampler.area() > 0.0) {
+      forEachBlock(arena, blocks, [&](std::size_t b) {
+        Acc acc;
+        std::vector<std::pair<double, int>> order(hs.size());
+        const std::int64_t end = std::min<std::int64_t>(n, static_cast<std::int64_t>(b + 1) * kBlock);
+        for (std::int64_t i = static_cast<std::int64_t>(b) * kBlock; i < end; ++i) {
+          const Vec3 p = modelSampler.sample(modelRng, static_cast<std::uint64_t>(i));
+          if (index.inUnion(p)) continue;
+          // Nearest hulls first by box distance, a lower bound of the hull distance.
+          for (std::size_t h = 0; h < hs.size(); ++h) order[h] = {boxDistance(hs[h].lo, hs[h].hi, p), static_cast<int>(h)};
+          std::sort(order.begin(), order.end());
+          double best = std::numeric_limits<double>::infinity();
+          for (const auto& [bound, h] : order) {
+            if (bound >= best) break;
+            best = std::min(best, distanceToHull(hs[h], p));
+          }
+          acc.sum += best;
+          acc.max = std::max(acc.max, best);
+        }
+        per[b] = acc;
+      });
+    }
+    sum = 0.0;
+    for (const Acc& a : per) {
+      sum += a.sum;
+      ev.modelToHullsMax = std::max(ev.modelToHullsMax, a.max);
+    }
+    ev.modelToHullsMean = sum / static_cast<double>(n);
+  }
+
+  if (ev.skippedHulls > 0)
+    ev.status.message = "skipped " + std::to_string(ev.skippedHulls) + " of " + std::to_string(hulls.size()) +
+                        " hulls with fewer than 4 non-coplanar vertices";
+  ev.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return ev;
+}
+
+}  // namespace acd
