@@ -1,3 +1,337 @@
-// acd: command line for approximate convex decomposition (placeholder until the driver lands).
+// acd: approximate convex decomposition from the command line.
+//   acd decompose MODEL [-t TAU] ... -o OUTDIR   components, hulls.obj, report.json, summary table
+//   acd info MODEL                              mesh diagnosis
+//   acd evaluate MODEL HULLS.obj                how well any set of hulls approximates the model
+// Exit codes are listed in exitCodes() and in --help.
+#include <acd/decompose.hpp>
+#include <acd/diagnosis.hpp>
+#include <acd/evaluate.hpp>
+#include <acd/io.hpp>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <unistd.h>
+
+#include <algorithm>
 #include <cstdio>
-int main() { std::puts("acd: under construction"); return 0; }
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+namespace {
+
+enum Exit : int {
+  kOk = 0,
+  kUsage = 1,           // bad command line (CLI11 prints the reason)
+  kBadInput = 2,        // the model cannot be read or is not a valid solid
+  kBadParameter = 3,    // tau, epsilon, delta, threads out of range
+  kUnresolved = 4,      // finished, but some component still exceeds tau (see report)
+  kOutputFailed = 5,    // could not write results
+  kInternal = 6,        // a bug: please report
+};
+
+const char* exitCodes() {
+  return "Exit codes: 0 success; 1 bad command line; 2 unreadable or invalid model; 3 invalid parameter;\n"
+         "4 some component still exceeds tau; 5 cannot write output; 6 internal error.";
+}
+
+int exitFor(const acd::Status& s) {
+  switch (s.code) {
+    case acd::StatusCode::Ok: return kOk;
+    case acd::StatusCode::InvalidParameter: return kBadParameter;
+    case acd::StatusCode::InternalError: return kInternal;
+    default: return kBadInput;
+  }
+}
+
+int fail(const std::string& what, const acd::Status& s) {
+  std::fprintf(stderr, "acd: %s: %s\n", what.c_str(), s.message.c_str());
+  return exitFor(s);
+}
+
+acd::ReadResult load(const std::string& path) {
+  acd::ReadResult r = acd::readMesh(path);
+  return r;
+}
+
+// ---------------------------------------------------------------- info
+int runInfo(const std::string& path) {
+  acd::ReadResult r = load(path);
+  if (!r.status.ok()) return fail(path, r.status);
+  const acd::MeshDiagnosis d = acd::diagnose(r.mesh);
+  auto yes = [](bool b) { return b ? "yes" : "no"; };
+  std::printf("%s\n", path.c_str());
+  std::printf("  vertices              %d\n", d.vertices);
+  std::printf("  faces                 %d\n", d.faces);
+  std::printf("  edges                 %d\n", d.edges);
+  std::printf("  boundary edges        %d\n", d.boundaryEdges);
+  std::printf("  non-manifold edges    %d\n", d.nonManifoldEdges);
+  std::printf("  non-manifold vertices %d\n", d.nonManifoldVertices);
+  std::printf("  components            %d\n", d.components);
+  std::printf("  consistent orientation %s\n", yes(d.orientationConsistent));
+  std::printf("  degenerate faces      %d\n", d.degenerateFaces);
+  std::printf("  duplicate faces       %d\n", d.duplicateFaces);
+  std::printf("  duplicate vertices    %d\n", d.duplicateVertices);
+  std::printf("  non-finite vertices   %d\n", d.nonFiniteVertices);
+  std::printf("  closed                %s\n", yes(d.closed));
+  if (d.genus >= 0)
+    std::printf("  genus                 %d\n", d.genus);
+  else
+    std::printf("  genus                 undefined (not closed)\n");
+  std::printf("  volume                %.9g%s\n", d.volume, d.closed ? "" : " (not closed: meaningless)");
+  std::printf("  area                  %.9g\n", d.area);
+  std::printf("  bounding box          [%g %g %g] - [%g %g %g]\n", d.bbox.lo.x(), d.bbox.lo.y(), d.bbox.lo.z(),
+              d.bbox.hi.x(), d.bbox.hi.y(), d.bbox.hi.z());
+  if (!d.firstProblem.empty()) std::printf("  first problem         %s\n", d.firstProblem.c_str());
+  const acd::PreparedSolid p = acd::prepareSolid(r.mesh);
+  std::printf("  solid decomposition   %s\n", p.status.ok() ? "possible" : p.status.message.c_str());
+  for (const auto& line : p.repairs) std::printf("  repair                %s\n", line.c_str());
+  return kOk;
+}
+
+// ---------------------------------------------------------------- decompose
+struct DecomposeArgs {
+  std::string model;
+  std::string out = "acd-out";
+  acd::DecomposeOptions options;
+  bool noGrouping = false;
+  bool quiet = false;
+};
+
+json reportJson(const DecomposeArgs& a, const acd::Decomposition& d, const acd::MeshDiagnosis& input) {
+  json j;
+  j["model"] = a.model;
+  j["parameters"] = {{"tau", d.options.tau},
+                     {"epsilon", d.options.epsilon},
+                     {"delta", d.options.delta},
+                     {"feature_grouping", d.options.featureGrouping},
+                     {"threads", d.options.threads},
+                     {"units", "normalised: minimum enclosing sphere radius 1"}};
+  const int edges = d.stats.inputEdges;
+  j["input"] = {{"vertices", input.vertices},
+                {"faces", input.faces},
+                {"edges", edges},
+                {"notches", d.stats.inputNotches},
+                {"notch_fraction", edges > 0 ? double(d.stats.inputNotches) / edges : 0.0},
+                {"volume", d.stats.inputVolume},
+                {"genus", input.genus},
+                {"normalization", {{"center", {d.normalization.center.x(), d.normalization.center.y(), d.normalization.center.z()}},
+                                   {"scale", d.normalization.scale}}},
+                {"repairs", d.repairs}};
+  json comps = json::array();
+  double volume = 0, hullVolume = 0, maxConcavity = 0;
+  int unresolved = 0;
+  for (std::size_t i = 0; i < d.components.size(); ++i) {
+    const auto& c = d.components[i];
+    comps.push_back({{"id", i},
+                     {"volume", c.volume},
+                     {"hull_volume", c.hullVolume},
+                     {"concavity", c.concavity},
+                     {"vertices", c.mesh.vertices.size()},
+                     {"faces", c.mesh.faces.size()},
+                     {"hull_vertices", c.hull.vertices.size()},
+                     {"hull_faces", c.hull.faces.size()},
+                     {"depth", c.depth},
+                     {"source_piece", c.source},
+                     {"unresolved", c.unresolved}});
+    volume += c.volume;
+    hullVolume += c.hullVolume;
+    maxConcavity = std::max(maxConcavity, c.concavity);
+    unresolved += c.unresolved;
+  }
+  j["components"] = comps;
+  j["totals"] = {{"components", d.components.size()},
+                 {"volume", volume},
+                 {"hull_volume", hullVolume},
+                 {"volume_relative_error", d.stats.inputVolume > 0 ? std::abs(volume - d.stats.inputVolume) / d.stats.inputVolume : 0.0},
+                 {"max_concavity", maxConcavity},
+                 {"unresolved", unresolved},
+                 {"cuts", d.stats.cuts},
+                 {"fallback_cuts", d.stats.fallbackCuts},
+                 {"rejected_planes", d.stats.failedCuts},
+                 {"bridges_measured", d.stats.bridges},
+                 {"bridge_refinements", d.stats.refinements}};
+  j["timing"] = {{"prepare_seconds", d.times.prepare},
+                 {"concavity_cpu_seconds", d.times.concavity},
+                 {"grouping_cpu_seconds", d.times.grouping},
+                 {"cutting_cpu_seconds", d.times.cutting},
+                 {"hulls_seconds", d.times.hulls},
+                 {"total_seconds", d.times.total}};
+  return j;
+}
+
+void printSummary(const DecomposeArgs& a, const acd::Decomposition& d) {
+  const auto& cs = d.components;
+  double volume = 0, hullVolume = 0, maxConcavity = 0;
+  for (const auto& c : cs) volume += c.volume, hullVolume += c.hullVolume, maxConcavity = std::max(maxConcavity, c.concavity);
+  std::printf("\n  %-5s %9s %9s %10s %10s %10s\n", "part", "vertices", "faces", "volume %", "hull/vol", "concavity");
+  const std::size_t shown = std::min<std::size_t>(cs.size(), 40);
+  for (std::size_t i = 0; i < shown; ++i) {
+    const auto& c = cs[i];
+    std::printf("  %-5zu %9zu %9zu %10.3f %10.3f %10.4f%s\n", i, c.mesh.vertices.size(), c.mesh.faces.size(),
+                100.0 * c.volume / d.stats.inputVolume, c.volume > 0 ? c.hullVolume / c.volume : 0.0, c.concavity,
+                c.unresolved ? "  (unresolved)" : "");
+  }
+  if (shown < cs.size()) std::printf("  ... %zu more in report.json\n", cs.size() - shown);
+  std::printf("\n  model          %s\n", a.model.c_str());
+  std::printf("  tau            %g   (epsilon %g, delta %g, feature grouping %s)\n", d.options.tau, d.options.epsilon,
+              d.options.delta, d.options.featureGrouping ? "on" : "off");
+  std::printf("  components     %zu\n", cs.size());
+  std::printf("  max concavity  %.4f\n", maxConcavity);
+  std::printf("  volume         %.6g of %.6g (relative error %.2e)\n", volume, d.stats.inputVolume,
+              std::abs(volume - d.stats.inputVolume) / d.stats.inputVolume);
+  std::printf("  hulls / model  %.4f\n", hullVolume / d.stats.inputVolume);
+  std::printf("  cuts           %d (%d by the bisector fallback, %d planes rejected)\n", d.stats.cuts,
+              d.stats.fallbackCuts, d.stats.failedCuts);
+  std::printf("  time           %.3f s (prepare %.3f, hulls %.3f; CPU: concavity %.3f, grouping %.3f, cutting %.3f)\n",
+              d.times.total, d.times.prepare, d.times.hulls, d.times.concavity, d.times.grouping, d.times.cutting);
+  std::printf("  output         %s\n", a.out.c_str());
+  for (const auto& line : d.repairs) std::printf("  repaired       %s\n", line.c_str());
+}
+
+int runDecompose(DecomposeArgs& a) {
+  a.options.featureGrouping = !a.noGrouping;
+  const acd::Status valid = acd::validate(a.options);
+  if (!valid.ok()) return fail("invalid parameter", valid);
+  acd::ReadResult r = load(a.model);
+  if (!r.status.ok()) return fail(a.model, r.status);
+  const acd::MeshDiagnosis diagnosis = acd::diagnose(r.mesh);
+  const bool showProgress = !a.quiet && isatty(fileno(stderr));
+  if (showProgress)
+    a.options.progress = [](int done, int pending) {
+      std::fprintf(stderr, "\r  decomposing: %d final, %d pending   ", done, pending);
+      std::fflush(stderr);
+    };
+  acd::Decomposition d = acd::decompose(r.mesh, a.options);
+  if (showProgress) std::fprintf(stderr, "\r%60s\r", "");
+  if (!d.status.ok()) return fail(a.model, d.status);
+
+  std::error_code ec;
+  fs::create_directories(a.out, ec);
+  if (ec) return fail("output", acd::Status::error(acd::StatusCode::FileUnreadable, "cannot create " + a.out + ": " + ec.message())), kOutputFailed;
+  std::vector<acd::TriMesh> hulls;
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < d.components.size(); ++i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "component_%03zu", i);
+    const acd::Status s = acd::writeMesh((fs::path(a.out) / (std::string(name) + ".off")).string(), d.components[i].mesh);
+    if (!s.ok()) return (void)fail("output", s), kOutputFailed;
+    hulls.push_back(d.components[i].hull);
+    std::snprintf(name, sizeof name, "hull_%03zu", i);
+    names.emplace_back(name);
+  }
+  acd::Status s = acd::writeObjObjects((fs::path(a.out) / "hulls.obj").string(), hulls, names);
+  if (!s.ok()) return (void)fail("output", s), kOutputFailed;
+  std::ofstream report(fs::path(a.out) / "report.json");
+  report << reportJson(a, d, diagnosis).dump(2) << "\n";
+  if (!report) return (void)fail("output", acd::Status::error(acd::StatusCode::FileUnreadable, "cannot write report.json")), kOutputFailed;
+  if (!a.quiet) printSummary(a, d);
+  const bool unresolved = std::any_of(d.components.begin(), d.components.end(), [](const auto& c) { return c.unresolved; });
+  if (unresolved) {
+    std::fprintf(stderr, "acd: warning: some components still exceed tau (marked unresolved in report.json)\n");
+    return kUnresolved;
+  }
+  return kOk;
+}
+
+// ---------------------------------------------------------------- evaluate
+int runEvaluate(const std::string& modelPath, const std::string& hullPath, acd::EvaluateOptions options, bool asJson) {
+  acd::ReadResult r = load(modelPath);
+  if (!r.status.ok()) return fail(modelPath, r.status);
+  acd::ObjObjects hulls = acd::readObjObjects(hullPath);
+  if (!hulls.status.ok()) return fail(hullPath, hulls.status);
+  const acd::PreparedSolid p = acd::prepareSolid(r.mesh);
+  if (!p.status.ok()) return fail(modelPath, p.status);
+  acd::TriMesh model;
+  for (const auto& c : p.components) {
+    const int base = static_cast<int>(model.vertices.size());
+    model.vertices.insert(model.vertices.end(), c.vertices.begin(), c.vertices.end());
+    for (auto f : c.faces) model.faces.push_back({f[0] + base, f[1] + base, f[2] + base});
+  }
+  const acd::Evaluation e = acd::evaluate(model, hulls.objects, options);
+  if (!e.status.ok()) return fail("evaluate", e.status);
+  if (asJson) {
+    json j = {{"model", modelPath}, {"hulls_file", hullPath}, {"hulls", e.hulls}, {"model_volume", e.modelVolume},
+              {"union_volume", e.unionVolume}, {"union_volume_stderr", e.unionVolumeStdErr},
+              {"union_to_model", e.unionToModelRatio}, {"misclassified_share", e.misclassifiedShare},
+              {"iou", e.iou}, {"iou_stderr", e.iouStdErr}, {"hull_outside_max", e.hullOutsideMax},
+              {"hull_outside_mean", e.hullOutsideMean}, {"model_to_hulls_max", e.modelToHullsMax},
+              {"model_to_hulls_mean", e.modelToHullsMean}, {"seconds", e.seconds}};
+    std::cout << j.dump(2) << "\n";
+    return kOk;
+  }
+  std::printf("  model            %s\n  hulls            %s (%d hulls)\n", modelPath.c_str(), hullPath.c_str(), e.hulls);
+  std::printf("  model volume     %.5f   (normalised units)\n", e.modelVolume);
+  std::printf("  union volume     %.5f ± %.5f   (%.4f × model)\n", e.unionVolume, e.unionVolumeStdErr, e.unionToModelRatio);
+  std::printf("  IoU              %.4f ± %.4f\n", e.iou, e.iouStdErr);
+  std::printf("  misclassified    %.4f %% of sampled points\n", 100.0 * e.misclassifiedShare);
+  std::printf("  hulls stick out  max %.4f, mean %.5f\n", e.hullOutsideMax, e.hullOutsideMean);
+  std::printf("  model uncovered  max %.4f, mean %.5f\n", e.modelToHullsMax, e.modelToHullsMean);
+  std::printf("  time             %.2f s\n", e.seconds);
+  return kOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"acd: approximate convex decomposition of polyhedra (Lien & Amato, SPM 2007).\n"
+               "Lengths (tau, epsilon, delta) are in normalised units: the model scaled so that its\n"
+               "minimum enclosing sphere has radius 1. Output meshes are in the input's coordinates."};
+  app.footer(exitCodes());
+  app.require_subcommand(1);
+
+  DecomposeArgs da;
+  auto* dec = app.add_subcommand("decompose", "Solid ACD of a closed mesh (OFF, OBJ, PLY, STL)");
+  dec->add_option("model", da.model, "Input mesh")->required();
+  dec->add_option("-t,--tau", da.options.tau, "Concavity tolerance: every component ends with concavity <= tau")
+      ->capture_default_str();
+  dec->add_option("--epsilon", da.options.epsilon, "Bridge clustering tolerance (default tau/2)");
+  dec->add_option("--delta", da.options.delta, "Douglas-Peucker knot tolerance (default tau/20)");
+  dec->add_flag("--no-grouping", da.noGrouping,
+                "Resolve the most concave notch with a plane bisecting its dihedral angle (no feature grouping)");
+  dec->add_option("--threads", da.options.threads, "Worker threads, 0 = all cores; output is identical for any value")
+      ->capture_default_str();
+  dec->add_option("-o,--out", da.out, "Output folder: component_NNN.off, hulls.obj (one object per hull), report.json")
+      ->capture_default_str();
+  dec->add_flag("-q,--quiet", da.quiet, "No summary table and no progress");
+
+  std::string infoModel;
+  auto* info = app.add_subcommand("info", "Diagnose a mesh: counts, manifoldness, orientation, genus, volume");
+  info->add_option("model", infoModel, "Input mesh")->required();
+
+  std::string evalModel, evalHulls;
+  acd::EvaluateOptions eo;
+  bool evalJson = false;
+  auto* eval = app.add_subcommand("evaluate", "Measure a set of convex hulls (one OBJ object each) against a model");
+  eval->add_option("model", evalModel, "The closed model")->required();
+  eval->add_option("hulls", evalHulls, "OBJ with one object per hull (acd, CoACD, V-HACD output)")->required();
+  eval->add_option("--samples", eo.volumeSamples, "Monte-Carlo points for volumes and IoU")->capture_default_str();
+  eval->add_option("--surface-samples", eo.surfaceSamples, "Surface points for the distance measures")->capture_default_str();
+  eval->add_option("--seed", eo.seed, "Random seed")->capture_default_str();
+  eval->add_option("--threads", eo.threads, "Worker threads, 0 = all cores")->capture_default_str();
+  eval->add_flag("--json", evalJson, "Print JSON instead of a table");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kOk : kUsage;
+  }
+  try {
+    if (*dec) return runDecompose(da);
+    if (*info) return runInfo(infoModel);
+    if (*eval) {
+      if (eo.volumeSamples <= 0 || eo.surfaceSamples <= 0)
+        return fail("invalid parameter", acd::Status::error(acd::StatusCode::InvalidParameter, "samples must be positive"));
+      return runEvaluate(evalModel, evalHulls, eo, evalJson);
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "acd: internal error: %s\n", e.what());
+    return kInternal;
+  }
+  return kUsage;
+}

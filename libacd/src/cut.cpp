@@ -38,12 +38,13 @@ bool triangulateSection(const std::vector<Vec3>& points, const std::vector<std::
       for (int v : {a, b}) {
         if (handle.count(v)) continue;
         const Vec3& p = points[v];
+        const auto before = cdt.number_of_vertices();
         auto vh = cdt.insert(K::Point_2(u.dot(p), w.dot(p)));
-        if (vh->info() != 0 && vh->info() != v + 1) {
+        if (cdt.number_of_vertices() == before) {
           error = "two section vertices project to the same point";
           return false;
         }
-        vh->info() = v + 1;  // 0 means "unset"
+        vh->info() = v + 1;
         handle[v] = vh;
       }
     for (const auto& [a, b] : edges) cdt.insert_constraint(handle[a], handle[b]);

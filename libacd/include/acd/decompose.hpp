@@ -1,0 +1,74 @@
+// Solid approximate convex decomposition (Lien & Amato 2007, Algorithm 1).
+#pragma once
+
+#include <acd/mesh.hpp>
+#include <acd/normalize.hpp>
+#include <acd/status.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace acd {
+
+struct DecomposeOptions {
+  double tau = 0.05;             // concavity tolerance, normalised units (min enclosing sphere radius 1)
+  double epsilon = -1.0;         // bridge clustering tolerance; < 0 means tau / 2
+  double delta = -1.0;           // Douglas-Peucker knot tolerance; < 0 means tau / 20
+  bool featureGrouping = true;   // false: bisect the notch's dihedral angle (Section 3.2)
+  int threads = 0;               // 0: all cores. The output never depends on it.
+  int maxComponents = 10000;     // safety net against runaway recursion
+  int maxDepth = 64;
+  /// Called from the calling thread after each round: components done, components pending.
+  std::function<void(int done, int pending)> progress;
+};
+
+/// Parameters after defaults are applied; `validate` rejects nonsense with a message.
+DecomposeOptions resolvedOptions(const DecomposeOptions& options);
+Status validate(const DecomposeOptions& options);
+
+struct Component {
+  TriMesh mesh;            // closed, outward; input coordinates
+  TriMesh hull;            // its convex hull; input coordinates
+  double volume = 0.0;     // normalised units
+  double hullVolume = 0.0; // normalised units
+  double concavity = 0.0;  // normalised units, by the library's measure
+  int depth = 0;           // cuts from the input to this component
+  int source = 0;          // which connected piece of the input it came from
+  bool unresolved = false; // concavity > tau but no cut could be made (reported, never hidden)
+};
+
+struct PhaseTimes {
+  double prepare = 0.0, concavity = 0.0, grouping = 0.0, cutting = 0.0, hulls = 0.0, total = 0.0;  // seconds
+  // concavity/grouping/cutting are summed over worker threads (CPU seconds); prepare, hulls, total are wall.
+};
+
+struct DecomposeStats {
+  int cuts = 0;               // successful plane cuts
+  int fallbackCuts = 0;       // cuts where the feature plane failed and the bisector was used
+  int failedCuts = 0;         // planes rejected (could not cut cleanly or did not split)
+  int bridges = 0;            // bridges measured over all rounds
+  int refinements = 0;        // bridge patches split to keep Observation 4.1
+  int inputEdges = 0;
+  int inputNotches = 0;       // concave edges of the input
+  double inputVolume = 0.0;   // normalised units
+};
+
+struct Decomposition {
+  Status status;
+  std::vector<Component> components;
+  Normalization normalization;
+  std::vector<std::string> repairs;   // what prepareSolid changed
+  DecomposeStats stats;
+  PhaseTimes times;
+  DecomposeOptions options;           // as resolved
+};
+
+/// Decomposes a closed mesh (several closed pieces are decomposed separately).
+/// Invalid input or parameters come back in `status`; nothing throws.
+Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options = {});
+
+/// Number of concave (reflex) edges of a closed mesh: dihedral turn below -angle radians.
+int countNotches(const TriMesh& mesh, double angle = 1e-6);
+
+}  // namespace acd

@@ -1,0 +1,249 @@
+// Algorithm 1, breadth first: every round measures all pending pieces in parallel,
+// and each piece either is final (concavity <= tau) or is cut into children that
+// join the next round. Results land in per-piece slots and are gathered in piece
+// order, so the output is the same for any number of threads.
+#include <acd/concavity.hpp>
+#include <acd/cut_plane.hpp>
+#include <acd/decompose.hpp>
+#include <acd/diagnosis.hpp>
+#include <acd/features.hpp>
+#include <acd/hull.hpp>
+
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+namespace acd {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+struct Piece {
+  TriMesh mesh;  // normalised
+  int depth = 0;
+  int source = 0;
+};
+
+struct Outcome {
+  bool final = true;
+  Component component;
+  std::vector<Piece> children;
+  PhaseTimes times;
+  DecomposeStats stats;
+};
+
+/// Cuts `piece` by `plane`; succeeds only if it really splits into pieces with volume.
+bool tryCut(const Piece& piece, Plane plane, std::vector<Piece>& children) {
+  const double nudges[] = {0.0, 1e-7, -1e-7, 1e-5, -1e-5};
+  for (double nudge : nudges) {
+    Plane p = plane;
+    p.offset += nudge * p.normal.norm();
+    CutResult cut = cutByPlane(piece.mesh, p);
+    if (!cut.ok || cut.below.empty() || cut.above.empty()) continue;
+    std::vector<Piece> out;
+    bool valid = true;
+    for (auto* side : {&cut.below, &cut.above})
+      for (TriMesh& m : *side) {
+        if (signedVolume(m) <= 1e-12) valid = false;
+        out.push_back({std::move(m), piece.depth + 1, piece.source});
+      }
+    if (!valid) continue;
+    children = std::move(out);
+    return true;
+  }
+  return false;
+}
+
+Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
+  Outcome out;
+  auto t = Clock::now();
+  SurfaceGraph graph(piece.mesh);
+  ConcavityOptions co;
+  co.epsilon = o.epsilon;
+  const ConcavityMap map = measureConcavity(piece.mesh, graph, co);
+  out.times.concavity += secondsSince(t);
+  out.stats.bridges += static_cast<int>(map.bridges.size());
+  out.stats.refinements += map.refinements;
+
+  Component& c = out.component;
+  c.depth = piece.depth;
+  c.source = piece.source;
+  c.concavity = map.concavity;
+  if (map.concavity <= o.tau || map.notch < 0) return out;
+  if (piece.depth >= o.maxDepth) {
+    c.unresolved = true;
+    return out;
+  }
+  const Vec3 bridgeNormal = map.bridges[map.vertexBridge[map.notch]].normal;
+  const Vec3& notch = piece.mesh.vertices[map.notch];
+
+  std::vector<Plane> candidates;
+  if (o.featureGrouping) {
+    t = Clock::now();
+    FeatureOptions fo;
+    fo.delta = o.delta;
+    const GlobalCut cut = findGlobalCut(piece.mesh, graph, map, fo);
+    if (cut.vertices.size() >= 2) {
+      Plane plane = fitCutPlane(piece.mesh, cut, bridgeNormal, 0.5 * o.tau);
+      // The plane must resolve the notch it was grown from: slide it onto the notch if it drifted away.
+      const double miss = plane.signedDistance(notch);
+      if (std::abs(miss) > 0.5 * o.tau) plane = Plane::through(notch, plane.normal);
+      candidates.push_back(plane);
+    }
+    out.times.grouping += secondsSince(t);
+  }
+  candidates.push_back(bisectorPlane(piece.mesh, graph, map.notch, bridgeNormal));
+  // Last resorts: planes through the notch, across the pocket.
+  const Vec3 u = bridgeNormal.unitOrthogonal(), w = bridgeNormal.cross(u);
+  candidates.push_back(Plane::through(notch, u));
+  candidates.push_back(Plane::through(notch, w));
+
+  t = Clock::now();
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (tryCut(piece, candidates[i], out.children)) {
+      out.final = false;
+      ++out.stats.cuts;
+      if (o.featureGrouping && i > 0) ++out.stats.fallbackCuts;
+      break;
+    }
+    ++out.stats.failedCuts;
+  }
+  out.times.cutting += secondsSince(t);
+  if (out.final) c.unresolved = true;
+  return out;
+}
+
+void accumulate(PhaseTimes& into, const PhaseTimes& t) {
+  into.concavity += t.concavity;
+  into.grouping += t.grouping;
+  into.cutting += t.cutting;
+}
+
+void accumulate(DecomposeStats& into, const DecomposeStats& s) {
+  into.cuts += s.cuts;
+  into.fallbackCuts += s.fallbackCuts;
+  into.failedCuts += s.failedCuts;
+  into.bridges += s.bridges;
+  into.refinements += s.refinements;
+}
+
+}  // namespace
+
+DecomposeOptions resolvedOptions(const DecomposeOptions& options) {
+  DecomposeOptions o = options;
+  if (o.epsilon < 0) o.epsilon = o.tau / 2;
+  if (o.delta < 0) o.delta = o.tau / 20;
+  return o;
+}
+
+Status validate(const DecomposeOptions& o) {
+  auto bad = [](const std::string& m) { return Status::error(StatusCode::InvalidParameter, m); };
+  std::ostringstream s;
+  if (!std::isfinite(o.tau) || o.tau <= 0) return bad("tau must be a positive number (got " + std::to_string(o.tau) + ")");
+  if (o.tau > 2.0)
+    return bad("tau = " + std::to_string(o.tau) + " exceeds 2, the diameter of the normalised model: every model would be one component");
+  if (o.tau < 1e-4) return bad("tau = " + std::to_string(o.tau) + " is below 1e-4; such a decomposition is an exact convex decomposition in all but name");
+  if (!std::isfinite(o.epsilon) || (o.epsilon != -1.0 && (o.epsilon < 0 || o.epsilon > o.tau)))
+    return bad("epsilon must lie in [0, tau]");
+  if (!std::isfinite(o.delta) || (o.delta != -1.0 && (o.delta < 0 || o.delta > o.tau)))
+    return bad("delta must lie in [0, tau]");
+  if (o.threads < 0 || o.threads > 1024) return bad("threads must lie in [0, 1024]");
+  if (o.maxComponents < 1) return bad("maxComponents must be at least 1");
+  return Status::success();
+}
+
+int countNotches(const TriMesh& mesh, double angle) {
+  SurfaceGraph graph(mesh);
+  int notches = 0;
+  for (int f = 0; f < graph.faceCount(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int g = graph.faceAcross(f, k);
+      if (g < f) continue;  // each interior edge once
+      const int a = mesh.faces[f][k], b = mesh.faces[f][(k + 1) % 3];
+      const Vec3 nl = faceNormal(mesh, f).normalized(), nr = faceNormal(mesh, g).normalized();
+      const Vec3 c = nl.cross(nr);
+      const double turn = std::atan2(c.norm(), nl.dot(nr));
+      if (c.dot(mesh.vertices[b] - mesh.vertices[a]) < 0 && turn > angle) ++notches;
+    }
+  return notches;
+}
+
+Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options) {
+  const auto start = Clock::now();
+  Decomposition result;
+  result.status = validate(options);
+  if (!result.status.ok()) return result;
+  const DecomposeOptions o = resolvedOptions(options);
+  result.options = o;
+
+  auto t = Clock::now();
+  PreparedSolid prepared = prepareSolid(mesh);
+  result.status = prepared.status;
+  result.repairs = prepared.repairs;
+  if (!result.status.ok()) return result;
+  TriMesh all;
+  for (const TriMesh& c : prepared.components) {
+    const int base = static_cast<int>(all.vertices.size());
+    all.vertices.insert(all.vertices.end(), c.vertices.begin(), c.vertices.end());
+    for (Face f : c.faces) all.faces.push_back({f[0] + base, f[1] + base, f[2] + base});
+  }
+  result.normalization = minimumSphereNormalization(all);
+  std::vector<Piece> pending;
+  for (std::size_t i = 0; i < prepared.components.size(); ++i) {
+    Piece p{applyNormalization(prepared.components[i], result.normalization), 0, static_cast<int>(i)};
+    result.stats.inputEdges += static_cast<int>(p.mesh.faces.size() * 3 / 2);
+    result.stats.inputNotches += countNotches(p.mesh);
+    result.stats.inputVolume += signedVolume(p.mesh);
+    pending.push_back(std::move(p));
+  }
+  result.times.prepare = secondsSince(t);
+
+  std::unique_ptr<tbb::global_control> limit;
+  if (o.threads > 0)
+    limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, o.threads);
+
+  std::vector<Piece> finals;
+  std::vector<Component> finalInfo;
+  while (!pending.empty()) {
+    std::vector<Outcome> outcomes(pending.size());
+    tbb::parallel_for(std::size_t(0), pending.size(), [&](std::size_t i) { outcomes[i] = processPiece(pending[i], o); });
+    std::vector<Piece> next;
+    for (std::size_t i = 0; i < pending.size(); ++i) {
+      Outcome& out = outcomes[i];
+      accumulate(result.times, out.times);
+      accumulate(result.stats, out.stats);
+      const int total = static_cast<int>(finals.size() + next.size() + out.children.size() + pending.size() - i);
+      if (out.final || total > o.maxComponents) {
+        if (!out.final) out.component.unresolved = true;
+        finals.push_back(std::move(pending[i]));
+        finalInfo.push_back(out.component);
+      } else {
+        for (Piece& child : out.children) next.push_back(std::move(child));
+      }
+    }
+    pending = std::move(next);
+    if (o.progress) o.progress(static_cast<int>(finals.size()), static_cast<int>(pending.size()));
+  }
+
+  t = Clock::now();
+  result.components.resize(finals.size());
+  tbb::parallel_for(std::size_t(0), finals.size(), [&](std::size_t i) {
+    Component& c = result.components[i];
+    c = finalInfo[i];
+    const TriMesh hull = convexHull(finals[i].mesh.vertices).mesh;
+    c.volume = signedVolume(finals[i].mesh);
+    c.hullVolume = signedVolume(hull);
+    c.mesh = undoNormalization(finals[i].mesh, result.normalization);
+    c.hull = undoNormalization(hull, result.normalization);
+  });
+  result.times.hulls = secondsSince(t);
+  result.times.total = secondsSince(start);
+  return result;
+}
+
+}  // namespace acd

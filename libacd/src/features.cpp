@@ -1,0 +1,208 @@
+// Global cuts (Section 4.2). The root pocket cut joins the component's notch to the
+// two cheapest knots on different boundaries of its pocket; each end then grows
+// into the neighbouring pocket across its boundary, to the cheapest knot on another
+// boundary of that pocket, alternating ends, until both ends reach the same pocket
+// and are joined there (the cycle of Section 4.2.4) or the pocket budget runs out.
+// Pocket boundaries without knots are reached through their nearest vertex, the
+// dynamic pocket cuts of Figure 14.
+#include <acd/features.hpp>
+#include <acd/knots.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace acd {
+
+namespace {
+
+double concavityFor(const Bridge& b, const Vec3& p) { return std::max(0.0, b.offset - b.normal.dot(p)); }
+
+std::vector<char> pocketVertices(const TriMesh& mesh, const ConcavityMap& map, int bridge) {
+  std::vector<char> in(mesh.vertices.size(), 0);
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+    if (map.facePocket[f] == bridge)
+      for (int v : mesh.faces[f]) in[v] = 1;
+  return in;
+}
+
+struct Leg {
+  std::vector<int> path;  // from the chain end into the pocket, ending at the next end vertex
+  int endVertex = -1;
+  int nextPocket = -1;    // pocket across the boundary the leg ends on (-1: none)
+  int projection = -1;
+  double cost = std::numeric_limits<double>::infinity();
+};
+
+/// Cheapest leg inside `pocket` from `start` to a knot (or, failing that, any vertex) on a
+/// boundary of the pocket other than `excludeProjection`.
+Leg bestLeg(const TriMesh& mesh, const SurfaceGraph& graph, const PathFinder& finder, const ConcavityMap& map,
+            int pocket, int start, int excludeProjection, double delta) {
+  Leg leg;
+  const std::vector<char> allowed = pocketVertices(mesh, map, pocket);
+  const Bridge& bridge = map.bridges[pocket];
+  std::vector<double> dist;
+  std::vector<int> parent;
+  std::vector<char> mask = allowed;
+  mask[start] = 1;
+  finder.flood({start}, [&](int a, int b, int slot) { return cutEdgeWeight(mesh, graph, bridge, a, b, graph.length(slot)); },
+               &mask, dist, parent);
+  auto consider = [&](int v, int projection, bool knot) {
+    if (v == start || !std::isfinite(dist[v])) return;
+    // Knots are preferred: a knot-less end costs twice as much.
+    const double cost = dist[v] * (knot ? 1.0 : 2.0);
+    if (cost < leg.cost) {
+      leg.cost = cost;
+      leg.endVertex = v;
+      leg.projection = projection;
+    }
+  };
+  for (const Knot& k : pocketKnots(mesh, map, pocket, delta))
+    if (k.projection != excludeProjection) consider(k.vertex, k.projection, true);
+  if (leg.endVertex < 0)
+    for (int p = 0; p < static_cast<int>(map.projections.size()); ++p) {
+      const auto& pe = map.projections[p];
+      if (p == excludeProjection || (pe.leftBridge != pocket && pe.rightBridge != pocket)) continue;
+      for (std::size_t i = 1; i + 1 < pe.path.size(); ++i) consider(pe.path[i], p, false);
+    }
+  if (leg.endVertex < 0) return leg;
+  for (int v = leg.endVertex; v != -1; v = parent[v]) leg.path.push_back(v);
+  std::reverse(leg.path.begin(), leg.path.end());
+  const auto& pe = map.projections[leg.projection];
+  leg.nextPocket = pe.leftBridge == pocket ? pe.rightBridge : pe.leftBridge;
+  return leg;
+}
+
+}  // namespace
+
+std::vector<Knot> pocketKnots(const TriMesh& mesh, const ConcavityMap& map, int bridge, double delta) {
+  std::vector<Knot> knots;
+  const Bridge& b = map.bridges[bridge];
+  for (int p = 0; p < static_cast<int>(map.projections.size()); ++p) {
+    const ProjectedEdge& pe = map.projections[p];
+    if (pe.leftBridge != bridge && pe.rightBridge != bridge) continue;
+    if (pe.path.size() < 3) continue;
+    // Eq. 3: position along the projected edge scaled to the hull edge's length, against concavity.
+    const double hullLength = (mesh.vertices[pe.path.front()] - mesh.vertices[pe.path.back()]).norm();
+    std::vector<double> along(pe.path.size(), 0.0);
+    for (std::size_t i = 1; i < pe.path.size(); ++i)
+      along[i] = along[i - 1] + (mesh.vertices[pe.path[i]] - mesh.vertices[pe.path[i - 1]]).norm();
+    const double scale = along.back() > 0 ? hullLength / along.back() : 0.0;
+    std::vector<Vec2> profile(pe.path.size());
+    for (std::size_t i = 0; i < pe.path.size(); ++i)
+      profile[i] = Vec2(along[i] * scale, concavityFor(b, mesh.vertices[pe.path[i]]));
+    for (int i : findKnots(profile, delta)) knots.push_back({pe.path[i], bridge, p, profile[i].y()});
+  }
+  return knots;
+}
+
+double cutEdgeWeight(const TriMesh& mesh, const SurfaceGraph& graph, const Bridge& bridge, int a, int b,
+                     double length) {
+  const double concavity = 0.5 * (concavityFor(bridge, mesh.vertices[a]) + concavityFor(bridge, mesh.vertices[b]));
+  double curvature = 0.0;
+  const int fl = graph.faceLeftOf(a, b), fr = graph.faceLeftOf(b, a);
+  if (fl >= 0 && fr >= 0) {
+    const Vec3 nl = faceNormal(mesh, fl).normalized(), nr = faceNormal(mesh, fr).normalized();
+    const Vec3 c = nl.cross(nr);
+    const double angle = std::atan2(c.norm(), nl.dot(nr));
+    if (c.dot(mesh.vertices[b] - mesh.vertices[a]) < 0) curvature = angle;  // concave edges only
+  }
+  // omega = length / concavity, gamma = curvature; the offsets keep flat, convex or
+  // zero-concavity edges usable but expensive.
+  return length / ((concavity + 0.01) * (curvature + 0.1));
+}
+
+GlobalCut findGlobalCut(const TriMesh& mesh, const SurfaceGraph& graph, const ConcavityMap& map,
+                        const FeatureOptions& options) {
+  GlobalCut cut;
+  const int notch = map.notch;
+  if (notch < 0 || map.bridges.empty()) return cut;
+  const int root = map.vertexBridge[notch];
+  PathFinder finder(graph);
+
+  // Root pocket cut: notch to its two cheapest ends on different boundaries.
+  Leg first = bestLeg(mesh, graph, finder, map, root, notch, -1, options.delta);
+  if (first.endVertex < 0) return cut;
+  Leg second = bestLeg(mesh, graph, finder, map, root, notch, first.projection, options.delta);
+  cut.cupShaped = pocketKnots(mesh, map, root, options.delta).size() < 2;
+
+  auto append = [&](std::vector<int>& chain, std::vector<double>& weight, const std::vector<int>& path, int pocket) {
+    for (std::size_t i = chain.empty() ? 0 : 1; i < path.size(); ++i) {
+      chain.push_back(path[i]);
+      weight.push_back(concavityFor(map.bridges[pocket], mesh.vertices[path[i]]));
+    }
+  };
+  // Two ends grow independently; each keeps its chain from the notch outward.
+  struct End {
+    std::vector<int> chain;
+    std::vector<double> weight;
+    int pocket = -1;       // pocket the end will grow into next
+    int projection = -1;   // boundary it sits on
+    bool stuck = false;
+  } ends[2];
+  for (int e = 0; e < 2; ++e) {
+    const Leg& leg = e == 0 ? first : second;
+    if (leg.endVertex < 0) {
+      ends[e].chain = {notch};
+      ends[e].weight = {map.vertexConcavity[notch]};
+      ends[e].stuck = true;
+      continue;
+    }
+    append(ends[e].chain, ends[e].weight, leg.path, root);
+    ends[e].pocket = leg.nextPocket;
+    ends[e].projection = leg.projection;
+  }
+  cut.pockets.push_back(root);
+  std::vector<int> visitedBy(map.bridges.size(), -1);
+  visitedBy[root] = 2;  // both
+  for (int step = 0; step < 2 * options.maxPockets && !(ends[0].stuck && ends[1].stuck); ++step) {
+    End& end = ends[step % 2];
+    const End& other = ends[1 - step % 2];
+    if (end.stuck) continue;
+    const int pocket = end.pocket;
+    // The ends meet: both sit on boundaries of the same pocket, or on the same boundary.
+    const bool otherBorders = !other.stuck && (other.pocket == pocket || other.projection == end.projection);
+    if (otherBorders) {
+      const std::vector<char> allowed = pocketVertices(mesh, map, pocket);
+      std::vector<int> join = finder.path(end.chain.back(), other.chain.back(), {}, &allowed);
+      if (!join.empty()) {
+        append(end.chain, end.weight, join, pocket);
+        end.chain.pop_back();  // the joint vertex is the other end's last vertex
+        end.weight.pop_back();
+        cut.closed = true;
+        cut.pockets.push_back(pocket);
+        break;
+      }
+    }
+    if (pocket < 0 || (visitedBy[pocket] >= 0 && visitedBy[pocket] != step % 2)) {
+      end.stuck = true;
+      continue;
+    }
+    Leg leg = bestLeg(mesh, graph, finder, map, pocket, end.chain.back(), end.projection, options.delta);
+    if (leg.endVertex < 0) {
+      end.stuck = true;
+      continue;
+    }
+    visitedBy[pocket] = step % 2;
+    cut.pockets.push_back(pocket);
+    append(end.chain, end.weight, leg.path, pocket);
+    end.pocket = leg.nextPocket;
+    end.projection = leg.projection;
+  }
+  // Chain: end 0 reversed (outer end first), then end 1 without the shared notch.
+  for (int i = static_cast<int>(ends[0].chain.size()) - 1; i >= 0; --i) {
+    cut.vertices.push_back(ends[0].chain[i]);
+    cut.weight.push_back(ends[0].weight[i]);
+  }
+  for (std::size_t i = 1; i < ends[1].chain.size(); ++i) {
+    cut.vertices.push_back(ends[1].chain[i]);
+    cut.weight.push_back(ends[1].weight[i]);
+  }
+  const std::vector<Knot> rootKnots = pocketKnots(mesh, map, root, options.delta);
+  for (int v : cut.vertices)
+    for (const Knot& k : rootKnots)
+      if (k.vertex == v) cut.knots.push_back(k);
+  return cut;
+}
+
+}  // namespace acd
