@@ -23,10 +23,10 @@ double signedDihedral(const TriMesh& mesh, const SurfaceGraph& graph, int a, int
 Plane fitCutPlane(const TriMesh& mesh, const GlobalCut& cut, const Vec3& bridgeNormal, double tolerance) {
   const int n = static_cast<int>(cut.vertices.size());
   std::vector<double> w(n);
-  double floor = 0.0;
-  for (double c : cut.weight) floor = std::max(floor, c);
-  floor = std::max(1e-9, 1e-6 * floor);  // Eq. 5 weighs by concavity; the floor only avoids an all-zero sum
-  for (int i = 0; i < n; ++i) w[i] = cut.weight[i] + floor;
+  double peak = 0.0;
+  for (double c : cut.weight) peak = std::max(peak, c);
+  // Eq. 5 weighs by concavity: parts of the cut with none carry no weight (all equal if the cut has none).
+  for (int i = 0; i < n; ++i) w[i] = peak > 0 ? cut.weight[i] : 1.0;
   Plane plane;
   for (int round = 0; round < 5; ++round) {
     double total = 0.0;
@@ -50,9 +50,10 @@ Plane fitCutPlane(const TriMesh& mesh, const GlobalCut& cut, const Vec3& bridgeN
     }
     plane = Plane::through(centroid, normal);
     // Figure 15: push the plane toward the cut vertices it misses.
+    // Only vertices with real concavity count as misrepresented; the rest of the cut carries no weight in Eq. 5.
     bool misses = false;
     for (int i = 0; i < n; ++i)
-      if (std::abs(plane.signedDistance(mesh.vertices[cut.vertices[i]])) > tolerance) {
+      if (cut.weight[i] > 0.1 * peak && std::abs(plane.signedDistance(mesh.vertices[cut.vertices[i]])) > tolerance) {
         w[i] *= 4.0;
         misses = true;
       }

@@ -13,6 +13,8 @@
 #include <tbb/parallel_for.h>
 
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <cmath>
 #include <sstream>
 
@@ -40,6 +42,8 @@ struct Outcome {
 /// Cuts `piece` by `plane`; succeeds only if it really splits into pieces with volume.
 bool tryCut(const Piece& piece, Plane plane, std::vector<Piece>& children) {
   const double nudges[] = {0.0, 1e-7, -1e-7, 1e-5, -1e-5};
+  // A piece this much smaller than its parent is a sliver: the plane grazed a face and resolved nothing.
+  const double minVolume = 1e-7 * signedVolume(piece.mesh);
   for (double nudge : nudges) {
     Plane p = plane;
     p.offset += nudge * p.normal.norm();
@@ -49,7 +53,7 @@ bool tryCut(const Piece& piece, Plane plane, std::vector<Piece>& children) {
     bool valid = true;
     for (auto* side : {&cut.below, &cut.above})
       for (TriMesh& m : *side) {
-        if (signedVolume(m) <= 1e-12) valid = false;
+        if (signedVolume(m) <= minVolume) valid = false;
         out.push_back({std::move(m), piece.depth + 1, piece.source});
       }
     if (!valid) continue;
@@ -88,11 +92,15 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
     FeatureOptions fo;
     fo.delta = o.delta;
     const GlobalCut cut = findGlobalCut(piece.mesh, graph, map, fo);
+    if (std::getenv("ACD_TRACE")) {
+      std::fprintf(stderr, "  global cut: %zu vertices, %zu pockets, closed %d cup %d\n", cut.vertices.size(), cut.pockets.size(), cut.closed, cut.cupShaped);
+      for (std::size_t i = 0; i < cut.vertices.size(); ++i) { const Vec3& p = piece.mesh.vertices[cut.vertices[i]]; std::fprintf(stderr, "    (%.3f %.3f %.3f) w %.3f\n", p.x(), p.y(), p.z(), cut.weight[i]); }
+    }
     if (cut.vertices.size() >= 2) {
       Plane plane = fitCutPlane(piece.mesh, cut, bridgeNormal, 0.5 * o.tau);
-      // The plane must resolve the notch it was grown from: slide it onto the notch if it drifted away.
-      const double miss = plane.signedDistance(notch);
-      if (std::abs(miss) > 0.5 * o.tau) plane = Plane::through(notch, plane.normal);
+      // The plane must resolve the notch it was grown from: it passes through it. (A plane a hair
+      // away from the notch would only shave off a sliver and leave the notch as it was.)
+      plane = Plane::through(notch, plane.normal);
       candidates.push_back(plane);
     }
     out.times.grouping += secondsSince(t);
@@ -103,6 +111,13 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
   candidates.push_back(Plane::through(notch, u));
   candidates.push_back(Plane::through(notch, w));
 
+  if (std::getenv("ACD_TRACE")) {
+    std::fprintf(stderr, "piece depth %d nv %zu conc %.4f notch (%.3f %.3f %.3f) bridges %zu bridgeN (%.2f %.2f %.2f)\n", piece.depth,
+                 piece.mesh.vertices.size(), map.concavity, notch.x(), notch.y(), notch.z(), map.bridges.size(),
+                 bridgeNormal.x(), bridgeNormal.y(), bridgeNormal.z());
+    for (const Plane& p : candidates)
+      std::fprintf(stderr, "   plane n (%.3f %.3f %.3f) d %.4f\n", p.normal.x(), p.normal.y(), p.normal.z(), p.offset);
+  }
   t = Clock::now();
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     if (tryCut(piece, candidates[i], out.children)) {

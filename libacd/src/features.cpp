@@ -120,10 +120,27 @@ GlobalCut findGlobalCut(const TriMesh& mesh, const SurfaceGraph& graph, const Co
   const int root = map.vertexBridge[notch];
   PathFinder finder(graph);
 
-  // Root pocket cut: notch to its two cheapest ends on different boundaries.
-  Leg first = bestLeg(mesh, graph, finder, map, root, notch, -1, options.delta);
+  // Root pocket cut: notch to its two cheapest ends on different boundaries. A notch that lies on
+  // a boundary itself is one end already: the cut continues across that boundary from it.
+  int notchProjection = -1;
+  for (int p = 0; p < static_cast<int>(map.projections.size()) && notchProjection < 0; ++p) {
+    const auto& pe = map.projections[p];
+    if (pe.leftBridge != root && pe.rightBridge != root) continue;
+    for (std::size_t i = 1; i + 1 < pe.path.size(); ++i)
+      if (pe.path[i] == notch) notchProjection = p;
+  }
+  Leg first = bestLeg(mesh, graph, finder, map, root, notch, notchProjection, options.delta);
   if (first.endVertex < 0) return cut;
-  Leg second = bestLeg(mesh, graph, finder, map, root, notch, first.projection, options.delta);
+  Leg second;
+  if (notchProjection >= 0) {
+    const auto& pe = map.projections[notchProjection];
+    second.path = {notch};
+    second.endVertex = notch;
+    second.projection = notchProjection;
+    second.nextPocket = pe.leftBridge == root ? pe.rightBridge : pe.leftBridge;
+  } else {
+    second = bestLeg(mesh, graph, finder, map, root, notch, first.projection, options.delta);
+  }
   cut.cupShaped = pocketKnots(mesh, map, root, options.delta).size() < 2;
 
   auto append = [&](std::vector<int>& chain, std::vector<double>& weight, const std::vector<int>& path, int pocket) {
