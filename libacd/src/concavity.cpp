@@ -57,12 +57,17 @@ std::vector<int> growClusters(const TriMesh& hull, const HullFacets& h, const st
   std::vector<int> label(hull.faces.size(), -1);
   using Item = std::tuple<double, int, int>;  // depth, facet, cluster
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open;
-  for (int c = 0; c < static_cast<int>(seeds.size()); ++c) open.emplace(0.0, seeds[c], c);
+  // Seeds own their facet before anything floods: a neighbour at depth 0 must not take it.
+  for (int c = 0; c < static_cast<int>(seeds.size()); ++c)
+    if (label[seeds[c]] < 0) label[seeds[c]] = c;
+  for (int c = 0; c < static_cast<int>(seeds.size()); ++c)
+    if (label[seeds[c]] == c) open.emplace(0.0, seeds[c], c);
   while (!open.empty()) {
     const auto [depth, f, c] = open.top();
     open.pop();
-    if (label[f] >= 0) continue;
-    label[f] = c;
+    if (label[f] >= 0 && label[f] != c) continue;
+    if (label[f] < 0) label[f] = c;
+    else if (f != seeds[c]) continue;
     const int s = seeds[c];
     for (int g : h.neighbour[f])
       if (g >= 0 && label[g] < 0) open.emplace(facetDepth(hull, g, h.normal[s], h.offset[s]), g, c);
@@ -173,7 +178,8 @@ ConcavityMap measureConcavity(const TriMesh& mesh, const SurfaceGraph& graph, co
       bool split = false;
       for (int c = 0; c < static_cast<int>(members.size()); ++c) {
         int deepest = -1;
-        if (clusterDepth(hull, h, members[c], seeds[c], &deepest) >= eps) {
+        if (clusterDepth(hull, h, members[c], seeds[c], &deepest) >= eps && label[deepest] == c &&
+            deepest != seeds[c]) {
           seeds.push_back(deepest);
           split = true;
         }

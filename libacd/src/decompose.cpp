@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace acd {
@@ -29,6 +30,11 @@ struct Piece {
   TriMesh mesh;  // normalised
   int depth = 0;
   int source = 0;
+  // The notch the parent's cut was meant to resolve: if it comes back unchanged, the cut stalled
+  // and this piece escalates to planes that cut deeper (bisector, then planes along the bridge normal).
+  Vec3 parentNotch = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+  double parentConcavity = -1.0;
+  int stalls = 0;
 };
 
 struct Outcome {
@@ -40,7 +46,8 @@ struct Outcome {
 };
 
 /// Cuts `piece` by `plane`; succeeds only if it really splits into pieces with volume.
-bool tryCut(const Piece& piece, Plane plane, std::vector<Piece>& children) {
+bool tryCut(const Piece& piece, Plane plane, const Vec3& notch, double concavity, int stalls,
+            std::vector<Piece>& children) {
   const double nudges[] = {0.0, 1e-7, -1e-7, 1e-5, -1e-5};
   // A piece this much smaller than its parent is a sliver: the plane grazed a face and resolved nothing.
   const double minVolume = 1e-7 * signedVolume(piece.mesh);
@@ -54,7 +61,7 @@ bool tryCut(const Piece& piece, Plane plane, std::vector<Piece>& children) {
     for (auto* side : {&cut.below, &cut.above})
       for (TriMesh& m : *side) {
         if (signedVolume(m) <= minVolume) valid = false;
-        out.push_back({std::move(m), piece.depth + 1, piece.source});
+        out.push_back({std::move(m), piece.depth + 1, piece.source, notch, concavity, stalls});
       }
     if (!valid) continue;
     children = std::move(out);
@@ -86,30 +93,34 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
   const Vec3 bridgeNormal = map.bridges[map.vertexBridge[map.notch]].normal;
   const Vec3& notch = piece.mesh.vertices[map.notch];
 
+  const bool stalled = piece.parentConcavity >= 0 && map.concavity >= piece.parentConcavity - 1e-9 &&
+                       (notch - piece.parentNotch).norm() < 0.5 * o.tau;
+  const int stalls = stalled ? piece.stalls + 1 : 0;
+  if (stalls > 4) {  // nothing we know resolves this notch: report it rather than loop
+    c.unresolved = true;
+    return out;
+  }
   std::vector<Plane> candidates;
-  if (o.featureGrouping) {
+  if (o.featureGrouping && stalls == 0) {
     t = Clock::now();
     FeatureOptions fo;
     fo.delta = o.delta;
     const GlobalCut cut = findGlobalCut(piece.mesh, graph, map, fo);
-    if (std::getenv("ACD_TRACE")) {
-      std::fprintf(stderr, "  global cut: %zu vertices, %zu pockets, closed %d cup %d\n", cut.vertices.size(), cut.pockets.size(), cut.closed, cut.cupShaped);
-      for (std::size_t i = 0; i < cut.vertices.size(); ++i) { const Vec3& p = piece.mesh.vertices[cut.vertices[i]]; std::fprintf(stderr, "    (%.3f %.3f %.3f) w %.3f\n", p.x(), p.y(), p.z(), cut.weight[i]); }
-    }
+    if (std::getenv("ACD_TRACE")) std::fprintf(stderr, "  global cut: %zu vertices, %zu pockets, closed %d cup %d\n", cut.vertices.size(), cut.pockets.size(), cut.closed, cut.cupShaped);
     if (cut.vertices.size() >= 2) {
-      Plane plane = fitCutPlane(piece.mesh, cut, bridgeNormal, 0.5 * o.tau);
+      const Plane plane = fitCutPlane(piece.mesh, cut, bridgeNormal, 0.5 * o.tau);
       // The plane must resolve the notch it was grown from: it passes through it. (A plane a hair
       // away from the notch would only shave off a sliver and leave the notch as it was.)
-      plane = Plane::through(notch, plane.normal);
-      candidates.push_back(plane);
+      candidates.push_back(Plane::through(notch, plane.normal));
     }
     out.times.grouping += secondsSince(t);
   }
-  candidates.push_back(bisectorPlane(piece.mesh, graph, map.notch, bridgeNormal));
-  // Last resorts: planes through the notch, across the pocket.
+  if (stalls <= 1) candidates.push_back(bisectorPlane(piece.mesh, graph, map.notch, bridgeNormal));
+  // Planes through the notch that contain the bridge normal split the pocket between the bridge's ends.
   const Vec3 u = bridgeNormal.unitOrthogonal(), w = bridgeNormal.cross(u);
-  candidates.push_back(Plane::through(notch, u));
-  candidates.push_back(Plane::through(notch, w));
+  const double turn = 0.25 * std::acos(-1.0) * (stalls % 2);  // a different pair on each stall
+  candidates.push_back(Plane::through(notch, std::cos(turn) * u + std::sin(turn) * w));
+  candidates.push_back(Plane::through(notch, -std::sin(turn) * u + std::cos(turn) * w));
 
   if (std::getenv("ACD_TRACE")) {
     std::fprintf(stderr, "piece depth %d nv %zu conc %.4f notch (%.3f %.3f %.3f) bridges %zu bridgeN (%.2f %.2f %.2f)\n", piece.depth,
@@ -120,10 +131,10 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
   }
   t = Clock::now();
   for (std::size_t i = 0; i < candidates.size(); ++i) {
-    if (tryCut(piece, candidates[i], out.children)) {
+    if (tryCut(piece, candidates[i], notch, map.concavity, stalls, out.children)) {
       out.final = false;
       ++out.stats.cuts;
-      if (o.featureGrouping && i > 0) ++out.stats.fallbackCuts;
+      if (o.featureGrouping && (i > 0 || stalls > 0)) ++out.stats.fallbackCuts;
       break;
     }
     ++out.stats.failedCuts;
