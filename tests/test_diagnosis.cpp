@@ -288,12 +288,18 @@ TEST(PrepareSolid, NonManifoldEdgeIsRefused) {
   EXPECT_EQ(p.status.message, "non-manifold edge 0-2 is shared by 3 faces");
 }
 
-TEST(PrepareSolid, NonManifoldVertexIsRefused) {
+TEST(PrepareSolid, NonManifoldVertexIsSplit) {
   // Two boxes touching at one corner: once the corner copies are merged, vertex 7 pinches.
+  // The safe repair gives each fan its own copy of the vertex: two closed boxes again.
   const PreparedSolid p = prepareSolid(concat(unitBox(), shapes::box(Vec3(1, 1, 1), Vec3(2, 2, 2))));
-  EXPECT_EQ(p.status.code, StatusCode::NonManifoldVertex);
-  EXPECT_TRUE(contains(p.status.message, "vertex 7 is non-manifold")) << p.status.message;
+  ASSERT_TRUE(p.status.ok()) << p.status.message;
   EXPECT_TRUE(hasRepair(p, "merged 1 vertices")) << (p.repairs.empty() ? "" : p.repairs[0]);
+  EXPECT_TRUE(hasRepair(p, "split 1 non-manifold vertices"));
+  ASSERT_EQ(p.components.size(), 2u);
+  for (const TriMesh& c : p.components) {
+    EXPECT_TRUE(isClosedOriented(c));
+    EXPECT_NEAR(signedVolume(c), 1.0, 1e-12);
+  }
 }
 
 TEST(PrepareSolid, OpenMeshIsRefused) {

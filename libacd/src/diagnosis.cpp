@@ -4,6 +4,7 @@
 #include <acd/diagnosis.hpp>
 
 #include <algorithm>
+#include <unordered_map>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -181,7 +182,8 @@ struct Topology {
 
 /// Number of face fans around each vertex, joining faces across manifold edges only.
 /// More than one fan means the surface pinches at the vertex.
-std::vector<int> fansPerVertex(const std::vector<Face>& faces, const Topology& topology, int vertexCount) {
+std::vector<int> fansPerVertex(const std::vector<Face>& faces, const Topology& topology, int vertexCount,
+                               std::vector<int>* fanOfCorner = nullptr) {
   const int corners = static_cast<int>(faces.size()) * 3;
   auto vertexAt = [&](int corner) { return faces[corner / 3][corner % 3]; };
   // Only corners of the same vertex are ever joined, so each set is one fan of one vertex.
@@ -199,6 +201,10 @@ std::vector<int> fansPerVertex(const std::vector<Face>& faces, const Topology& t
   std::vector<int> fans(vertexCount, 0);
   for (int c = 0; c < corners; ++c)
     if (fan.find(c) == c) ++fans[vertexAt(c)];
+  if (fanOfCorner) {
+    fanOfCorner->resize(corners);
+    for (int c = 0; c < corners; ++c) (*fanOfCorner)[c] = fan.find(c);
+  }
   return fans;
 }
 
@@ -452,12 +458,32 @@ PreparedSolid prepareSolid(const TriMesh& mesh) {
     return refuse(StatusCode::NonManifoldEdge, "non-manifold edge " + formatEdge(topology.edges[e].key) +
                                                    " is shared by " + std::to_string(topology.edges[e].count) +
                                                    " faces");
-  const std::vector<int> fans = fansPerVertex(faces, topology, nv);
-  for (int v = 0; v < nv; ++v)
-    if (fans[v] > 1)
-      return refuse(StatusCode::NonManifoldVertex, "vertex " + std::to_string(v) + " is non-manifold: its faces form " +
-                                                       std::to_string(fans[v]) +
-                                                       " fans that meet only at this vertex");
+  // A vertex where several fans meet (two parts touching at a point) is safely split: each fan
+  // after the first gets its own copy of the vertex, at the same position.
+  std::vector<Vec3> vertices = mesh.vertices;
+  {
+    std::vector<int> fanOfCorner;
+    const std::vector<int> fans = fansPerVertex(faces, topology, nv, &fanOfCorner);
+    std::unordered_map<int, int> copyOfFan;  // fan root corner -> vertex
+    std::vector<int> firstFan(nv, -1);
+    int split = 0;
+    for (int c = 0; c < static_cast<int>(fanOfCorner.size()); ++c) {
+      int& v = faces[c / 3][c % 3];
+      if (fans[v] <= 1) continue;
+      const int fan = fanOfCorner[c];
+      if (firstFan[v] < 0) firstFan[v] = fan;
+      if (firstFan[v] == fan) continue;
+      auto [it, inserted] = copyOfFan.emplace(fan, static_cast<int>(vertices.size()));
+      if (inserted) {
+        vertices.push_back(vertices[v]);
+        ++split;
+      }
+      v = it->second;
+    }
+    if (split > 0)
+      out.repairs.push_back("split " + std::to_string(split) +
+                            " non-manifold vertices (parts touching at a point) into one copy per fan");
+  }
   if (const int e = firstEdgeWhere(topology, isBoundary); e >= 0) {
     const auto boundary = std::count_if(topology.edges.begin(), topology.edges.end(), isBoundary);
     return refuse(StatusCode::OpenMesh, "open mesh: " + std::to_string(boundary) + " boundary edges (first: vertices " +
@@ -505,7 +531,7 @@ PreparedSolid prepareSolid(const TriMesh& mesh) {
   if (flipped > 0)
     out.repairs.push_back("flipped " + std::to_string(flipped) + " faces to make the orientation consistent");
 
-  std::vector<TriMesh> pieces = splitEdgeConnected(TriMesh{mesh.vertices, faces});
+  std::vector<TriMesh> pieces = splitEdgeConnected(TriMesh{vertices, faces});
   int reversed = 0;
   for (TriMesh& piece : pieces) {
     if (signedVolume(piece) < 0.0) {
