@@ -9,6 +9,7 @@
 #include <acd/features.hpp>
 #include <acd/hull.hpp>
 
+#include <Eigen/Eigenvalues>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
@@ -70,6 +71,36 @@ bool tryCut(const Piece& piece, Plane plane, const Vec3& notch, double concavity
   return false;
 }
 
+/// Figure 13: a plane through the notch that contains the bridge normal, across the pocket's longest
+/// extent (principal axis of the pocket's vertices projected on the bridge plane).
+Plane splitCupPlane(const TriMesh& mesh, const ConcavityMap& map, int notch) {
+  const int bridge = map.vertexBridge[notch];
+  const Vec3 n = map.bridges[bridge].normal;
+  std::vector<char> in(mesh.vertices.size(), 0);
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+    if (map.facePocket[f] == bridge)
+      for (int v : mesh.faces[f]) in[v] = 1;
+  Vec3 mean = Vec3::Zero();
+  int count = 0;
+  for (std::size_t v = 0; v < in.size(); ++v)
+    if (in[v]) mean += mesh.vertices[v], ++count;
+  const Vec3& x = mesh.vertices[notch];
+  if (count < 3) return Plane::through(x, n.unitOrthogonal());
+  mean /= count;
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (std::size_t v = 0; v < in.size(); ++v)
+    if (in[v]) {
+      Vec3 d = mesh.vertices[v] - mean;
+      d -= d.dot(n) * n;  // projected on the bridge plane
+      cov += d * d.transpose();
+    }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+  Vec3 axis = eig.eigenvectors().col(2);
+  axis -= axis.dot(n) * n;
+  if (axis.norm() < 1e-12) axis = n.unitOrthogonal();
+  return Plane::through(x, axis.normalized());
+}
+
 Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
   Outcome out;
   auto t = Clock::now();
@@ -93,7 +124,8 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
   const Vec3 bridgeNormal = map.bridges[map.vertexBridge[map.notch]].normal;
   const Vec3& notch = piece.mesh.vertices[map.notch];
 
-  const bool stalled = piece.parentConcavity >= 0 && map.concavity >= piece.parentConcavity - 1e-9 &&
+  // The estimate wobbles a little with the bridge clustering, so "unchanged" means within a tenth of tau.
+  const bool stalled = piece.parentConcavity >= 0 && map.concavity > piece.parentConcavity - 0.1 * o.tau &&
                        (notch - piece.parentNotch).norm() < 0.5 * o.tau;
   const int stalls = stalled ? piece.stalls + 1 : 0;
   if (stalls > 4) {  // nothing we know resolves this notch: report it rather than loop
@@ -109,6 +141,10 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
     if (std::getenv("ACD_TRACE")) std::fprintf(stderr, "  global cut: %zu vertices, %zu pockets, closed %d cup %d\n", cut.vertices.size(), cut.pockets.size(), cut.closed, cut.cupShaped);
     if (cut.vertices.size() >= 2) {
       const Plane plane = fitCutPlane(piece.mesh, cut, bridgeNormal, 0.5 * o.tau);
+      // A plane (nearly) parallel to the bridge only skims the pocket: the cup-shaped case of
+      // Figure 13. Split the cup through its deepest point instead, across its longest extent.
+      if (cut.cupShaped || std::abs(plane.normal.normalized().dot(bridgeNormal)) > 0.9)
+        candidates.push_back(splitCupPlane(piece.mesh, map, map.notch));
       // The plane must resolve the notch it was grown from: it passes through it. (A plane a hair
       // away from the notch would only shave off a sliver and leave the notch as it was.)
       candidates.push_back(Plane::through(notch, plane.normal));
