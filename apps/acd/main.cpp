@@ -138,6 +138,7 @@ json reportJson(const DecomposeArgs& a, const acd::Decomposition& d, const acd::
                      {"depth", c.depth},
                      {"source_piece", c.source},
                      {"unresolved", c.unresolved}});
+    if (c.unresolved) comps.back()["note"] = c.note;
     volume += c.volume;
     hullVolume += c.hullVolume;
     maxConcavity = std::max(maxConcavity, c.concavity);

@@ -49,13 +49,17 @@ struct Outcome {
 /// Cuts `piece` by `plane`; succeeds only if it really splits into pieces with volume.
 bool tryCut(const Piece& piece, Plane plane, const Vec3& notch, double concavity, int stalls,
             std::vector<Piece>& children) {
-  const double nudges[] = {0.0, 1e-7, -1e-7, 1e-5, -1e-5};
+  // Small shifts get past degenerate sections; the larger ones past local self-intersections of the
+  // input (whose sections have crossing loops), at the price of a cut slightly off the notch.
+  const double nudges[] = {0.0, 1e-7, -1e-7, 1e-5, -1e-5, 1e-3, -1e-3, 4e-3, -4e-3};
   // A piece this much smaller than its parent is a sliver: the plane grazed a face and resolved nothing.
   const double minVolume = 1e-7 * signedVolume(piece.mesh);
   for (double nudge : nudges) {
     Plane p = plane;
     p.offset += nudge * p.normal.norm();
     CutResult cut = cutByPlane(piece.mesh, p);
+    if (std::getenv("ACD_TRACE") && (!cut.ok || cut.below.empty() || cut.above.empty()))
+      std::fprintf(stderr, "     cut failed: %s (below %zu above %zu)\n", cut.error.c_str(), cut.below.size(), cut.above.size());
     if (!cut.ok || cut.below.empty() || cut.above.empty()) continue;
     std::vector<Piece> out;
     bool valid = true;
@@ -119,6 +123,7 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
   if (map.concavity <= o.tau || map.notch < 0) return out;
   if (piece.depth >= o.maxDepth) {
     c.unresolved = true;
+    c.note = "maximum cut depth reached";
     return out;
   }
   const Vec3 bridgeNormal = map.bridges[map.vertexBridge[map.notch]].normal;
@@ -130,6 +135,7 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
   const int stalls = stalled ? piece.stalls + 1 : 0;
   if (stalls > 4) {  // nothing we know resolves this notch: report it rather than loop
     c.unresolved = true;
+    c.note = "five cuts in a row left the notch's concavity unchanged";
     return out;
   }
   std::vector<Plane> candidates;
@@ -176,7 +182,10 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
     ++out.stats.failedCuts;
   }
   out.times.cutting += secondsSince(t);
-  if (out.final) c.unresolved = true;
+  if (out.final) {
+    c.unresolved = true;
+    c.note = "no plane through the notch gives a clean section (crossing section loops: the input self-intersects there)";
+  }
   return out;
 }
 
@@ -281,7 +290,10 @@ Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options) {
       accumulate(result.stats, out.stats);
       const int total = static_cast<int>(finals.size() + next.size() + out.children.size() + pending.size() - i);
       if (out.final || total > o.maxComponents) {
-        if (!out.final) out.component.unresolved = true;
+        if (!out.final) {
+          out.component.unresolved = true;
+          out.component.note = "maximum number of components reached";
+        }
         finals.push_back(std::move(pending[i]));
         finalInfo.push_back(out.component);
       } else {

@@ -36,6 +36,7 @@ struct Component {
   int depth = 0;           // cuts from the input to this component
   int source = 0;          // which connected piece of the input it came from
   bool unresolved = false; // concavity > tau but no cut could be made (reported, never hidden)
+  std::string note;        // why it is unresolved
 };
 
 struct PhaseTimes {
