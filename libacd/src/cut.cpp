@@ -6,6 +6,7 @@
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Random.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
@@ -31,6 +32,9 @@ bool triangulateSection(const std::vector<Vec3>& points, const std::vector<std::
   const Vec3 n = normal.normalized();
   const Vec3 u = n.unitOrthogonal();
   const Vec3 w = n.cross(u);  // (u, w, n) right-handed: ccw in (u, w) is ccw seen from +n
+  // CGAL's default generator is per thread and steers point location: reset it so the cap
+  // triangulation (not unique for cocircular points) does not depend on which thread runs it.
+  CGAL::get_default_random() = CGAL::Random(0);
   CDT cdt;
   std::unordered_map<int, CDT::Vertex_handle> handle;
   try {

@@ -158,11 +158,15 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
     out.times.grouping += secondsSince(t);
   }
   if (stalls <= 1) candidates.push_back(bisectorPlane(piece.mesh, graph, map.notch, bridgeNormal));
-  // Planes through the notch that contain the bridge normal split the pocket between the bridge's ends.
+  // Planes through the notch that contain the bridge normal split the pocket between the bridge's
+  // ends (two orthogonal ones; a different pair after each stall).
   const Vec3 u = bridgeNormal.unitOrthogonal(), w = bridgeNormal.cross(u);
-  const double turn = 0.25 * std::acos(-1.0) * (stalls % 2);  // a different pair on each stall
-  candidates.push_back(Plane::through(notch, std::cos(turn) * u + std::sin(turn) * w));
-  candidates.push_back(Plane::through(notch, -std::sin(turn) * u + std::cos(turn) * w));
+  const double pi = std::acos(-1.0);
+  const int fan = 2;
+  for (int k = 0; k < fan; ++k) {
+    const double angle = pi * k / fan + 0.25 * pi * (stalls % 2);  // a different set on each stall
+    candidates.push_back(Plane::through(notch, std::cos(angle) * u + std::sin(angle) * w));
+  }
 
   if (std::getenv("ACD_TRACE")) {
     std::fprintf(stderr, "piece depth %d nv %zu conc %.4f notch (%.3f %.3f %.3f) bridges %zu bridgeN (%.2f %.2f %.2f)\n", piece.depth,
@@ -172,14 +176,49 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
       std::fprintf(stderr, "   plane n (%.3f %.3f %.3f) d %.4f\n", p.normal.x(), p.normal.y(), p.normal.z(), p.offset);
   }
   t = Clock::now();
-  for (std::size_t i = 0; i < candidates.size(); ++i) {
-    if (tryCut(piece, candidates[i], notch, map.concavity, stalls, out.children)) {
-      out.final = false;
-      ++out.stats.cuts;
-      if (o.featureGrouping && (i > 0 || stalls > 0)) ++out.stats.fallbackCuts;
-      break;
+  if (!o.featureGrouping || candidates.size() == 1) {
+    // The paper's baseline: the first plane that cuts cleanly.
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+      if (tryCut(piece, candidates[i], notch, map.concavity, stalls, out.children)) {
+        out.final = false;
+        ++out.stats.cuts;
+        if (o.featureGrouping && (i > 0 || stalls > 0)) ++out.stats.fallbackCuts;
+        break;
+      }
+      ++out.stats.failedCuts;
     }
-    ++out.stats.failedCuts;
+  } else {
+    // One step of lookahead: cut with every candidate and keep the plane whose children are best
+    // approximated by their hulls (least hull volume beyond the children's own volume). After a
+    // stall the notch itself is the problem: keep the plane whose children are least concave.
+    double bestScore = std::numeric_limits<double>::infinity();
+    std::size_t bestIndex = 0;
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+      std::vector<Piece> children;
+      if (!tryCut(piece, candidates[i], notch, map.concavity, stalls, children)) {
+        ++out.stats.failedCuts;
+        continue;
+      }
+      double score = 0.0;
+      for (const Piece& child : children) {
+        if (stalls > 0) {
+          SurfaceGraph childGraph(child.mesh);
+          score = std::max(score, measureConcavity(child.mesh, childGraph, co).concavity);
+        } else {
+          score += signedVolume(convexHull(child.mesh.vertices).mesh) - signedVolume(child.mesh);
+        }
+      }
+      if (score < bestScore) {
+        bestScore = score;
+        bestIndex = i;
+        out.children = std::move(children);
+        out.final = false;
+      }
+    }
+    if (!out.final) {
+      ++out.stats.cuts;
+      if (bestIndex > 0 || stalls > 0) ++out.stats.fallbackCuts;
+    }
   }
   out.times.cutting += secondsSince(t);
   if (out.final) {
