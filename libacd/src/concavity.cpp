@@ -262,9 +262,20 @@ ConcavityMap measureConcavity(const TriMesh& mesh, const SurfaceGraph& graph, co
           stack.push_back(g);
         }
       }
-      int bridge = 0, bestCount = -1;
-      for (auto [b, count] : tally)
-        if (count > bestCount || (count == bestCount && b < bridge)) bridge = b, bestCount = count;
+      // Usually one bridge encloses the region. Where projected paths cross, several claim it: the
+      // region then goes to the claimant it lies closest to (smallest depth below the supporting
+      // plane), so a crossing path cannot hand a region to a bridge on the far side of the model.
+      int bridge = 0;
+      double bestDepth = std::numeric_limits<double>::infinity();
+      std::vector<std::pair<int, int>> claims(tally.begin(), tally.end());
+      std::sort(claims.begin(), claims.end());
+      for (auto [b, count] : claims) {
+        const Bridge& br = out.bridges[b];
+        double depth = 0.0;
+        for (int f : faces)
+          for (int v : mesh.faces[f]) depth = std::max(depth, br.offset - br.normal.dot(mesh.vertices[v]));
+        if (depth < bestDepth) bestDepth = depth, bridge = b;
+      }
       for (int f : faces) out.facePocket[f] = bridge;
       ++regions;
     }
