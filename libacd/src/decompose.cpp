@@ -141,15 +141,18 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
   std::vector<Plane> candidates;
   if (o.featureGrouping && stalls == 0) {
     t = Clock::now();
-    FeatureOptions fo;
-    fo.delta = o.delta;
-    const GlobalCut cut = findGlobalCut(piece.mesh, graph, map, fo);
-    if (std::getenv("ACD_TRACE")) std::fprintf(stderr, "  global cut: %zu vertices, %zu pockets, closed %d cup %d\n", cut.vertices.size(), cut.pockets.size(), cut.closed, cut.cupShaped);
-    if (cut.vertices.size() >= 2) {
+    // Two global cuts compete: legs restricted to matched knots (Observation 4.2) and legs free
+    // to take the cheapest knot. The lookahead below keeps whichever plane serves better.
+    for (bool matchKnots : {true, false}) {
+      FeatureOptions fo;
+      fo.delta = o.delta;
+      fo.matchKnots = matchKnots;
+      const GlobalCut cut = findGlobalCut(piece.mesh, graph, map, fo);
+      if (cut.vertices.size() < 2) continue;
       const Plane plane = fitCutPlane(piece.mesh, cut, bridgeNormal, 0.5 * o.tau);
       // A plane (nearly) parallel to the bridge only skims the pocket: the cup-shaped case of
       // Figure 13. Split the cup through its deepest point instead, across its longest extent.
-      if (cut.cupShaped || std::abs(plane.normal.normalized().dot(bridgeNormal)) > 0.9)
+      if (matchKnots && (cut.cupShaped || std::abs(plane.normal.normalized().dot(bridgeNormal)) > 0.9))
         candidates.push_back(splitCupPlane(piece.mesh, map, map.notch));
       // The plane must resolve the notch it was grown from: it passes through it. (A plane a hair
       // away from the notch would only shave off a sliver and leave the notch as it was.)

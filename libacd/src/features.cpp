@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 namespace acd {
 
@@ -26,6 +27,55 @@ std::vector<char> pocketVertices(const TriMesh& mesh, const ConcavityMap& map, i
   return in;
 }
 
+/// Position of a knot walking around `pocket` with the pocket on the left.
+int loopOrder(const ConcavityMap& map, const Knot& k, int pocket) {
+  const auto& pe = map.projections[k.projection];
+  return pe.leftBridge == pocket ? k.along : static_cast<int>(pe.path.size()) - 1 - k.along;
+}
+
+/// Knots (indices into `knots`) matched to the entry knot nearest `start` on boundary `entry`,
+/// one per other boundary at most. Empty when the entry boundary has no knots of this pocket.
+std::vector<int> matchedPartners(const TriMesh& mesh, const SurfaceGraph& graph, const PathFinder& finder,
+                                 const ConcavityMap& map, const std::vector<Knot>& knots, int pocket, int start,
+                                 int entry) {
+  std::vector<int> result;
+  if (entry < 0) return result;
+  std::map<int, std::vector<int>> byBoundary;  // projection -> knots in loop order
+  for (int k = 0; k < static_cast<int>(knots.size()); ++k) byBoundary[knots[k].projection].push_back(k);
+  auto entryIt = byBoundary.find(entry);
+  if (entryIt == byBoundary.end()) return result;
+  for (auto& [p, list] : byBoundary)
+    std::sort(list.begin(), list.end(), [&](int a, int b) { return loopOrder(map, knots[a], pocket) < loopOrder(map, knots[b], pocket); });
+  const std::vector<int>& rows = entryIt->second;
+  // Entry knot: the one nearest the chain's end along the boundary path.
+  const auto& path = map.projections[entry].path;
+  const int startAlong = static_cast<int>(std::find(path.begin(), path.end(), start) - path.begin());
+  int entryRow = 0;
+  for (int r = 0; r < static_cast<int>(rows.size()); ++r)
+    if (std::abs(knots[rows[r]].along - startAlong) < std::abs(knots[rows[entryRow]].along - startAlong)) entryRow = r;
+  // Pocket-cut weights from every entry knot (Eq. 4 per edge, inside the pocket).
+  const std::vector<char> allowed = pocketVertices(mesh, map, pocket);
+  const Bridge& bridge = map.bridges[pocket];
+  std::vector<std::vector<double>> dist(rows.size());
+  std::vector<int> parent;
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    std::vector<char> mask = allowed;
+    mask[knots[rows[r]].vertex] = 1;
+    finder.flood({knots[rows[r]].vertex},
+                 [&](int a, int b, int slot) { return cutEdgeWeight(mesh, graph, bridge, a, b, graph.length(slot)); }, &mask,
+                 dist[r], parent);
+  }
+  for (const auto& [p, columns] : byBoundary) {
+    if (p == entry) continue;
+    std::vector<std::vector<double>> cost(rows.size(), std::vector<double>(columns.size()));
+    for (std::size_t r = 0; r < rows.size(); ++r)
+      for (std::size_t c = 0; c < columns.size(); ++c) cost[r][c] = dist[r][knots[columns[c]].vertex];
+    for (const auto& [r, c] : nonCrossingMatching(cost))
+      if (r == entryRow) result.push_back(columns[c]);
+  }
+  return result;
+}
+
 struct Leg {
   std::vector<int> path;  // from the chain end into the pocket, ending at the next end vertex
   int endVertex = -1;
@@ -37,7 +87,7 @@ struct Leg {
 /// Cheapest leg inside `pocket` from `start` to a knot (or, failing that, any vertex) on a
 /// boundary of the pocket other than `excludeProjection`.
 Leg bestLeg(const TriMesh& mesh, const SurfaceGraph& graph, const PathFinder& finder, const ConcavityMap& map,
-            int pocket, int start, int excludeProjection, double delta) {
+            int pocket, int start, int excludeProjection, double delta, bool matchKnots) {
   Leg leg;
   const std::vector<char> allowed = pocketVertices(mesh, map, pocket);
   const Bridge& bridge = map.bridges[pocket];
@@ -57,8 +107,15 @@ Leg bestLeg(const TriMesh& mesh, const SurfaceGraph& graph, const PathFinder& fi
       leg.projection = projection;
     }
   };
-  for (const Knot& k : pocketKnots(mesh, map, pocket, delta))
-    if (k.projection != excludeProjection) consider(k.vertex, k.projection, true);
+  const std::vector<Knot> knots = pocketKnots(mesh, map, pocket, delta);
+  // Entering across a boundary that has knots of this pocket: the leg may only end at a knot
+  // matched (Observation 4.2) to the entry knot nearest the chain's end.
+  const std::vector<int> partners =
+      matchKnots ? matchedPartners(mesh, graph, finder, map, knots, pocket, start, excludeProjection) : std::vector<int>{};
+  for (int k : partners) consider(knots[k].vertex, knots[k].projection, true);
+  if (partners.empty())
+    for (const Knot& k : knots)
+      if (k.projection != excludeProjection) consider(k.vertex, k.projection, true);
   if (leg.endVertex < 0)
     for (int p = 0; p < static_cast<int>(map.projections.size()); ++p) {
       const auto& pe = map.projections[p];
@@ -73,7 +130,46 @@ Leg bestLeg(const TriMesh& mesh, const SurfaceGraph& graph, const PathFinder& fi
   return leg;
 }
 
+
 }  // namespace
+
+std::vector<std::pair<int, int>> nonCrossingMatching(const std::vector<std::vector<double>>& cost) {
+  const int n = static_cast<int>(cost.size());
+  const int m = n > 0 ? static_cast<int>(cost[0].size()) : 0;
+  // Both lists run the same way around the pocket, so a non-crossing matching pairs rows in
+  // ascending order with columns in descending order: align rows with the reversed columns.
+  struct Cell {
+    int pairs = 0;
+    double weight = 0.0;
+    bool better(const Cell& o) const { return pairs != o.pairs ? pairs > o.pairs : weight < o.weight; }
+  };
+  std::vector<std::vector<Cell>> best(n + 1, std::vector<Cell>(m + 1));
+  for (int i = 1; i <= n; ++i)
+    for (int j = 1; j <= m; ++j) {
+      Cell cell = best[i - 1][j].better(best[i][j - 1]) ? best[i - 1][j] : best[i][j - 1];
+      const double w = cost[i - 1][m - j];
+      if (std::isfinite(w)) {
+        const Cell take{best[i - 1][j - 1].pairs + 1, best[i - 1][j - 1].weight + w};
+        if (take.better(cell)) cell = take;
+      }
+      best[i][j] = cell;
+    }
+  std::vector<std::pair<int, int>> pairs;
+  for (int i = n, j = m; i > 0 && j > 0;) {
+    const double w = cost[i - 1][m - j];
+    if (std::isfinite(w) && best[i][j].pairs == best[i - 1][j - 1].pairs + 1 &&
+        best[i][j].weight == best[i - 1][j - 1].weight + w) {
+      pairs.emplace_back(i - 1, m - j);
+      --i, --j;
+    } else if (best[i][j].pairs == best[i - 1][j].pairs && best[i][j].weight == best[i - 1][j].weight) {
+      --i;
+    } else {
+      --j;
+    }
+  }
+  std::reverse(pairs.begin(), pairs.end());
+  return pairs;
+}
 
 std::vector<Knot> pocketKnots(const TriMesh& mesh, const ConcavityMap& map, int bridge, double delta) {
   std::vector<Knot> knots;
@@ -91,7 +187,7 @@ std::vector<Knot> pocketKnots(const TriMesh& mesh, const ConcavityMap& map, int 
     std::vector<Vec2> profile(pe.path.size());
     for (std::size_t i = 0; i < pe.path.size(); ++i)
       profile[i] = Vec2(along[i] * scale, concavityFor(b, mesh.vertices[pe.path[i]]));
-    for (int i : findKnots(profile, delta)) knots.push_back({pe.path[i], bridge, p, profile[i].y()});
+    for (int i : findKnots(profile, delta)) knots.push_back({pe.path[i], bridge, p, profile[i].y(), i});
   }
   return knots;
 }
@@ -129,7 +225,7 @@ GlobalCut findGlobalCut(const TriMesh& mesh, const SurfaceGraph& graph, const Co
     for (std::size_t i = 1; i + 1 < pe.path.size(); ++i)
       if (pe.path[i] == notch) notchProjection = p;
   }
-  Leg first = bestLeg(mesh, graph, finder, map, root, notch, notchProjection, options.delta);
+  Leg first = bestLeg(mesh, graph, finder, map, root, notch, notchProjection, options.delta, options.matchKnots);
   if (first.endVertex < 0) return cut;
   Leg second;
   if (notchProjection >= 0) {
@@ -139,7 +235,7 @@ GlobalCut findGlobalCut(const TriMesh& mesh, const SurfaceGraph& graph, const Co
     second.projection = notchProjection;
     second.nextPocket = pe.leftBridge == root ? pe.rightBridge : pe.leftBridge;
   } else {
-    second = bestLeg(mesh, graph, finder, map, root, notch, first.projection, options.delta);
+    second = bestLeg(mesh, graph, finder, map, root, notch, first.projection, options.delta, options.matchKnots);
   }
   cut.cupShaped = pocketKnots(mesh, map, root, options.delta).size() < 2;
 
@@ -195,7 +291,7 @@ GlobalCut findGlobalCut(const TriMesh& mesh, const SurfaceGraph& graph, const Co
       end.stuck = true;
       continue;
     }
-    Leg leg = bestLeg(mesh, graph, finder, map, pocket, end.chain.back(), end.projection, options.delta);
+    Leg leg = bestLeg(mesh, graph, finder, map, pocket, end.chain.back(), end.projection, options.delta, options.matchKnots);
     if (leg.endVertex < 0) {
       end.stuck = true;
       continue;

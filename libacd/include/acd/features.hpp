@@ -13,6 +13,7 @@ namespace acd {
 struct FeatureOptions {
   double delta = 0.0025;   // Douglas-Peucker tolerance in concavity space (normalised units)
   int maxPockets = 12;     // pockets a global cut may cross before it is closed by force
+  bool matchKnots = true;  // legs end only at knots matched to the entry knot (Observation 4.2)
 };
 
 /// A knot: a mesh vertex on a pocket boundary, with the pocket it was found for.
@@ -21,7 +22,15 @@ struct Knot {
   int pocket = -1;         // bridge index whose pocket the knot bounds
   int projection = -1;     // index into ConcavityMap::projections
   double concavity = 0.0;  // with respect to `pocket`'s bridge
+  int along = -1;          // index of the vertex in the projection's path
 };
+
+/// Observation 4.2: minimum-weight non-crossing bipartite matching between the knots of two
+/// boundaries of one pocket. Rows and columns are both listed in the order met walking once
+/// around the pocket, so two pairs (i, j), (i', j') with i < i' do not cross iff j > j'.
+/// cost[i][j] = infinity forbids a pair. Maximises the number of pairs, then minimises the
+/// total cost. Returns (row, column) pairs with ascending rows.
+std::vector<std::pair<int, int>> nonCrossingMatching(const std::vector<std::vector<double>>& cost);
 
 struct GlobalCut {
   std::vector<int> vertices;    // mesh vertices along the cut (a chain or a cycle)
