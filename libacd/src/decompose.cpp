@@ -133,9 +133,9 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
   const bool stalled = piece.parentConcavity >= 0 && map.concavity > piece.parentConcavity - 0.1 * o.tau &&
                        (notch - piece.parentNotch).norm() < 0.5 * o.tau;
   const int stalls = stalled ? piece.stalls + 1 : 0;
-  if (stalls > 4) {  // nothing we know resolves this notch: report it rather than loop
+  if (stalls > 8) {  // nothing we know resolves this notch: report it rather than loop
     c.unresolved = true;
-    c.note = "five cuts in a row left the notch's concavity unchanged";
+    c.note = "nine cuts in a row left the notch's concavity unchanged";
     return out;
   }
   std::vector<Plane> candidates;
@@ -165,7 +165,9 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
   // ends (two orthogonal ones; a different pair after each stall).
   const Vec3 u = bridgeNormal.unitOrthogonal(), w = bridgeNormal.cross(u);
   const double pi = std::acos(-1.0);
-  const int fan = 2;
+  // After repeated stalls, a wider fan (and the plane parallel to the bridge) compete by lookahead.
+  const int fan = stalls >= 2 ? 8 : 2;
+  if (stalls >= 2) candidates.push_back(Plane::through(notch, bridgeNormal));
   for (int k = 0; k < fan; ++k) {
     const double angle = pi * k / fan + 0.25 * pi * (stalls % 2);  // a different set on each stall
     candidates.push_back(Plane::through(notch, std::cos(angle) * u + std::sin(angle) * w));
