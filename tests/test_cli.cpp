@@ -1,0 +1,346 @@
+// The `acd` command: help, decompose outputs (files, report.json), errors with exit codes, info, evaluate.
+#include <acd/io.hpp>
+#include <acd/mesh.hpp>
+#include <acd/shapes.hpp>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "helpers.hpp"
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+using namespace acd;
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+namespace {
+
+struct CliRun {
+  int code = -1;
+  std::string out, err;
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = std::make_unique<acdtest::TempDir>(std::string("cli_") + info->name());
+    if (!fs::exists(ACD_CLI)) GTEST_SKIP() << "CLI not built: " << ACD_CLI;
+  }
+
+  std::string path(const std::string& name) const { return *dir_ / name; }
+
+  /// Runs `acd ARGS` with stdout and stderr captured.
+  CliRun acd(const std::string& args) const {
+    const std::string out = path("stdout.txt"), err = path("stderr.txt");
+    const std::string cmd = quote(ACD_CLI) + " " + args + " >" + quote(out) + " 2>" + quote(err) + " </dev/null";
+    const int status = std::system(cmd.c_str());
+    CliRun r;
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = slurp(out);
+    r.err = slurp(err);
+    return r;
+  }
+
+  std::string writeModel(const std::string& name, const TriMesh& mesh) const {
+    const std::string p = path(name);
+    const Status s = writeMesh(p, mesh);
+    EXPECT_TRUE(s.ok()) << s.message;
+    return p;
+  }
+
+  std::string writeText(const std::string& name, const std::string& text) const {
+    const std::string p = path(name);
+    std::ofstream(p, std::ios::binary) << text;
+    return p;
+  }
+
+  /// decompose must refuse with `code` and say something containing every word of `words` on stderr.
+  void expectRefused(const std::string& args, int code, std::initializer_list<const char*> words) const {
+    const CliRun r = acd("decompose " + args + " -o " + quote(path("out")) + " -q");
+    EXPECT_EQ(r.code, code) << "stderr: " << r.err;
+    EXPECT_FALSE(r.err.empty());
+    std::string lower = r.err;
+    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+    for (const char* w : words) EXPECT_NE(lower.find(w), std::string::npos) << "'" << w << "' not in: " << r.err;
+    EXPECT_FALSE(fs::exists(path("out") + "/report.json")) << "no output on failure";
+  }
+
+  std::unique_ptr<acdtest::TempDir> dir_;
+};
+
+}  // namespace
+
+TEST_F(Cli, TopLevelHelp) {
+  const CliRun r = acd("--help");
+  EXPECT_EQ(r.code, 0);
+  for (const char* word : {"decompose", "info", "evaluate", "Exit codes"})
+    EXPECT_NE(r.out.find(word), std::string::npos) << word;
+}
+
+TEST_F(Cli, DecomposeHelpMentionsEveryOption) {
+  const CliRun r = acd("decompose --help");
+  EXPECT_EQ(r.code, 0);
+  for (const char* opt : {"--tau", "-t", "--epsilon", "--delta", "--no-grouping", "--threads", "--out", "-o", "--quiet",
+                          "-q", "model", "Exit codes"})
+    EXPECT_NE(r.out.find(opt), std::string::npos) << opt << " missing from:\n" << r.out;
+}
+
+TEST_F(Cli, EvaluateHelpMentionsEveryOption) {
+  const CliRun r = acd("evaluate --help");
+  EXPECT_EQ(r.code, 0);
+  for (const char* opt : {"--samples", "--surface-samples", "--seed", "--threads", "--json"})
+    EXPECT_NE(r.out.find(opt), std::string::npos) << opt << " missing from:\n" << r.out;
+}
+
+TEST_F(Cli, NoSubcommandIsAUsageError) {
+  const CliRun r = acd("");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_FALSE(r.err.empty() && r.out.empty());
+}
+
+TEST_F(Cli, DecomposeLShapeWritesComponentsHullsAndReport) {
+  const std::string model = writeModel("L.off", shapes::lShape());
+  const std::string out = path("out");
+  const CliRun r = acd("decompose " + quote(model) + " -t 0.05 --threads 0 -o " + quote(out));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("components"), std::string::npos);  // the summary table
+
+  ASSERT_TRUE(fs::exists(out + "/report.json"));
+  const json report = json::parse(slurp(out + "/report.json"));
+  // Parameters, resolved.
+  ASSERT_TRUE(report.contains("parameters"));
+  const json& p = report["parameters"];
+  EXPECT_DOUBLE_EQ(p.at("tau").get<double>(), 0.05);
+  EXPECT_DOUBLE_EQ(p.at("epsilon").get<double>(), 0.025);
+  EXPECT_DOUBLE_EQ(p.at("delta").get<double>(), 0.0025);
+  EXPECT_TRUE(p.at("feature_grouping").get<bool>());
+  EXPECT_TRUE(p.contains("threads"));
+  // Components.
+  ASSERT_TRUE(report.contains("components"));
+  const json& comps = report["components"];
+  ASSERT_TRUE(comps.is_array());
+  ASSERT_EQ(comps.size(), 2u);
+  double volume = 0;
+  for (std::size_t i = 0; i < comps.size(); ++i) {
+    const json& c = comps[i];
+    SCOPED_TRACE(i);
+    for (const char* key : {"volume", "hull_volume", "concavity", "vertices", "faces", "hull_vertices", "hull_faces", "unresolved"})
+      EXPECT_TRUE(c.contains(key)) << key;
+    EXPECT_GT(c.at("volume").get<double>(), 0.0);
+    EXPECT_GE(c.at("hull_volume").get<double>(), c.at("volume").get<double>() * (1 - 1e-9));
+    EXPECT_LE(c.at("concavity").get<double>(), 0.05);
+    EXPECT_FALSE(c.at("unresolved").get<bool>());
+    volume += c.at("volume").get<double>();
+    // The component file matches its entry.
+    char name[32];
+    std::snprintf(name, sizeof name, "/component_%03zu.off", i);
+    const ReadResult m = readMesh(out + name);
+    ASSERT_TRUE(m.status.ok()) << m.status.message;
+    EXPECT_TRUE(isClosedOriented(m.mesh));
+    EXPECT_EQ(static_cast<std::size_t>(c.at("vertices").get<int>()), m.mesh.vertices.size());
+    EXPECT_EQ(static_cast<std::size_t>(c.at("faces").get<int>()), m.mesh.faces.size());
+  }
+  EXPECT_FALSE(fs::exists(out + "/component_002.off"));
+  // Totals.
+  ASSERT_TRUE(report.contains("totals"));
+  const json& t = report["totals"];
+  EXPECT_EQ(t.at("components").get<int>(), 2);
+  EXPECT_EQ(t.at("unresolved").get<int>(), 0);
+  EXPECT_NEAR(t.at("volume").get<double>(), volume, 1e-12);
+  EXPECT_LE(t.at("volume_relative_error").get<double>(), 1e-9);
+  EXPECT_LE(t.at("max_concavity").get<double>(), 0.05);
+  EXPECT_TRUE(t.contains("hull_volume"));
+  EXPECT_TRUE(t.contains("cuts"));
+  EXPECT_NEAR(report.at("input").at("volume").get<double>(), volume, 1e-9 * volume);
+  // Timing.
+  ASSERT_TRUE(report.contains("timing"));
+  EXPECT_GE(report["timing"].at("total_seconds").get<double>(), 0.0);
+  for (const char* key : {"prepare_seconds", "concavity_cpu_seconds", "grouping_cpu_seconds", "cutting_cpu_seconds", "hulls_seconds"})
+    EXPECT_TRUE(report["timing"].contains(key)) << key;
+  // Hulls: one object per component, convex, each enclosing its component.
+  const ObjObjects hulls = readObjObjects(out + "/hulls.obj");
+  ASSERT_TRUE(hulls.status.ok()) << hulls.status.message;
+  EXPECT_EQ(hulls.objects.size(), comps.size());
+  double hullVolume = 0;
+  for (const TriMesh& h : hulls.objects) {
+    EXPECT_TRUE(isClosedOriented(h));
+    hullVolume += signedVolume(h);
+  }
+  // The L is two boxes: hull volume = volume = 3 in input units.
+  EXPECT_NEAR(hullVolume, 3.0, 1e-9);
+}
+
+TEST_F(Cli, QuietPrintsNoSummary) {
+  const std::string model = writeModel("L.off", shapes::lShape());
+  const CliRun r = acd("decompose " + quote(model) + " -t 0.05 -q -o " + quote(path("out")));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_TRUE(fs::exists(path("out") + "/component_000.off"));
+}
+
+TEST_F(Cli, NoGroupingIsRecordedInTheReport) {
+  const std::string model = writeModel("U.obj", shapes::uShape());
+  const CliRun r = acd("decompose " + quote(model) + " -t 0.05 --no-grouping --threads 1 -q -o " + quote(path("out")));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json report = json::parse(slurp(path("out") + "/report.json"));
+  EXPECT_FALSE(report["parameters"].at("feature_grouping").get<bool>());
+  EXPECT_GE(report["totals"].at("components").get<int>(), 3);
+}
+
+// ------------------------------------------------------------------ bad input: exit 2, stderr names the problem
+
+TEST_F(Cli, MissingFile) { expectRefused(quote(path("nowhere.off")), 2, {"nowhere.off", "cannot open"}); }
+
+TEST_F(Cli, UnsupportedExtension) {
+  writeText("model.xyz", "0 0 0\n1 0 0\n");
+  expectRefused(quote(path("model.xyz")), 2, {"unsupported", ".xyz"});
+}
+
+TEST_F(Cli, GarbageFile) {
+  writeText("garbage.off", "hello world\nthis is not a mesh\n");
+  expectRefused(quote(path("garbage.off")), 2, {"garbage.off", "off"});
+}
+
+TEST_F(Cli, NaNCoordinate) {
+  writeText("nan.off", "OFF\n4 4 0\n0 0 0\n1 0 0\nnan 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  expectRefused(quote(path("nan.off")), 2, {"vertex 2", "non-finite"});
+}
+
+TEST_F(Cli, EmptyMesh) {
+  writeText("empty.off", "OFF\n0 0 0\n");
+  expectRefused(quote(path("empty.off")), 2, {"no faces"});
+}
+
+TEST_F(Cli, OpenMesh) {
+  TriMesh box = shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1));
+  box.faces.pop_back();
+  const std::string model = writeModel("open.off", box);
+  expectRefused(quote(model), 2, {"open", "boundary"});
+}
+
+TEST_F(Cli, NonManifoldEdge) {
+  const TriMesh twoCubes = shapes::voxels({{0, 0, 0}, {1, 1, 0}});  // share the edge x = y = 1
+  const std::string model = writeModel("nme.off", twoCubes);
+  expectRefused(quote(model), 2, {"non-manifold edge"});
+}
+
+TEST_F(Cli, TauZero) {
+  const std::string model = writeModel("L.off", shapes::lShape());
+  expectRefused(quote(model) + " -t 0", 3, {"tau"});
+}
+
+TEST_F(Cli, TauNegative) {
+  const std::string model = writeModel("L.off", shapes::lShape());
+  expectRefused(quote(model) + " -t -1", 3, {"tau"});
+}
+
+TEST_F(Cli, TauNaN) {
+  const std::string model = writeModel("L.off", shapes::lShape());
+  expectRefused(quote(model) + " -t nan", 3, {"tau", "nan"});
+}
+
+TEST_F(Cli, TauHuge) {
+  const std::string model = writeModel("L.off", shapes::lShape());
+  expectRefused(quote(model) + " -t 1e9", 3, {"tau", "exceeds"});
+}
+
+TEST_F(Cli, NegativeThreads) {
+  const std::string model = writeModel("L.off", shapes::lShape());
+  expectRefused(quote(model) + " --threads -3", 3, {"threads"});
+}
+
+TEST_F(Cli, EpsilonAboveTau) {
+  const std::string model = writeModel("L.off", shapes::lShape());
+  expectRefused(quote(model) + " -t 0.05 --epsilon 0.5", 3, {"epsilon"});
+}
+
+TEST_F(Cli, UnknownOption) {
+  const std::string model = writeModel("L.off", shapes::lShape());
+  expectRefused(quote(model) + " --bogus", 1, {"--bogus"});
+}
+
+TEST_F(Cli, MissingModelArgument) {
+  const CliRun r = acd("decompose -t 0.1");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("model"), std::string::npos) << r.err;
+}
+
+// ------------------------------------------------------------------ info and evaluate
+
+TEST_F(Cli, InfoOnTheL) {
+  const std::string model = writeModel("L.off", shapes::lShape());
+  const CliRun r = acd("info " + quote(model));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(genus\s+0\b)"))) << r.out;
+  EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(closed\s+yes\b)"))) << r.out;
+  EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(volume\s+3\b)"))) << r.out;
+}
+
+TEST_F(Cli, InfoOnATorusAndAnOpenMesh) {
+  const CliRun t = acd("info " + quote(writeModel("torus.off", shapes::torus(2.0, 0.5, 24, 12))));
+  ASSERT_EQ(t.code, 0) << t.err;
+  EXPECT_TRUE(std::regex_search(t.out, std::regex(R"(genus\s+1\b)"))) << t.out;
+  TriMesh box = shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1));
+  box.faces.pop_back();
+  const CliRun o = acd("info " + quote(writeModel("open.off", box)));
+  ASSERT_EQ(o.code, 0) << o.err;  // diagnosing a broken mesh is not an error
+  EXPECT_TRUE(std::regex_search(o.out, std::regex(R"(closed\s+no\b)"))) << o.out;
+  EXPECT_TRUE(std::regex_search(o.out, std::regex(R"(boundary edges\s+3\b)"))) << o.out;
+}
+
+TEST_F(Cli, InfoOnAMissingFile) {
+  const CliRun r = acd("info " + quote(path("nowhere.off")));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("nowhere.off"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, EvaluateTheLAgainstItsDecomposition) {
+  const std::string model = writeModel("L.off", shapes::lShape());
+  const std::string out = path("out");
+  ASSERT_EQ(acd("decompose " + quote(model) + " -t 0.05 -q -o " + quote(out)).code, 0);
+  const CliRun r = acd("evaluate " + quote(model) + " " + quote(out + "/hulls.obj") +
+                    " --samples 200000 --surface-samples 20000 --threads 0");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"(IoU\s+([0-9.]+))"))) << r.out;
+  EXPECT_GT(std::stod(m[1].str()), 0.999);  // two boxes that are exactly the L
+  EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(\(2 hulls\))"))) << r.out;
+
+  const CliRun j = acd("evaluate " + quote(model) + " " + quote(out + "/hulls.obj") +
+                    " --samples 200000 --surface-samples 20000 --json");
+  ASSERT_EQ(j.code, 0) << j.err;
+  const json e = json::parse(j.out);
+  EXPECT_EQ(e.at("hulls").get<int>(), 2);
+  EXPECT_GT(e.at("iou").get<double>(), 0.999);
+  EXPECT_LT(e.at("hull_outside_max").get<double>(), 1e-9);
+}
+
+TEST_F(Cli, EvaluateWithAMissingHullFile) {
+  const std::string model = writeModel("L.off", shapes::lShape());
+  const CliRun r = acd("evaluate " + quote(model) + " " + quote(path("nohulls.obj")));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("nohulls.obj"), std::string::npos) << r.err;
+}
