@@ -345,5 +345,5 @@ INSTANTIATE_TEST_SUITE_P(Shapes, Observation41, ::testing::Values("dumbbell", "U
 // splits, leaving vertices whose estimate exceeds the per-facet concavity by epsilon or more:
 // elephant (eps 0.025: 5 vertices, worst gap 0.0280; eps 0.01: 56 vertices, worst 0.0152) and
 // armadillo (eps 0.025: 219 vertices, worst 0.0363; eps 0.01: 2059 vertices, worst 0.0232).
-INSTANTIATE_TEST_SUITE_P(DISABLED_Corpus, Observation41, ::testing::Values("elephant", "armadillo"),
+INSTANTIATE_TEST_SUITE_P(Corpus, Observation41, ::testing::Values("elephant", "armadillo"),
                          [](const auto& info) { return info.param; });

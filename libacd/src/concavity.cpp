@@ -26,11 +26,16 @@ HullFacets facetsOf(const TriMesh& hull) {
   h.neighbour.resize(n);
   std::unordered_map<std::uint64_t, int> directed;
   directed.reserve(3 * n * 2);
+  const double extent = boundingBox(hull).size().maxCoeff();
   for (int f = 0; f < n; ++f) {
     const Vec3 c = faceNormal(hull, f);
     h.area[f] = 0.5 * c.norm();
     h.normal[f] = c.normalized();
     h.offset[f] = h.normal[f].dot(hull.vertices[hull.faces[f][0]]);
+    // A sliver facet (nearly collinear corners, e.g. from a section flat only up to rounding) has
+    // a normal that is noise: lift its plane onto the hull so that it is a supporting plane anyway.
+    if (h.area[f] < 1e-8 * extent * extent)
+      for (const Vec3& p : hull.vertices) h.offset[f] = std::max(h.offset[f], h.normal[f].dot(p));
     for (int k = 0; k < 3; ++k)
       directed[(static_cast<std::uint64_t>(hull.faces[f][k]) << 32) | static_cast<std::uint32_t>(hull.faces[f][(k + 1) % 3])] = f;
   }
@@ -290,9 +295,10 @@ ConcavityMap measureConcavity(const TriMesh& mesh, const SurfaceGraph& graph, co
         if (c > bestEstimate[v]) bestEstimate[v] = c, bestBridge[v] = out.facePocket[f];
       }
     }
-    int worstVertex = -1;
-    double worstGap = 0.0;
-    int worstFacet = -1;
+    // Observation 4.1: the estimate may exceed the per-facet value by less than epsilon. Where it
+    // does not, split the offending patch at the facet its worst vertex is nearest to, and measure again.
+    std::vector<double> worstGap(out.bridges.size(), 0.0);
+    std::vector<int> worstFacet(out.bridges.size(), -1);
     for (int v = 0; v < nv; ++v) {
       const Bridge& b = out.bridges[bestBridge[v]];
       double facet = std::numeric_limits<double>::infinity();
@@ -303,17 +309,17 @@ ConcavityMap measureConcavity(const TriMesh& mesh, const SurfaceGraph& graph, co
       }
       bestFacet[v] = std::max(0.0, facet);
       const double gap = bestEstimate[v] - bestFacet[v];
-      if (gap > worstGap) worstGap = gap, worstVertex = v, worstFacet = argFacet;
+      if (gap > worstGap[bestBridge[v]]) worstGap[bestBridge[v]] = gap, worstFacet[bestBridge[v]] = argFacet;
     }
-    // Observation 4.1: the estimate may exceed the per-facet value by less than epsilon. If not, split
-    // the patch at the facet the worst vertex is nearest to and measure again.
-    if (eps > 0.0 && worstGap >= eps && attempt < 16 && worstFacet >= 0 &&
-        std::find(seeds.begin(), seeds.end(), worstFacet) == seeds.end()) {
-      seeds.push_back(worstFacet);
-      ++out.refinements;
-      (void)worstVertex;
-      continue;
-    }
+    bool split = false;
+    for (std::size_t b = 0; b < out.bridges.size() && eps > 0.0 && attempt < 64; ++b)
+      if (worstGap[b] >= eps && worstFacet[b] >= 0 &&
+          std::find(seeds.begin(), seeds.end(), worstFacet[b]) == seeds.end()) {
+        seeds.push_back(worstFacet[b]);
+        ++out.refinements;
+        split = true;
+      }
+    if (split) continue;
     break;
   }
   out.vertexConcavity = bestEstimate;
