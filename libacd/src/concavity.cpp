@@ -34,6 +34,11 @@ HullFacets facetsOf(const TriMesh& hull) {
     h.offset[f] = h.normal[f].dot(hull.vertices[hull.faces[f][0]]);
     // A sliver facet (nearly collinear corners, e.g. from a section flat only up to rounding) has
     // a normal that is noise: lift its plane onto the hull so that it is a supporting plane anyway.
+    if (!(h.area[f] > 0.0) || !h.normal[f].allFinite()) {
+      // No normal at all (collinear corners): borrow a valid direction, lifted below.
+      h.normal[f] = (hull.vertices[hull.faces[f][0]] - boundingBox(hull).center()).normalized();
+      if (!h.normal[f].allFinite() || h.normal[f].norm() < 0.5) h.normal[f] = Vec3::UnitZ();
+    }
     if (h.area[f] < 1e-8 * extent * extent)
       for (const Vec3& p : hull.vertices) h.offset[f] = std::max(h.offset[f], h.normal[f].dot(p));
     for (int k = 0; k < 3; ++k)

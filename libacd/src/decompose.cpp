@@ -58,8 +58,6 @@ bool tryCut(const Piece& piece, Plane plane, const Vec3& notch, double concavity
     Plane p = plane;
     p.offset += nudge * p.normal.norm();
     CutResult cut = cutByPlane(piece.mesh, p);
-    if (std::getenv("ACD_TRACE") && (!cut.ok || cut.below.empty() || cut.above.empty()))
-      std::fprintf(stderr, "     cut failed: %s (below %zu above %zu)\n", cut.error.c_str(), cut.below.size(), cut.above.size());
     if (!cut.ok || cut.below.empty() || cut.above.empty()) continue;
     std::vector<Piece> out;
     bool valid = true;
@@ -173,13 +171,6 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
     candidates.push_back(Plane::through(notch, std::cos(angle) * u + std::sin(angle) * w));
   }
 
-  if (std::getenv("ACD_TRACE")) {
-    std::fprintf(stderr, "piece depth %d nv %zu conc %.4f notch (%.3f %.3f %.3f) bridges %zu bridgeN (%.2f %.2f %.2f)\n", piece.depth,
-                 piece.mesh.vertices.size(), map.concavity, notch.x(), notch.y(), notch.z(), map.bridges.size(),
-                 bridgeNormal.x(), bridgeNormal.y(), bridgeNormal.z());
-    for (const Plane& p : candidates)
-      std::fprintf(stderr, "   plane n (%.3f %.3f %.3f) d %.4f\n", p.normal.x(), p.normal.y(), p.normal.z(), p.offset);
-  }
   t = Clock::now();
   if (!o.featureGrouping || candidates.size() == 1) {
     // The paper's baseline: the first plane that cuts cleanly.

@@ -99,19 +99,25 @@ ConvexHull convexHull(const std::vector<Vec3>& points) {
     std::vector<int> ring{first};
     for (int v = next.at(first); v != first && ring.size() <= next.size(); v = next.at(v)) ring.push_back(v);
     auto pt = [&](int v) { return K::Point_3(points[v].x(), points[v].y(), points[v].z()); };
-    // Ear clipping: on a convex polygon every corner that is not collinear with its neighbours is an ear.
+    // Ear clipping: on a convex polygon every corner that is not collinear with its neighbours is an
+    // ear. Clip the fattest ear first (largest area, ties to the earlier corner) so that no sliver
+    // triangles with meaningless normals are made.
     while (ring.size() > 3) {
       std::size_t ear = ring.size();
-      for (std::size_t i = 0; i < ring.size() && ear == ring.size(); ++i) {
+      double fattest = -1.0;
+      for (std::size_t i = 0; i < ring.size(); ++i) {
         const int a = ring[(i + ring.size() - 1) % ring.size()], b = ring[i], c = ring[(i + 1) % ring.size()];
-        if (!CGAL::collinear(pt(a), pt(b), pt(c))) ear = i;
+        if (CGAL::collinear(pt(a), pt(b), pt(c))) continue;
+        const double area = (points[b] - points[a]).cross(points[c] - points[a]).norm();
+        if (area > fattest) fattest = area, ear = i;
       }
       if (ear == ring.size()) break;  // only collinear points left: nothing with area to add
       const std::size_t prev = (ear + ring.size() - 1) % ring.size(), nextI = (ear + 1) % ring.size();
       out.mesh.faces.push_back({hullIndex.at(ring[prev]), hullIndex.at(ring[ear]), hullIndex.at(ring[nextI])});
       ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(ear));
     }
-    if (ring.size() == 3) out.mesh.faces.push_back({hullIndex.at(ring[0]), hullIndex.at(ring[1]), hullIndex.at(ring[2])});
+    if (ring.size() == 3 && !CGAL::collinear(pt(ring[0]), pt(ring[1]), pt(ring[2])))
+      out.mesh.faces.push_back({hullIndex.at(ring[0]), hullIndex.at(ring[1]), hullIndex.at(ring[2])});
   }
   for (Face& f : out.mesh.faces) std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
   std::sort(out.mesh.faces.begin(), out.mesh.faces.end());
