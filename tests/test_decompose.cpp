@@ -304,11 +304,9 @@ TEST(Decompose, UShapeInvariants) {
   for (const Component& c : d.components) EXPECT_NEAR(c.hullVolume, c.volume, 1e-9 * c.volume);  // convex
 }
 
-// DISABLED: fails with the current library: 4 components. The first cut through the notch (1,1) is
-// the diagonal plane y = x (the plane x = 1 is tried first and rejected), which also slices a
-// 0.5-unit triangular prism [2,3]x[2,3] off the top of the right arm; the remaining right part is
-// then cut again. Three boxes (two arms and the base, or equivalent) suffice.
-TEST(Decompose, DISABLED_UShapeGivesThreeComponents) {
+// Three boxes (two arms and the base) suffice: the cut must follow the slot bottom, not the
+// diagonal bisector of one of its edges.
+TEST(Decompose, UShapeGivesThreeComponents) {
   const TriMesh u = shapes::uShape();
   const Decomposition d = decompose(u, withTau(0.05));
   checkInvariants(u, d);

@@ -139,18 +139,21 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
   std::vector<Plane> candidates;
   if (o.featureGrouping && stalls == 0) {
     t = Clock::now();
-    // Two global cuts compete: legs restricted to matched knots (Observation 4.2) and legs free
-    // to take the cheapest knot. The lookahead below keeps whichever plane serves better.
-    for (bool matchKnots : {true, false}) {
+    // Four global cuts compete: legs restricted to matched knots (Observation 4.2) or free to take
+    // the cheapest knot, and a notch on a boundary taken as an end of the root cut or not. The
+    // lookahead below keeps whichever plane serves better.
+    for (int variant = 0; variant < 4; ++variant) {
+      const bool matchKnots = variant < 2;
       FeatureOptions fo;
       fo.delta = o.delta;
       fo.matchKnots = matchKnots;
+      fo.notchAsEnd = variant % 2 == 0;
       const GlobalCut cut = findGlobalCut(piece.mesh, graph, map, fo);
       if (cut.vertices.size() < 2) continue;
       const Plane plane = fitCutPlane(piece.mesh, cut, bridgeNormal, 0.5 * o.tau);
       // A plane (nearly) parallel to the bridge only skims the pocket: the cup-shaped case of
       // Figure 13. Split the cup through its deepest point instead, across its longest extent.
-      if (matchKnots && (cut.cupShaped || std::abs(plane.normal.normalized().dot(bridgeNormal)) > 0.9))
+      if (variant == 0 && (cut.cupShaped || std::abs(plane.normal.normalized().dot(bridgeNormal)) > 0.9))
         candidates.push_back(splitCupPlane(piece.mesh, map, map.notch));
       // The plane must resolve the notch it was grown from: it passes through it. (A plane a hair
       // away from the notch would only shave off a sliver and leave the notch as it was.)

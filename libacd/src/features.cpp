@@ -219,7 +219,7 @@ GlobalCut findGlobalCut(const TriMesh& mesh, const SurfaceGraph& graph, const Co
   // Root pocket cut: notch to its two cheapest ends on different boundaries. A notch that lies on
   // a boundary itself is one end already: the cut continues across that boundary from it.
   int notchProjection = -1;
-  for (int p = 0; p < static_cast<int>(map.projections.size()) && notchProjection < 0; ++p) {
+  for (int p = 0; options.notchAsEnd && p < static_cast<int>(map.projections.size()) && notchProjection < 0; ++p) {
     const auto& pe = map.projections[p];
     if (pe.leftBridge != root && pe.rightBridge != root) continue;
     for (std::size_t i = 1; i + 1 < pe.path.size(); ++i)

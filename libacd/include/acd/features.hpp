@@ -14,6 +14,7 @@ struct FeatureOptions {
   double delta = 0.0025;   // Douglas-Peucker tolerance in concavity space (normalised units)
   int maxPockets = 12;     // pockets a global cut may cross before it is closed by force
   bool matchKnots = true;  // legs end only at knots matched to the entry knot (Observation 4.2)
+  bool notchAsEnd = true;  // a notch on a pocket boundary is itself one end of the root pocket cut
 };
 
 /// A knot: a mesh vertex on a pocket boundary, with the pocket it was found for.
