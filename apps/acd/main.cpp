@@ -87,6 +87,10 @@ int runInfo(const std::string& path) {
   std::printf("  bounding box          [%g %g %g] - [%g %g %g]\n", d.bbox.lo.x(), d.bbox.lo.y(), d.bbox.lo.z(),
               d.bbox.hi.x(), d.bbox.hi.y(), d.bbox.hi.z());
   if (!d.firstProblem.empty()) std::printf("  first problem         %s\n", d.firstProblem.c_str());
+  if (d.closed && d.nonManifoldEdges == 0) {
+    const int pairs = acd::countSelfIntersections(r.mesh);
+    if (pairs >= 0) std::printf("  self-intersections    %d face pairs\n", pairs);
+  }
   const acd::PreparedSolid p = acd::prepareSolid(r.mesh);
   std::printf("  solid decomposition   %s\n", p.status.ok() ? "possible" : p.status.message.c_str());
   for (const auto& line : p.repairs) std::printf("  repair                %s\n", line.c_str());
@@ -102,7 +106,8 @@ struct DecomposeArgs {
   bool quiet = false;
 };
 
-json reportJson(const DecomposeArgs& a, const acd::Decomposition& d, const acd::MeshDiagnosis& input) {
+json reportJson(const DecomposeArgs& a, const acd::Decomposition& d, const acd::MeshDiagnosis& input,
+               int selfIntersections) {
   json j;
   j["model"] = a.model;
   j["parameters"] = {{"tau", d.options.tau},
@@ -119,6 +124,7 @@ json reportJson(const DecomposeArgs& a, const acd::Decomposition& d, const acd::
                 {"notch_fraction", edges > 0 ? double(d.stats.inputNotches) / edges : 0.0},
                 {"volume", d.stats.inputVolume},
                 {"genus", input.genus},
+                {"self_intersecting_face_pairs", selfIntersections},
                 {"normalization", {{"center", {d.normalization.center.x(), d.normalization.center.y(), d.normalization.center.z()}},
                                    {"scale", d.normalization.scale}}},
                 {"repairs", d.repairs}};
@@ -228,12 +234,15 @@ int runDecompose(DecomposeArgs& a) {
   acd::Status s = acd::writeObjObjects((fs::path(a.out) / "hulls.obj").string(), hulls, names);
   if (!s.ok()) return (void)fail("output", s), kOutputFailed;
   std::ofstream report(fs::path(a.out) / "report.json");
-  report << reportJson(a, d, diagnosis).dump(2) << "\n";
+  // Self-intersections explain unresolved components; only look for them when there are some.
+  const bool anyUnresolved = std::any_of(d.components.begin(), d.components.end(), [](const auto& c) { return c.unresolved; });
+  const int selfIntersections = anyUnresolved ? acd::countSelfIntersections(r.mesh) : 0;
+  report << reportJson(a, d, diagnosis, selfIntersections).dump(2) << "\n";
   if (!report) return (void)fail("output", acd::Status::error(acd::StatusCode::FileUnreadable, "cannot write report.json")), kOutputFailed;
   if (!a.quiet) printSummary(a, d);
-  const bool unresolved = std::any_of(d.components.begin(), d.components.end(), [](const auto& c) { return c.unresolved; });
-  if (unresolved) {
-    std::fprintf(stderr, "acd: warning: some components still exceed tau (marked unresolved in report.json)\n");
+  if (anyUnresolved) {
+    std::fprintf(stderr, "acd: warning: some components still exceed tau (marked unresolved in report.json)%s\n",
+                 selfIntersections > 0 ? "; the input self-intersects" : "");
     return kUnresolved;
   }
   return kOk;

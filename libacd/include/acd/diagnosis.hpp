@@ -34,6 +34,12 @@ struct MeshDiagnosis {
 
 MeshDiagnosis diagnose(const TriMesh& mesh);
 
+/// Pairs of faces that intersect other than along a shared edge or vertex (exact predicates;
+/// CGAL's box-intersection filter). Stops counting at `limit` (< 0: count all). The solid
+/// decomposition accepts such meshes, but where the surface passes through itself a section
+/// can have crossing loops and a component may stay unresolved; see docs/ERRORS.md.
+int countSelfIntersections(const TriMesh& mesh, int limit = -1);
+
 /// Result of checking and repairing a mesh for solid decomposition.
 struct PreparedSolid {
   Status status;                      // not ok: the mesh cannot be decomposed as a solid
