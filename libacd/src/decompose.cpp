@@ -8,6 +8,7 @@
 #include <acd/diagnosis.hpp>
 #include <acd/features.hpp>
 #include <acd/hull.hpp>
+#include <acd/knot_graph.hpp>
 
 #include <Eigen/Eigenvalues>
 #include <tbb/global_control.h>
@@ -139,9 +140,17 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
   std::vector<Plane> candidates;
   if (o.featureGrouping && stalls == 0) {
     t = Clock::now();
-    // Four global cuts compete: legs restricted to matched knots (Observation 4.2) or free to take
+    // The paper's global cut: the minimum-weight cycle of the knot graph G_K through the root
+    // pocket cut (Section 4.2.4). Four greedily grown cuts compete with it (they also reach
+    // pockets without knots): legs restricted to matched knots (Observation 4.2) or free to take
     // the cheapest knot, and a notch on a boundary taken as an end of the root cut or not. The
     // lookahead below keeps whichever plane serves better.
+    {
+      const KnotGraph kg = buildKnotGraph(piece.mesh, graph, map, o.delta);
+      const GlobalCut cycle = knotGraphCycle(piece.mesh, map, kg);
+      if (cycle.vertices.size() >= 3)
+        candidates.push_back(Plane::through(notch, fitCutPlane(piece.mesh, cycle, bridgeNormal, 0.5 * o.tau).normal));
+    }
     for (int variant = 0; variant < 4; ++variant) {
       const bool matchKnots = variant < 2;
       FeatureOptions fo;
@@ -175,7 +184,7 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
   }
 
   t = Clock::now();
-  if (!o.featureGrouping || candidates.size() == 1) {
+  if ((!o.featureGrouping && stalls == 0) || candidates.size() == 1) {
     // The paper's baseline: the first plane that cuts cleanly.
     for (std::size_t i = 0; i < candidates.size(); ++i) {
       if (tryCut(piece, candidates[i], notch, map.concavity, stalls, out.children)) {
