@@ -103,6 +103,7 @@ struct DecomposeArgs {
   std::string out = "acd-out";
   acd::DecomposeOptions options;
   bool noGrouping = false;
+  bool noMerge = false;
   bool quiet = false;
 };
 
@@ -114,6 +115,7 @@ json reportJson(const DecomposeArgs& a, const acd::Decomposition& d, const acd::
                      {"epsilon", d.options.epsilon},
                      {"delta", d.options.delta},
                      {"feature_grouping", d.options.featureGrouping},
+                     {"merge", d.options.merge},
                      {"threads", d.options.threads},
                      {"units", "normalised: minimum enclosing sphere radius 1"}};
   const int edges = d.stats.inputEdges;
@@ -161,11 +163,13 @@ json reportJson(const DecomposeArgs& a, const acd::Decomposition& d, const acd::
                  {"fallback_cuts", d.stats.fallbackCuts},
                  {"rejected_planes", d.stats.failedCuts},
                  {"bridges_measured", d.stats.bridges},
-                 {"bridge_refinements", d.stats.refinements}};
+                 {"bridge_refinements", d.stats.refinements},
+                 {"merges", d.stats.merges}};
   j["timing"] = {{"prepare_seconds", d.times.prepare},
                  {"concavity_cpu_seconds", d.times.concavity},
                  {"grouping_cpu_seconds", d.times.grouping},
                  {"cutting_cpu_seconds", d.times.cutting},
+                 {"merging_seconds", d.times.merging},
                  {"hulls_seconds", d.times.hulls},
                  {"total_seconds", d.times.total}};
   return j;
@@ -192,16 +196,18 @@ void printSummary(const DecomposeArgs& a, const acd::Decomposition& d) {
   std::printf("  volume         %.6g of %.6g (relative error %.2e)\n", volume, d.stats.inputVolume,
               std::abs(volume - d.stats.inputVolume) / d.stats.inputVolume);
   std::printf("  hulls / model  %.4f\n", hullVolume / d.stats.inputVolume);
-  std::printf("  cuts           %d (%d by the bisector fallback, %d planes rejected)\n", d.stats.cuts,
-              d.stats.fallbackCuts, d.stats.failedCuts);
-  std::printf("  time           %.3f s (prepare %.3f, hulls %.3f; CPU: concavity %.3f, grouping %.3f, cutting %.3f)\n",
-              d.times.total, d.times.prepare, d.times.hulls, d.times.concavity, d.times.grouping, d.times.cutting);
+  std::printf("  cuts           %d (%d not by the first candidate plane, %d planes rejected), %d merged back\n",
+              d.stats.cuts, d.stats.fallbackCuts, d.stats.failedCuts, d.stats.merges);
+  std::printf("  time           %.3f s (prepare %.3f, merge %.3f, hulls %.3f; CPU: concavity %.3f, grouping %.3f, cutting %.3f)\n",
+              d.times.total, d.times.prepare, d.times.merging, d.times.hulls, d.times.concavity, d.times.grouping,
+              d.times.cutting);
   std::printf("  output         %s\n", a.out.c_str());
   for (const auto& line : d.repairs) std::printf("  repaired       %s\n", line.c_str());
 }
 
 int runDecompose(DecomposeArgs& a) {
   a.options.featureGrouping = !a.noGrouping;
+  a.options.merge = !a.noMerge;
   const acd::Status valid = acd::validate(a.options);
   if (!valid.ok()) return fail("invalid parameter", valid);
   acd::ReadResult r = load(a.model);
@@ -303,6 +309,8 @@ int main(int argc, char** argv) {
   dec->add_option("--delta", da.options.delta, "Douglas-Peucker knot tolerance (default tau/20)");
   dec->add_flag("--no-grouping", da.noGrouping,
                 "Resolve the most concave notch with a plane bisecting its dihedral angle (no feature grouping)");
+  dec->add_flag("--no-merge", da.noMerge,
+                "Keep every piece the recursion made (by default neighbours are glued back while their union stays within tau)");
   dec->add_option("--threads", da.options.threads, "Worker threads, 0 = all cores; output is identical for any value")
       ->capture_default_str();
   dec->add_option("-o,--out", da.out, "Output folder: component_NNN.off, hulls.obj (one object per hull), report.json")

@@ -9,6 +9,7 @@
 #include <acd/features.hpp>
 #include <acd/hull.hpp>
 #include <acd/knot_graph.hpp>
+#include <acd/merge.hpp>
 
 #include <Eigen/Eigenvalues>
 #include <tbb/global_control.h>
@@ -141,17 +142,18 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
   if (o.featureGrouping && stalls == 0) {
     t = Clock::now();
     // The paper's global cut: the minimum-weight cycle of the knot graph G_K through the root
-    // pocket cut (Section 4.2.4). Four greedily grown cuts compete with it (they also reach
-    // pockets without knots): legs restricted to matched knots (Observation 4.2) or free to take
-    // the cheapest knot, and a notch on a boundary taken as an end of the root cut or not. The
-    // lookahead below keeps whichever plane serves better.
+    // pocket cut (Section 4.2.4). Two greedily grown cuts compete with it (they also reach
+    // pockets without knots, where G_K has no edges): legs free to take the cheapest knot, with a
+    // notch on a boundary taken as an end of the root cut or not. (Greedy legs restricted to
+    // matched knots, variants 0 and 1, added time and no quality over G_K's matched cuts.)
+    // The lookahead below keeps whichever plane serves better.
     {
       const KnotGraph kg = buildKnotGraph(piece.mesh, graph, map, o.delta);
       const GlobalCut cycle = knotGraphCycle(piece.mesh, map, kg);
       if (cycle.vertices.size() >= 3)
         candidates.push_back(Plane::through(notch, fitCutPlane(piece.mesh, cycle, bridgeNormal, 0.5 * o.tau).normal));
     }
-    for (int variant = 0; variant < 4; ++variant) {
+    for (int variant = 2; variant < 4; ++variant) {
       const bool matchKnots = variant < 2;
       FeatureOptions fo;
       fo.delta = o.delta;
@@ -162,7 +164,7 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
       const Plane plane = fitCutPlane(piece.mesh, cut, bridgeNormal, 0.5 * o.tau);
       // A plane (nearly) parallel to the bridge only skims the pocket: the cup-shaped case of
       // Figure 13. Split the cup through its deepest point instead, across its longest extent.
-      if (variant == 0 && (cut.cupShaped || std::abs(plane.normal.normalized().dot(bridgeNormal)) > 0.9))
+      if (variant == 2 && (cut.cupShaped || std::abs(plane.normal.normalized().dot(bridgeNormal)) > 0.9))
         candidates.push_back(splitCupPlane(piece.mesh, map, map.notch));
       // The plane must resolve the notch it was grown from: it passes through it. (A plane a hair
       // away from the notch would only shave off a sliver and leave the notch as it was.)
@@ -350,6 +352,53 @@ Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options) {
     pending = std::move(next);
     if (o.progress) o.progress(static_cast<int>(finals.size()), static_cast<int>(pending.size()));
   }
+
+  // Merge pass: the greedy recursion sometimes cuts where a coarser split would have done. Glue
+  // neighbours back along their shared cut faces while the union stays within tau, largest contact
+  // first. Sequential and in a fixed order, so the result does not depend on the thread count.
+  t = Clock::now();
+  if (o.merge) {
+    ConcavityOptions co;
+    co.epsilon = o.epsilon;
+    std::vector<char> alive(finals.size(), 1);
+    for (bool merged = true; merged;) {
+      merged = false;
+      std::vector<TriMesh> meshes;
+      std::vector<int> id;
+      for (std::size_t i = 0; i < finals.size(); ++i)
+        if (alive[i] && !finalInfo[i].unresolved) meshes.push_back(finals[i].mesh), id.push_back(static_cast<int>(i));
+      // Every candidate union is measured in parallel; then, in order, a union is taken if neither
+      // side has changed in this round. Pairs that touch a changed piece are looked at again next round.
+      const std::vector<SharedFaces> pairs = sharedFacePairs(meshes);
+      std::vector<TriMesh> glued(pairs.size());
+      std::vector<double> concavity(pairs.size(), std::numeric_limits<double>::infinity());
+      tbb::parallel_for(std::size_t(0), pairs.size(), [&](std::size_t k) {
+        const int i = id[pairs[k].a], j = id[pairs[k].b];
+        if (!glueAlongSharedFaces(finals[i].mesh, finals[j].mesh, glued[k])) return;
+        SurfaceGraph graph(glued[k]);
+        concavity[k] = measureConcavity(glued[k], graph, co).concavity;
+      });
+      std::vector<char> changed(finals.size(), 0);
+      for (std::size_t k = 0; k < pairs.size(); ++k) {
+        const int i = id[pairs[k].a], j = id[pairs[k].b];
+        if (concavity[k] > o.tau || changed[i] || changed[j]) continue;
+        finals[i].mesh = std::move(glued[k]);
+        finalInfo[i].concavity = concavity[k];
+        finalInfo[i].depth = std::min(finalInfo[i].depth, finalInfo[j].depth);
+        alive[j] = 0;
+        changed[i] = changed[j] = 1;
+        ++result.stats.merges;
+        merged = true;
+      }
+    }
+    std::vector<Piece> keptPieces;
+    std::vector<Component> keptInfo;
+    for (std::size_t i = 0; i < finals.size(); ++i)
+      if (alive[i]) keptPieces.push_back(std::move(finals[i])), keptInfo.push_back(finalInfo[i]);
+    finals = std::move(keptPieces);
+    finalInfo = std::move(keptInfo);
+  }
+  result.times.merging = secondsSince(t);
 
   t = Clock::now();
   result.components.resize(finals.size());

@@ -16,6 +16,7 @@ struct DecomposeOptions {
   double epsilon = -1.0;         // bridge clustering tolerance; < 0 means tau / 2
   double delta = -1.0;           // Douglas-Peucker knot tolerance; < 0 means tau / 20
   bool featureGrouping = true;   // false: bisect the notch's dihedral angle (Section 3.2)
+  bool merge = true;             // glue neighbours back while their union stays within tau
   int threads = 0;               // 0: all cores. The output never depends on it.
   int maxComponents = 10000;     // safety net against runaway recursion
   int maxDepth = 64;
@@ -40,7 +41,7 @@ struct Component {
 };
 
 struct PhaseTimes {
-  double prepare = 0.0, concavity = 0.0, grouping = 0.0, cutting = 0.0, hulls = 0.0, total = 0.0;  // seconds
+  double prepare = 0.0, concavity = 0.0, grouping = 0.0, cutting = 0.0, merging = 0.0, hulls = 0.0, total = 0.0;  // seconds
   // concavity/grouping/cutting are summed over worker threads (CPU seconds); prepare, hulls, total are wall.
 };
 
@@ -50,6 +51,7 @@ struct DecomposeStats {
   int failedCuts = 0;         // planes rejected (could not cut cleanly or did not split)
   int bridges = 0;            // bridges measured over all rounds
   int refinements = 0;        // bridge patches split to keep Observation 4.1
+  int merges = 0;             // neighbours glued back by the merge pass
   int inputEdges = 0;
   int inputNotches = 0;       // concave edges of the input
   double inputVolume = 0.0;   // normalised units

@@ -1,0 +1,25 @@
+// Gluing components back together along the cut faces they share: the merge pass that
+// undoes cuts the greedy recursion did not need.
+#pragma once
+
+#include <acd/mesh.hpp>
+
+#include <vector>
+
+namespace acd {
+
+/// Glues two closed, outward meshes along the triangles they share (same corner positions,
+/// opposite orientations), which both drop. Corners at the same position become one vertex.
+/// Returns false, leaving `out` unspecified, when they share no triangle or the result is
+/// not a closed, consistently oriented, edge-connected mesh.
+bool glueAlongSharedFaces(const TriMesh& a, const TriMesh& b, TriMesh& out);
+
+/// Pairs (i, j), i < j, of meshes that share at least one triangle, with the shared area,
+/// sorted by decreasing shared area (ties by index).
+struct SharedFaces {
+  int a = -1, b = -1;
+  double area = 0.0;
+};
+std::vector<SharedFaces> sharedFacePairs(const std::vector<TriMesh>& meshes);
+
+}  // namespace acd
