@@ -192,6 +192,20 @@ std::vector<Knot> pocketKnots(const TriMesh& mesh, const ConcavityMap& map, int 
   return knots;
 }
 
+std::vector<double> slotCurvatures(const TriMesh& mesh, const SurfaceGraph& graph) {
+  std::vector<double> curvature(graph.end(graph.vertexCount() - 1), 0.0);
+  for (int a = 0; a < graph.vertexCount(); ++a)
+    for (int slot = graph.begin(a); slot < graph.end(a); ++slot) {
+      const int b = graph.neighbour(slot);
+      const int fl = graph.faceLeftOf(a, b), fr = graph.faceLeftOf(b, a);
+      if (fl < 0 || fr < 0) continue;
+      const Vec3 nl = faceNormal(mesh, fl).normalized(), nr = faceNormal(mesh, fr).normalized();
+      const Vec3 c = nl.cross(nr);
+      if (c.dot(mesh.vertices[b] - mesh.vertices[a]) < 0) curvature[slot] = std::atan2(c.norm(), nl.dot(nr));
+    }
+  return curvature;
+}
+
 double cutEdgeWeight(const TriMesh& mesh, const SurfaceGraph& graph, const Bridge& bridge, int a, int b,
                      double length) {
   const double concavity = 0.5 * (concavityFor(bridge, mesh.vertices[a]) + concavityFor(bridge, mesh.vertices[b]));

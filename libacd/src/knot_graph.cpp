@@ -22,6 +22,7 @@ int loopPosition(const ConcavityMap& map, const Knot& k) {
 KnotGraph buildKnotGraph(const TriMesh& mesh, const SurfaceGraph& graph, const ConcavityMap& map, double delta) {
   KnotGraph kg;
   const PathFinder finder(graph);
+  const std::vector<double> curvature = slotCurvatures(mesh, graph);
   const int bridges = static_cast<int>(map.bridges.size());
   std::vector<std::vector<char>> inPocket(bridges, std::vector<char>(mesh.vertices.size(), 0));
   for (std::size_t f = 0; f < mesh.faces.size(); ++f)
@@ -40,14 +41,20 @@ KnotGraph buildKnotGraph(const TriMesh& mesh, const SurfaceGraph& graph, const C
     if (byBoundary.size() < 2) continue;
     // One flood per knot inside the pocket, with the Eq. 4 edge weight.
     const Bridge& bridge = map.bridges[pocket];
+    std::vector<double> concavity(mesh.vertices.size(), 0.0);
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+      if (inPocket[pocket][v]) concavity[v] = concavityFor(bridge, mesh.vertices[v]);
+    const EdgeWeight weight = [&](int a, int b, int slot) {
+      return cutEdgeWeight(concavity[a], concavity[b], curvature[slot], graph.length(slot));
+    };
     std::vector<std::vector<double>> dist(knots.size());
     std::vector<std::vector<int>> parent(knots.size());
+    std::vector<char>& mask = inPocket[pocket];
     for (int k = 0; k < static_cast<int>(knots.size()); ++k) {
-      std::vector<char> mask = inPocket[pocket];
+      const char saved = mask[knots[k].vertex];
       mask[knots[k].vertex] = 1;
-      finder.flood({knots[k].vertex},
-                   [&](int a, int b, int slot) { return cutEdgeWeight(mesh, graph, bridge, a, b, graph.length(slot)); },
-                   &mask, dist[k], parent[k]);
+      finder.flood({knots[k].vertex}, weight, &mask, dist[k], parent[k]);
+      mask[knots[k].vertex] = saved;
     }
     for (auto i = byBoundary.begin(); i != byBoundary.end(); ++i)
       for (auto j = std::next(i); j != byBoundary.end(); ++j) {

@@ -51,6 +51,15 @@ std::vector<Knot> pocketKnots(const TriMesh& mesh, const ConcavityMap& map, int 
 double cutEdgeWeight(const TriMesh& mesh, const SurfaceGraph& graph, const Bridge& bridge, int a, int b,
                      double length);
 
+/// Curvature term of cutEdgeWeight for every adjacency slot of `graph` (concave dihedral angle,
+/// 0 for convex edges), computed once so that repeated floods do not recompute face normals.
+std::vector<double> slotCurvatures(const TriMesh& mesh, const SurfaceGraph& graph);
+
+/// cutEdgeWeight with the curvature already known.
+inline double cutEdgeWeight(double concavityA, double concavityB, double curvature, double length) {
+  return length / ((0.5 * (concavityA + concavityB) + 0.01) * (curvature + 0.1));
+}
+
 /// The global cut through the component's notch.
 GlobalCut findGlobalCut(const TriMesh& mesh, const SurfaceGraph& graph, const ConcavityMap& map,
                         const FeatureOptions& options);
