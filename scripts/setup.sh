@@ -13,7 +13,7 @@ CORE_PKGS=(
     build-essential cmake ccache
     libcgal-dev libeigen3-dev libgmp-dev libmpfr-dev libboost-dev libtbb-dev
     libcli11-dev nlohmann-json3-dev libgtest-dev googletest
-    libcgal-demo gnuplot-nox time jq python3
+    libcgal-demo time jq python3
 )
 # Optional: off-screen pictures (scripts/render.sh). Failure here is not fatal.
 PICTURE_PKGS=(f3d xvfb xauth)
