@@ -296,7 +296,7 @@ ConcavityMap measureConcavity(const TriMesh& mesh, const SurfaceGraph& graph, co
     for (int f = 0; f < nf; ++f) {
       const Bridge& b = out.bridges[out.facePocket[f]];
       for (int v : mesh.faces[f]) {
-        const double c = std::max(0.0, b.offset - b.normal.dot(mesh.vertices[v]));
+        const double c = b.concavityOf(mesh.vertices[v]);
         if (c > bestEstimate[v]) bestEstimate[v] = c, bestBridge[v] = out.facePocket[f];
       }
     }

@@ -17,8 +17,6 @@ namespace acd {
 
 namespace {
 
-double concavityFor(const Bridge& b, const Vec3& p) { return std::max(0.0, b.offset - b.normal.dot(p)); }
-
 std::vector<char> pocketVertices(const TriMesh& mesh, const ConcavityMap& map, int bridge) {
   std::vector<char> in(mesh.vertices.size(), 0);
   for (std::size_t f = 0; f < mesh.faces.size(); ++f)
@@ -186,40 +184,37 @@ std::vector<Knot> pocketKnots(const TriMesh& mesh, const ConcavityMap& map, int 
     const double scale = along.back() > 0 ? hullLength / along.back() : 0.0;
     std::vector<Vec2> profile(pe.path.size());
     for (std::size_t i = 0; i < pe.path.size(); ++i)
-      profile[i] = Vec2(along[i] * scale, concavityFor(b, mesh.vertices[pe.path[i]]));
+      profile[i] = Vec2(along[i] * scale, b.concavityOf(mesh.vertices[pe.path[i]]));
     for (int i : findKnots(profile, delta)) knots.push_back({pe.path[i], bridge, p, profile[i].y(), i});
   }
   return knots;
 }
 
+namespace {
+/// Concave dihedral angle of edge a-b (0 for convex, flat or boundary edges): the curvature term of Eq. 4.
+double concaveDihedral(const TriMesh& mesh, const SurfaceGraph& graph, int a, int b) {
+  const int fl = graph.faceLeftOf(a, b), fr = graph.faceLeftOf(b, a);
+  if (fl < 0 || fr < 0) return 0.0;
+  const Vec3 nl = faceNormal(mesh, fl).normalized(), nr = faceNormal(mesh, fr).normalized();
+  const Vec3 c = nl.cross(nr);
+  return c.dot(mesh.vertices[b] - mesh.vertices[a]) < 0 ? std::atan2(c.norm(), nl.dot(nr)) : 0.0;
+}
+}  // namespace
+
 std::vector<double> slotCurvatures(const TriMesh& mesh, const SurfaceGraph& graph) {
   std::vector<double> curvature(graph.end(graph.vertexCount() - 1), 0.0);
   for (int a = 0; a < graph.vertexCount(); ++a)
-    for (int slot = graph.begin(a); slot < graph.end(a); ++slot) {
-      const int b = graph.neighbour(slot);
-      const int fl = graph.faceLeftOf(a, b), fr = graph.faceLeftOf(b, a);
-      if (fl < 0 || fr < 0) continue;
-      const Vec3 nl = faceNormal(mesh, fl).normalized(), nr = faceNormal(mesh, fr).normalized();
-      const Vec3 c = nl.cross(nr);
-      if (c.dot(mesh.vertices[b] - mesh.vertices[a]) < 0) curvature[slot] = std::atan2(c.norm(), nl.dot(nr));
-    }
+    for (int slot = graph.begin(a); slot < graph.end(a); ++slot)
+      curvature[slot] = concaveDihedral(mesh, graph, a, graph.neighbour(slot));
   return curvature;
 }
 
 double cutEdgeWeight(const TriMesh& mesh, const SurfaceGraph& graph, const Bridge& bridge, int a, int b,
                      double length) {
-  const double concavity = 0.5 * (concavityFor(bridge, mesh.vertices[a]) + concavityFor(bridge, mesh.vertices[b]));
-  double curvature = 0.0;
-  const int fl = graph.faceLeftOf(a, b), fr = graph.faceLeftOf(b, a);
-  if (fl >= 0 && fr >= 0) {
-    const Vec3 nl = faceNormal(mesh, fl).normalized(), nr = faceNormal(mesh, fr).normalized();
-    const Vec3 c = nl.cross(nr);
-    const double angle = std::atan2(c.norm(), nl.dot(nr));
-    if (c.dot(mesh.vertices[b] - mesh.vertices[a]) < 0) curvature = angle;  // concave edges only
-  }
-  // omega = length / concavity, gamma = curvature; the offsets keep flat, convex or
-  // zero-concavity edges usable but expensive.
-  return length / ((concavity + 0.01) * (curvature + 0.1));
+  // omega = length / concavity, gamma = curvature; the offsets (in the inline overload) keep
+  // flat, convex or zero-concavity edges usable but expensive.
+  return cutEdgeWeight(bridge.concavityOf(mesh.vertices[a]), bridge.concavityOf(mesh.vertices[b]),
+                       concaveDihedral(mesh, graph, a, b), length);
 }
 
 GlobalCut findGlobalCut(const TriMesh& mesh, const SurfaceGraph& graph, const ConcavityMap& map,
@@ -256,7 +251,7 @@ GlobalCut findGlobalCut(const TriMesh& mesh, const SurfaceGraph& graph, const Co
   auto append = [&](std::vector<int>& chain, std::vector<double>& weight, const std::vector<int>& path, int pocket) {
     for (std::size_t i = chain.empty() ? 0 : 1; i < path.size(); ++i) {
       chain.push_back(path[i]);
-      weight.push_back(concavityFor(map.bridges[pocket], mesh.vertices[path[i]]));
+      weight.push_back(map.bridges[pocket].concavityOf(mesh.vertices[path[i]]));
     }
   };
   // Two ends grow independently; each keeps its chain from the notch outward.

@@ -10,8 +10,6 @@ namespace acd {
 
 namespace {
 
-double concavityFor(const Bridge& b, const Vec3& p) { return std::max(0.0, b.offset - b.normal.dot(p)); }
-
 int loopPosition(const ConcavityMap& map, const Knot& k) {
   const auto& pe = map.projections[k.projection];
   return pe.leftBridge == k.pocket ? k.along : static_cast<int>(pe.path.size()) - 1 - k.along;
@@ -43,7 +41,7 @@ KnotGraph buildKnotGraph(const TriMesh& mesh, const SurfaceGraph& graph, const C
     const Bridge& bridge = map.bridges[pocket];
     std::vector<double> concavity(mesh.vertices.size(), 0.0);
     for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
-      if (inPocket[pocket][v]) concavity[v] = concavityFor(bridge, mesh.vertices[v]);
+      if (inPocket[pocket][v]) concavity[v] = bridge.concavityOf(mesh.vertices[v]);
     const EdgeWeight weight = [&](int a, int b, int slot) {
       return cutEdgeWeight(concavity[a], concavity[b], curvature[slot], graph.length(slot));
     };
@@ -152,7 +150,7 @@ GlobalCut knotGraphCycle(const TriMesh& mesh, const ConcavityMap& map, const Kno
     if (!forward) std::reverse(path.begin(), path.end());
     for (std::size_t i = cut.vertices.empty() ? 0 : 1; i < path.size(); ++i) {
       cut.vertices.push_back(path[i]);
-      cut.weight.push_back(concavityFor(map.bridges[pocket], mesh.vertices[path[i]]));
+      cut.weight.push_back(map.bridges[pocket].concavityOf(mesh.vertices[path[i]]));
     }
     if (e.pocket >= 0) cut.pockets.push_back(e.pocket);
   };

@@ -12,6 +12,7 @@
 #include <acd/mesh.hpp>
 #include <acd/surface_graph.hpp>
 
+#include <algorithm>
 #include <vector>
 
 namespace acd {
@@ -27,6 +28,9 @@ struct Bridge {
   double offset = 0.0;
   std::vector<int> hullFaces;
   int seedFace = -1;             // hull facet whose plane is the supporting plane
+
+  /// Concavity of a point in this bridge's pocket: its distance below the supporting plane.
+  double concavityOf(const Vec3& p) const { return std::max(0.0, offset - normal.dot(p)); }
 };
 
 /// Projection of one hull edge between two different bridges onto the surface.
