@@ -49,7 +49,10 @@ int exitFor(const acd::Status& s) {
 }
 
 int fail(const std::string& what, const acd::Status& s) {
-  std::fprintf(stderr, "acd: %s: %s\n", what.c_str(), s.message.c_str());
+  if (s.message.rfind(what, 0) == 0)  // the reader's messages already start with the path
+    std::fprintf(stderr, "acd: %s\n", s.message.c_str());
+  else
+    std::fprintf(stderr, "acd: %s: %s\n", what.c_str(), s.message.c_str());
   return exitFor(s);
 }
 
