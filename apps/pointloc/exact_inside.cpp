@@ -1,0 +1,157 @@
+// Exact point-in-model test for pointloc: signed crossings of a +z ray (winding number) with
+// exact predicates and a symbolic perturbation of the query point, over an xy grid of the
+// triangles. A small re-implementation of the library's private locator (evaluate.cpp).
+#include "exact_inside.hpp"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace pointloc {
+namespace {
+
+using acd::Box3;
+using acd::Face;
+using acd::TriMesh;
+using acd::Vec3;
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using P2 = K::Point_2;
+using P3 = K::Point_3;
+
+// ---------------------------------------------------------------- exact predicates
+
+inline int sign(double v) { return (v > 0) - (v < 0); }
+
+/// Exact sign of orient2d(a, b, q) (positive when q is left of a->b).
+inline int orient2d(double ax, double ay, double bx, double by, double qx, double qy) {
+  const double l = (bx - ax) * (qy - ay), r = (by - ay) * (qx - ax);
+  const double det = l - r;
+  const double bound = 3.3306690738754716e-16 * (std::abs(l) + std::abs(r));
+  if (det > bound) return 1;
+  if (-det > bound) return -1;
+  return static_cast<int>(CGAL::orientation(P2(ax, ay), P2(bx, by), P2(qx, qy)));
+}
+
+/// orient2d(a, b, q') with q' = q + (eps, eps^2), eps -> 0: zero only when a and b coincide in xy.
+inline int orient2dPerturbed(double ax, double ay, double bx, double by, double qx, double qy) {
+  const int s = orient2d(ax, ay, bx, by, qx, qy);
+  if (s != 0) return s;
+  if (by != ay) return by < ay ? 1 : -1;  // d/dqx of the determinant is -(by - ay)
+  return bx > ax ? 1 : (bx < ax ? -1 : 0);  // d/dqy is (bx - ax)
+}
+
+
+}  // namespace
+
+
+class ExactInside::Impl {
+ public:
+  explicit Impl(const TriMesh& m) {
+    const Box3 box = boundingBox(m);
+    lo_ = box.lo;
+    hi_ = box.hi;
+    tris_.reserve(m.faces.size());
+    for (const Face& f : m.faces) {
+      const Vec3 &a = m.vertices[f[0]], &b = m.vertices[f[1]], &c = m.vertices[f[2]];
+      const int s = orient2d(a.x(), a.y(), b.x(), b.y(), c.x(), c.y());
+      if (s == 0) continue;  // vertical in projection: no generic vertical ray meets it
+      Tri t{a, b, c, a.cwiseMin(b).cwiseMin(c), a.cwiseMax(b).cwiseMax(c), s};
+      tris_.push_back(t);
+    }
+    // Grid over xy with about two cells per triangle.
+    const double w = std::max(hi_.x() - lo_.x(), 1e-300), h = std::max(hi_.y() - lo_.y(), 1e-300);
+    const double cells = std::clamp(2.0 * static_cast<double>(tris_.size()), 1.0, 4.0e6);
+    nx_ = std::clamp(static_cast<int>(std::sqrt(cells * w / h)), 1, 4096);
+    ny_ = std::clamp(static_cast<int>(cells / nx_), 1, 4096);
+    sx_ = nx_ / w;
+    sy_ = ny_ / h;
+    start_.assign(static_cast<std::size_t>(nx_) * ny_ + 1, 0);
+    for (int pass = 0; pass < 2; ++pass) {
+      std::vector<int> fill;
+      if (pass == 1) {
+        std::partial_sum(start_.begin(), start_.end(), start_.begin());
+        items_.resize(start_.back());
+        fill.assign(start_.begin(), start_.end() - 1);
+      }
+      for (int t = 0; t < static_cast<int>(tris_.size()); ++t) {
+        const int x0 = cellX(tris_[t].lo.x()), x1 = cellX(tris_[t].hi.x());
+        const int y0 = cellY(tris_[t].lo.y()), y1 = cellY(tris_[t].hi.y());
+        for (int y = y0; y <= y1; ++y)
+          for (int x = x0; x <= x1; ++x) {
+            const std::size_t c = static_cast<std::size_t>(y) * nx_ + x;
+            if (pass == 0)
+              ++start_[c + 1];
+            else
+              items_[fill[c]++] = Item{down(tris_[t].lo.x()), up(tris_[t].hi.x()), down(tris_[t].lo.y()),
+                                       up(tris_[t].hi.y()), up(tris_[t].hi.z()), t};
+          }
+      }
+    }
+  }
+
+  bool inside(const Vec3& q) const {
+    if (!(q.x() >= lo_.x() && q.x() <= hi_.x() && q.y() >= lo_.y() && q.y() <= hi_.y() && q.z() <= hi_.z()))
+      return false;
+    const std::size_t c = static_cast<std::size_t>(cellY(q.y())) * nx_ + cellX(q.x());
+    int winding = 0;
+    for (int k = start_[c]; k < start_[c + 1]; ++k) {
+      // Conservative prefilter on the cell's contiguous records (boxes rounded outwards to float).
+      const Item& it = items_[k];
+      if (q.z() > it.maxz || q.x() < it.minx || q.x() >= it.maxx || q.y() < it.miny || q.y() >= it.maxy) continue;
+      const Tri& t = tris_[it.tri];
+      if (q.z() > t.hi.z()) continue;  // entirely below the point
+      // Bounding box of the triangle against q' = q + (eps, eps^2).
+      if (q.x() < t.lo.x() || q.x() >= t.hi.x() || q.y() < t.lo.y() || q.y() >= t.hi.y()) continue;
+      if (orient2dPerturbed(t.a.x(), t.a.y(), t.b.x(), t.b.y(), q.x(), q.y()) != t.s) continue;
+      if (orient2dPerturbed(t.b.x(), t.b.y(), t.c.x(), t.c.y(), q.x(), q.y()) != t.s) continue;
+      if (orient2dPerturbed(t.c.x(), t.c.y(), t.a.x(), t.a.y(), q.x(), q.y()) != t.s) continue;
+      bool above = q.z() < t.lo.z();
+      if (!above) {
+        // Below the triangle's plane iff the orientation is opposite to the projected one.
+        const auto o = CGAL::orientation(P3(t.a.x(), t.a.y(), t.a.z()), P3(t.b.x(), t.b.y(), t.b.z()),
+                                         P3(t.c.x(), t.c.y(), t.c.z()), P3(q.x(), q.y(), q.z()));
+        above = static_cast<int>(o) == -t.s;
+      }
+      if (above) winding += t.s;
+    }
+    return winding != 0;
+  }
+
+ private:
+  struct Tri {
+    Vec3 a, b, c, lo, hi;
+    int s;  // orientation of the xy-projection
+  };
+  struct Item {
+    float minx, maxx, miny, maxy, maxz;
+    int tri;
+  };
+  static float down(double x) {
+    float f = static_cast<float>(x);
+    return f > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+  }
+  static float up(double x) {
+    float f = static_cast<float>(x);
+    return f < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+  }
+  // Monotone in x, so a point inside a triangle's box always lands in one of the triangle's cells.
+  int cellX(double x) const { return std::clamp(static_cast<int>(std::floor((x - lo_.x()) * sx_)), 0, nx_ - 1); }
+  int cellY(double y) const { return std::clamp(static_cast<int>(std::floor((y - lo_.y()) * sy_)), 0, ny_ - 1); }
+
+  Vec3 lo_, hi_;
+  std::vector<Tri> tris_;
+  int nx_ = 1, ny_ = 1;
+  double sx_ = 1, sy_ = 1;
+  std::vector<int> start_;
+  std::vector<Item> items_;
+};
+
+
+ExactInside::ExactInside(const TriMesh& mesh) : impl_(std::make_unique<Impl>(mesh)) {}
+ExactInside::~ExactInside() = default;
+bool ExactInside::inside(const Vec3& q) const { return impl_->inside(q); }
+
+}  // namespace pointloc
