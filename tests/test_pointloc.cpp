@@ -126,6 +126,19 @@ TEST_F(PointLoc, SameSeedSameCountsForAnyThreads) {
   EXPECT_NE(other["points_inside"], one["points_inside"]);  // the seed matters
 }
 
+TEST_F(PointLoc, GridGivesTheSameCountsAsTestingEveryHull) {
+  const std::string model = writeModel("u.off", shapes::uShape());
+  const std::string args = quote(model) + " --samples 2e5 --exact-samples 50000 --tau 0.02";
+  const json grid = report(args + " --grid-cells 64");
+  const json plain = report(args + " --no-index");
+  ASSERT_FALSE(grid.empty());
+  ASSERT_FALSE(plain.empty());
+  EXPECT_GE(grid["components"].get<int>(), 3);
+  EXPECT_EQ(grid["points_inside"], plain["points_inside"]);
+  EXPECT_EQ(grid["exact"]["false_inside"], plain["exact"]["false_inside"]);
+  EXPECT_EQ(grid["exact"]["false_outside"], plain["exact"]["false_outside"]);
+}
+
 TEST_F(PointLoc, JsonHasTheReportedFields) {
   const std::string model = writeModel("sphere.off", shapes::icosphere(Vec3::Zero(), 1.0, 1));
   const json j = report(quote(model) + " --samples 100000");

@@ -108,7 +108,92 @@ struct HullSet {
     first.push_back(static_cast<int>(planes.size()));
   }
 
-  /// Index of the first hull that contains p, or -1.
+  // ---- uniform grid over the box: per cell, either a hull that holds the whole cell, or the
+  // hulls that may hold part of it (bounding boxes overlap and no half-space excludes the cell).
+  Vec3 gridLo = Vec3::Zero(), gridScale = Vec3::Ones();
+  int gx = 1, gy = 1, gz = 1;
+  std::vector<int> cellFull;              // hull holding the whole cell, or -1
+  std::vector<std::uint32_t> cellStart;   // CSR offsets into cellHulls
+  std::vector<int> cellHulls;
+
+  void buildGrid(const acd::Box3& box, std::size_t targetCells, tbb::task_arena& arena) {
+    const Vec3 extent = box.size().cwiseMax(Vec3::Constant(1e-300));
+    const double unit = std::cbrt(extent.prod() / static_cast<double>(targetCells));
+    gx = std::clamp(static_cast<int>(std::ceil(extent.x() / unit)), 1, 1024);
+    gy = std::clamp(static_cast<int>(std::ceil(extent.y() / unit)), 1, 1024);
+    gz = std::clamp(static_cast<int>(std::ceil(extent.z() / unit)), 1, 1024);
+    gridLo = box.lo;
+    gridScale = Vec3(gx / extent.x(), gy / extent.y(), gz / extent.z());
+    const Vec3 cell(extent.x() / gx, extent.y() / gy, extent.z() / gz);
+    const double margin = 1e-9 * extent.norm();  // covers rounding of the cell index
+    const std::size_t cells = static_cast<std::size_t>(gx) * gy * gz;
+    cellFull.assign(cells, -1);
+    std::vector<std::vector<int>> lists(cells);
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cells), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t c = r.begin(); c != r.end(); ++c) {
+          const int ix = static_cast<int>(c % gx), iy = static_cast<int>((c / gx) % gy),
+                    iz = static_cast<int>(c / (static_cast<std::size_t>(gx) * gy));
+          const Vec3 clo = box.lo + Vec3(ix * cell.x(), iy * cell.y(), iz * cell.z()) - Vec3::Constant(margin);
+          const Vec3 chi = box.lo + Vec3((ix + 1) * cell.x(), (iy + 1) * cell.y(), (iz + 1) * cell.z()) +
+                           Vec3::Constant(margin);
+          for (int h = 0; h < size(); ++h) {
+            if ((chi.array() < lo[h].array()).any() || (clo.array() > hi[h].array()).any()) continue;
+            bool excluded = false, full = true;
+            for (int k = first[h]; k < first[h + 1] && !excluded; ++k) {
+              const Plane& q = planes[k];
+              const double mn = (q.nx > 0 ? q.nx * clo.x() : q.nx * chi.x()) + (q.ny > 0 ? q.ny * clo.y() : q.ny * chi.y()) +
+                                (q.nz > 0 ? q.nz * clo.z() : q.nz * chi.z());
+              const double mx = (q.nx > 0 ? q.nx * chi.x() : q.nx * clo.x()) + (q.ny > 0 ? q.ny * chi.y() : q.ny * clo.y()) +
+                                (q.nz > 0 ? q.nz * chi.z() : q.nz * clo.z());
+              excluded = mn > q.d + 2 * slack;
+              full = full && mx <= q.d;
+            }
+            if (excluded) continue;
+            if (full) {
+              cellFull[c] = h;
+              lists[c].clear();
+              break;
+            }
+            lists[c].push_back(h);
+          }
+        }
+      });
+    });
+    cellStart.assign(cells + 1, 0);
+    for (std::size_t c = 0; c < cells; ++c) cellStart[c + 1] = cellStart[c] + static_cast<std::uint32_t>(lists[c].size());
+    cellHulls.resize(cellStart[cells]);
+    for (std::size_t c = 0; c < cells; ++c) std::copy(lists[c].begin(), lists[c].end(), cellHulls.begin() + cellStart[c]);
+  }
+
+  bool inHull(int h, const Vec3& p) const {
+    for (int k = first[h], e = first[h + 1]; k < e; ++k) {
+      const Plane& q = planes[k];
+      if (q.nx * p.x() + q.ny * p.y() + q.nz * p.z() > q.d + slack) return false;
+    }
+    return true;
+  }
+
+  /// A hull that contains p, or -1, through the grid (points outside the grid's box: -1).
+  int locateIndexed(const Vec3& p) const {
+    const double fx = (p.x() - gridLo.x()) * gridScale.x(), fy = (p.y() - gridLo.y()) * gridScale.y(),
+                 fz = (p.z() - gridLo.z()) * gridScale.z();
+    if (!(fx >= 0 && fy >= 0 && fz >= 0 && fx <= gx && fy <= gy && fz <= gz)) return locate(p);
+    const int ix = std::min(static_cast<int>(fx), gx - 1), iy = std::min(static_cast<int>(fy), gy - 1),
+              iz = std::min(static_cast<int>(fz), gz - 1);
+    const std::size_t c = (static_cast<std::size_t>(iz) * gy + iy) * gx + ix;
+    if (cellFull[c] >= 0) return cellFull[c];
+    for (std::uint32_t k = cellStart[c], e = cellStart[c + 1]; k < e; ++k) {
+      const int h = cellHulls[k];
+      if (p.x() < lo[h].x() || p.x() > hi[h].x() || p.y() < lo[h].y() || p.y() > hi[h].y() || p.z() < lo[h].z() ||
+          p.z() > hi[h].z())
+        continue;
+      if (inHull(h, p)) return h;
+    }
+    return -1;
+  }
+
+  /// Index of the first hull that contains p, or -1 (every hull's box tested).
   int locate(const Vec3& p) const {
     const int n = size();
     for (int h = 0; h < n; ++h) {
@@ -177,6 +262,8 @@ int main(int argc, char** argv) {
   int threads = 0;
   std::uint64_t seed = 1;
   std::string jsonPath;
+  bool noIndex = false;
+  std::size_t gridCells = 1u << 17;
   app.add_option("MODEL", model,
                  "closed mesh (OFF, OBJ, PLY, STL); default data/meshes/elephant.off (relative to the current\n"
                  "directory, else the one in the source tree)");
@@ -188,6 +275,8 @@ int main(int argc, char** argv) {
   app.add_option("--seed", seed, "seed of the point stream")->capture_default_str();
   app.add_option("--exact-samples", exactText, "points (the first M of the stream) checked exactly; default min(N, 2e6)");
   app.add_option("--json", jsonPath, "write the report as JSON to FILE");
+  app.add_flag("--no-index", noIndex, "test every hull's bounding box for every point (no grid; same counts)");
+  app.add_option("--grid-cells", gridCells, "cells of the grid over the box (about)")->capture_default_str();
   app.footer(
       "Exit codes: 0 success; 1 bad command line; 2 unreadable or invalid model; 3 invalid parameter;\n"
       "5 cannot write output; 6 internal error.");
@@ -270,6 +359,10 @@ int main(int argc, char** argv) {
 
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   const int usedThreads = arena.max_concurrency();
+  const auto tGrid = Clock::now();
+  if (!noIndex) hulls.buildGrid(box, std::clamp<std::size_t>(gridCells, 1, 1u << 24), arena);
+  const double gridSeconds = since(tGrid);
+  auto where = [&](const Vec3& p) { return noIndex ? hulls.locate(p) : hulls.locateIndexed(p); };
 
   // ---- fast location over all N points
   const std::uint64_t blocks = (samples + kBlock - 1) / kBlock;
@@ -286,7 +379,7 @@ int main(int argc, char** argv) {
               for (std::uint64_t b = r.begin(); b != r.end(); ++b) {
                 const std::uint64_t i0 = b * kBlock, i1 = std::min(samples, i0 + kBlock);
                 std::uint64_t in = 0;
-                for (std::uint64_t i = i0; i < i1; ++i) in += hulls.locate(points(i)) >= 0 ? 1 : 0;
+                for (std::uint64_t i = i0; i < i1; ++i) in += where(points(i)) >= 0 ? 1 : 0;
                 blockInside[b] = in;
               }
             },
@@ -308,7 +401,23 @@ int main(int argc, char** argv) {
   // Per block: false inside, false outside, exact inside, and false inside per hull.
   std::vector<std::uint64_t> eFalseIn(eblocks, 0), eFalseOut(eblocks, 0), eInside(eblocks, 0);
   std::vector<std::vector<std::uint64_t>> eByHull(eblocks);
+  // Exact test alone, timed, for the comparison of rates.
+  std::vector<std::uint64_t> exactOnly(eblocks, 0);
   const auto tExactRun = Clock::now();
+  arena.execute([&] {
+    tbb::parallel_for(
+        tbb::blocked_range<std::uint64_t>(0, eblocks, 1),
+        [&](const tbb::blocked_range<std::uint64_t>& r) {
+          for (std::uint64_t b = r.begin(); b != r.end(); ++b) {
+            const std::uint64_t i0 = b * kBlock, i1 = std::min(exactSamples, i0 + kBlock);
+            std::uint64_t in = 0;
+            for (std::uint64_t i = i0; i < i1; ++i) in += exact.inside(points(i)) ? 1 : 0;
+            exactOnly[b] = in;
+          }
+        },
+        tbb::simple_partitioner());
+  });
+  const double exactRunSeconds = since(tExactRun);
   arena.execute([&] {
     tbb::parallel_for(
         tbb::blocked_range<std::uint64_t>(0, eblocks, 1),
@@ -319,7 +428,7 @@ int main(int argc, char** argv) {
             std::uint64_t fi = 0, fo = 0, ei = 0;
             for (std::uint64_t i = i0; i < i1; ++i) {
               const Vec3 p = points(i);
-              const int h = hulls.locate(p);
+              const int h = where(p);
               const bool truth = exact.inside(p);
               ei += truth ? 1 : 0;
               if (h >= 0 && !truth) {
@@ -337,7 +446,6 @@ int main(int argc, char** argv) {
         },
         tbb::simple_partitioner());
   });
-  const double exactRunSeconds = since(tExactRun);
   std::uint64_t falseIn = 0, falseOut = 0, exactInside = 0;
   std::vector<std::uint64_t> byHull(nh, 0);
   for (std::uint64_t b = 0; b < eblocks; ++b) {
@@ -365,12 +473,16 @@ int main(int argc, char** argv) {
   std::printf("  threads                %d\n", usedThreads);
   std::printf("  seed                   %llu\n", static_cast<unsigned long long>(seed));
   std::printf("  decomposition time     %.3f s\n", decomposeSeconds);
+  if (!noIndex)
+    std::printf("  hull grid              %dx%dx%d, %.3f s, %.2f hull candidates per cell\n", hulls.gx, hulls.gy, hulls.gz,
+                gridSeconds, static_cast<double>(hulls.cellHulls.size()) /
+                                 std::max<double>(1.0, static_cast<double>(std::count(hulls.cellFull.begin(), hulls.cellFull.end(), -1))));
   std::printf("  points                 %llu\n", static_cast<unsigned long long>(samples));
   std::printf("  location time          %.3f s\n", locateSeconds);
   std::printf("  points per second      %s\n", human(pps).c_str());
   std::printf("  points inside          %llu (%.4f%% of the box)\n", static_cast<unsigned long long>(inside),
               100.0 * static_cast<double>(inside) / static_cast<double>(samples));
-  std::printf("  exact subsample        %llu points, %.3f s (+%.3f s index), %s points/s\n",
+  std::printf("  exact test alone       %llu points, %.3f s (+%.3f s index), %s points/s\n",
               static_cast<unsigned long long>(exactSamples), exactRunSeconds, exactBuildSeconds,
               human(exactPps).c_str());
   std::printf("  false inside           %llu  rate %.3e  95%% CI [%.3e, %.3e]\n",
@@ -401,6 +513,7 @@ int main(int argc, char** argv) {
     j["points_inside"] = inside;
     j["decomposition_seconds"] = decomposeSeconds;
     j["location_seconds"] = locateSeconds;
+    j["index"] = noIndex ? json(nullptr) : json{{"cells", {hulls.gx, hulls.gy, hulls.gz}}, {"seconds", gridSeconds}};
     j["total_seconds"] = totalSeconds;
     j["points_per_second"] = pps;
     j["exact"] = {{"samples", exactSamples},
