@@ -1,6 +1,6 @@
-// Geometry helpers shared by the tests: an exact-enough point-in-solid test (signed
-// crossings of a +z ray, watertight over shared edges), point-to-surface distance
-// through a small BVH, and uniform surface sampling.
+// Helpers shared by the tests: an exact-enough point-in-solid test (signed crossings of a +z
+// ray, watertight over shared edges), point-to-surface distance through a small BVH, uniform
+// surface sampling, temporary folders and running the built commands.
 #pragma once
 
 #include <acd/mesh.hpp>
@@ -10,12 +10,15 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <numeric>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace acdtest {
@@ -236,5 +239,37 @@ class TempDir {
  private:
   std::filesystem::path path_;
 };
+
+/// Exit code and captured output of one run of a built command.
+struct ToolRun {
+  int code = -1;
+  std::string out, err;
+};
+
+inline std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// Single-quoted for the shell.
+inline std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+/// Runs `binary ARGS` with stdin closed and stdout/stderr captured through files in `dir`.
+inline ToolRun runTool(const std::string& binary, const std::string& args, const TempDir& dir) {
+  const std::string out = dir / "stdout.txt", err = dir / "stderr.txt";
+  const std::string cmd = quote(binary) + " " + args + " >" + quote(out) + " 2>" + quote(err) + " </dev/null";
+  const int status = std::system(cmd.c_str());
+  ToolRun r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = slurp(out);
+  r.err = slurp(err);
+  return r;
+}
 
 }  // namespace acdtest

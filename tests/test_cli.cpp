@@ -8,7 +8,6 @@
 
 #include "helpers.hpp"
 
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <cctype>
@@ -21,26 +20,10 @@
 using namespace acd;
 namespace fs = std::filesystem;
 using json = nlohmann::json;
+using acdtest::quote;
+using acdtest::slurp;
 
 namespace {
-
-struct CliRun {
-  int code = -1;
-  std::string out, err;
-};
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
 
 class Cli : public ::testing::Test {
  protected:
@@ -53,16 +36,7 @@ class Cli : public ::testing::Test {
   std::string path(const std::string& name) const { return *dir_ / name; }
 
   /// Runs `acd ARGS` with stdout and stderr captured.
-  CliRun acd(const std::string& args) const {
-    const std::string out = path("stdout.txt"), err = path("stderr.txt");
-    const std::string cmd = quote(ACD_CLI) + " " + args + " >" + quote(out) + " 2>" + quote(err) + " </dev/null";
-    const int status = std::system(cmd.c_str());
-    CliRun r;
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = slurp(out);
-    r.err = slurp(err);
-    return r;
-  }
+  acdtest::ToolRun acd(const std::string& args) const { return acdtest::runTool(ACD_CLI, args, *dir_); }
 
   std::string writeModel(const std::string& name, const TriMesh& mesh) const {
     const std::string p = path(name);
@@ -79,7 +53,7 @@ class Cli : public ::testing::Test {
 
   /// decompose must refuse with `code` and say something containing every word of `words` on stderr.
   void expectRefused(const std::string& args, int code, std::initializer_list<const char*> words) const {
-    const CliRun r = acd("decompose " + args + " -o " + quote(path("out")) + " -q");
+    const acdtest::ToolRun r = acd("decompose " + args + " -o " + quote(path("out")) + " -q");
     EXPECT_EQ(r.code, code) << "stderr: " << r.err;
     EXPECT_FALSE(r.err.empty());
     std::string lower = r.err;
@@ -94,14 +68,14 @@ class Cli : public ::testing::Test {
 }  // namespace
 
 TEST_F(Cli, TopLevelHelp) {
-  const CliRun r = acd("--help");
+  const acdtest::ToolRun r = acd("--help");
   EXPECT_EQ(r.code, 0);
   for (const char* word : {"decompose", "info", "evaluate", "Exit codes"})
     EXPECT_NE(r.out.find(word), std::string::npos) << word;
 }
 
 TEST_F(Cli, DecomposeHelpMentionsEveryOption) {
-  const CliRun r = acd("decompose --help");
+  const acdtest::ToolRun r = acd("decompose --help");
   EXPECT_EQ(r.code, 0);
   for (const char* opt : {"--tau", "-t", "--epsilon", "--delta", "--no-grouping", "--threads", "--out", "-o", "--quiet",
                           "-q", "model", "Exit codes"})
@@ -109,14 +83,14 @@ TEST_F(Cli, DecomposeHelpMentionsEveryOption) {
 }
 
 TEST_F(Cli, EvaluateHelpMentionsEveryOption) {
-  const CliRun r = acd("evaluate --help");
+  const acdtest::ToolRun r = acd("evaluate --help");
   EXPECT_EQ(r.code, 0);
   for (const char* opt : {"--samples", "--surface-samples", "--seed", "--threads", "--json"})
     EXPECT_NE(r.out.find(opt), std::string::npos) << opt << " missing from:\n" << r.out;
 }
 
 TEST_F(Cli, NoSubcommandIsAUsageError) {
-  const CliRun r = acd("");
+  const acdtest::ToolRun r = acd("");
   EXPECT_EQ(r.code, 1);
   EXPECT_FALSE(r.err.empty() && r.out.empty());
 }
@@ -124,7 +98,7 @@ TEST_F(Cli, NoSubcommandIsAUsageError) {
 TEST_F(Cli, DecomposeLShapeWritesComponentsHullsAndReport) {
   const std::string model = writeModel("L.off", shapes::lShape());
   const std::string out = path("out");
-  const CliRun r = acd("decompose " + quote(model) + " -t 0.05 --threads 0 -o " + quote(out));
+  const acdtest::ToolRun r = acd("decompose " + quote(model) + " -t 0.05 --threads 0 -o " + quote(out));
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("components"), std::string::npos);  // the summary table
 
@@ -195,7 +169,7 @@ TEST_F(Cli, DecomposeLShapeWritesComponentsHullsAndReport) {
 
 TEST_F(Cli, QuietPrintsNoSummary) {
   const std::string model = writeModel("L.off", shapes::lShape());
-  const CliRun r = acd("decompose " + quote(model) + " -t 0.05 -q -o " + quote(path("out")));
+  const acdtest::ToolRun r = acd("decompose " + quote(model) + " -t 0.05 -q -o " + quote(path("out")));
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_TRUE(r.out.empty()) << r.out;
   EXPECT_TRUE(fs::exists(path("out") + "/component_000.off"));
@@ -203,7 +177,7 @@ TEST_F(Cli, QuietPrintsNoSummary) {
 
 TEST_F(Cli, NoGroupingIsRecordedInTheReport) {
   const std::string model = writeModel("U.obj", shapes::uShape());
-  const CliRun r = acd("decompose " + quote(model) + " -t 0.05 --no-grouping --threads 1 -q -o " + quote(path("out")));
+  const acdtest::ToolRun r = acd("decompose " + quote(model) + " -t 0.05 --no-grouping --threads 1 -q -o " + quote(path("out")));
   ASSERT_EQ(r.code, 0) << r.err;
   const json report = json::parse(slurp(path("out") + "/report.json"));
   EXPECT_FALSE(report["parameters"].at("feature_grouping").get<bool>());
@@ -283,7 +257,7 @@ TEST_F(Cli, UnknownOption) {
 }
 
 TEST_F(Cli, MissingModelArgument) {
-  const CliRun r = acd("decompose -t 0.1");
+  const acdtest::ToolRun r = acd("decompose -t 0.1");
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.err.find("model"), std::string::npos) << r.err;
 }
@@ -292,7 +266,7 @@ TEST_F(Cli, MissingModelArgument) {
 
 TEST_F(Cli, InfoOnTheL) {
   const std::string model = writeModel("L.off", shapes::lShape());
-  const CliRun r = acd("info " + quote(model));
+  const acdtest::ToolRun r = acd("info " + quote(model));
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(genus\s+0\b)"))) << r.out;
   EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(closed\s+yes\b)"))) << r.out;
@@ -300,19 +274,19 @@ TEST_F(Cli, InfoOnTheL) {
 }
 
 TEST_F(Cli, InfoOnATorusAndAnOpenMesh) {
-  const CliRun t = acd("info " + quote(writeModel("torus.off", shapes::torus(2.0, 0.5, 24, 12))));
+  const acdtest::ToolRun t = acd("info " + quote(writeModel("torus.off", shapes::torus(2.0, 0.5, 24, 12))));
   ASSERT_EQ(t.code, 0) << t.err;
   EXPECT_TRUE(std::regex_search(t.out, std::regex(R"(genus\s+1\b)"))) << t.out;
   TriMesh box = shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1));
   box.faces.pop_back();
-  const CliRun o = acd("info " + quote(writeModel("open.off", box)));
+  const acdtest::ToolRun o = acd("info " + quote(writeModel("open.off", box)));
   ASSERT_EQ(o.code, 0) << o.err;  // diagnosing a broken mesh is not an error
   EXPECT_TRUE(std::regex_search(o.out, std::regex(R"(closed\s+no\b)"))) << o.out;
   EXPECT_TRUE(std::regex_search(o.out, std::regex(R"(boundary edges\s+3\b)"))) << o.out;
 }
 
 TEST_F(Cli, InfoOnAMissingFile) {
-  const CliRun r = acd("info " + quote(path("nowhere.off")));
+  const acdtest::ToolRun r = acd("info " + quote(path("nowhere.off")));
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("nowhere.off"), std::string::npos) << r.err;
 }
@@ -321,7 +295,7 @@ TEST_F(Cli, EvaluateTheLAgainstItsDecomposition) {
   const std::string model = writeModel("L.off", shapes::lShape());
   const std::string out = path("out");
   ASSERT_EQ(acd("decompose " + quote(model) + " -t 0.05 -q -o " + quote(out)).code, 0);
-  const CliRun r = acd("evaluate " + quote(model) + " " + quote(out + "/hulls.obj") +
+  const acdtest::ToolRun r = acd("evaluate " + quote(model) + " " + quote(out + "/hulls.obj") +
                     " --samples 200000 --surface-samples 20000 --threads 0");
   ASSERT_EQ(r.code, 0) << r.err;
   std::smatch m;
@@ -329,7 +303,7 @@ TEST_F(Cli, EvaluateTheLAgainstItsDecomposition) {
   EXPECT_GT(std::stod(m[1].str()), 0.999);  // two boxes that are exactly the L
   EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(\(2 hulls\))"))) << r.out;
 
-  const CliRun j = acd("evaluate " + quote(model) + " " + quote(out + "/hulls.obj") +
+  const acdtest::ToolRun j = acd("evaluate " + quote(model) + " " + quote(out + "/hulls.obj") +
                     " --samples 200000 --surface-samples 20000 --json");
   ASSERT_EQ(j.code, 0) << j.err;
   const json e = json::parse(j.out);
@@ -340,7 +314,7 @@ TEST_F(Cli, EvaluateTheLAgainstItsDecomposition) {
 
 TEST_F(Cli, EvaluateWithAMissingHullFile) {
   const std::string model = writeModel("L.off", shapes::lShape());
-  const CliRun r = acd("evaluate " + quote(model) + " " + quote(path("nohulls.obj")));
+  const acdtest::ToolRun r = acd("evaluate " + quote(model) + " " + quote(path("nohulls.obj")));
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("nohulls.obj"), std::string::npos) << r.err;
 }

@@ -8,7 +8,6 @@
 
 #include "helpers.hpp"
 
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -19,28 +18,12 @@
 using namespace acd;
 namespace fs = std::filesystem;
 using json = nlohmann::json;
+using acdtest::quote;
+using acdtest::slurp;
 
 #ifdef ACD_POINTLOC
 
 namespace {
-
-struct ToolRun {
-  int code = -1;
-  std::string out, err;
-};
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
 
 class PointLoc : public ::testing::Test {
  protected:
@@ -52,16 +35,7 @@ class PointLoc : public ::testing::Test {
 
   std::string path(const std::string& name) const { return *dir_ / name; }
 
-  ToolRun run(const std::string& args) const {
-    const std::string out = path("stdout.txt"), err = path("stderr.txt");
-    const std::string cmd = quote(ACD_POINTLOC) + " " + args + " >" + quote(out) + " 2>" + quote(err) + " </dev/null";
-    const int status = std::system(cmd.c_str());
-    ToolRun r;
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = slurp(out);
-    r.err = slurp(err);
-    return r;
-  }
+  acdtest::ToolRun run(const std::string& args) const { return acdtest::runTool(ACD_POINTLOC, args, *dir_); }
 
   std::string writeModel(const std::string& name, const TriMesh& mesh) const {
     const std::string p = path(name);
@@ -74,7 +48,7 @@ class PointLoc : public ::testing::Test {
   json report(const std::string& args) const {
     const std::string j = path("report.json");
     fs::remove(j);
-    const ToolRun r = run(args + " --json " + quote(j));
+    const acdtest::ToolRun r = run(args + " --json " + quote(j));
     EXPECT_EQ(r.code, 0) << r.err;
     if (r.code != 0) return {};
     return json::parse(slurp(j));
@@ -176,7 +150,7 @@ TEST_F(PointLoc, BadInputsAreRefusedWithAMessage) {
       {quote(model) + " --tau nan", 3, "--tau"},
   };
   for (const Case& c : cases) {
-    const ToolRun r = run(c.args);
+    const acdtest::ToolRun r = run(c.args);
     EXPECT_EQ(r.code, c.code) << c.args << "\n" << r.err;
     EXPECT_NE(r.err.find(c.word), std::string::npos) << c.args << "\n" << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
@@ -195,7 +169,7 @@ TEST_F(PointLoc, AcceptsScientificAndPlainSampleCounts) {
 }
 
 TEST_F(PointLoc, HelpNamesTheDefaultModel) {
-  const ToolRun r = run("--help");
+  const acdtest::ToolRun r = run("--help");
   EXPECT_EQ(r.code, 0);
   EXPECT_NE(r.out.find("elephant.off"), std::string::npos) << r.out;
 }

@@ -6,7 +6,8 @@
 // Points are uniform in the model's bounding box; point i depends only on (seed, i) through a
 // counter-based hash, and work runs over fixed blocks whose counts are combined in block order,
 // so every count is identical for any number of threads.
-#include "exact_inside.hpp"
+#include <acd/inside.hpp>
+#include <acd/random.hpp>
 
 #include <acd/decompose.hpp>
 #include <acd/io.hpp>
@@ -46,22 +47,16 @@ double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock:
 
 // ---------------------------------------------------------------- random points
 
-inline std::uint64_t mix64(std::uint64_t z) {
-  z += 0x9E3779B97F4A7C15ull;
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
 
 /// Point i, uniform in [lo, hi]: depends only on (seed, i).
 struct PointStream {
   std::uint64_t key;
   Vec3 lo, size;
   Vec3 operator()(std::uint64_t i) const {
-    const std::uint64_t base = key ^ mix64(i);
-    const double u = static_cast<double>(mix64(base + 0x632BE59BD9B4E019ull) >> 11) * 0x1p-53;
-    const double v = static_cast<double>(mix64(base + 0x8CB92BA72F3D8DD7ull) >> 11) * 0x1p-53;
-    const double w = static_cast<double>(mix64(base + 0xA0761D6478BD642Full) >> 11) * 0x1p-53;
+    const std::uint64_t base = key ^ acd::mix64(i);
+    const double u = acd::unitInterval(acd::mix64(base + 0x632BE59BD9B4E019ull));
+    const double v = acd::unitInterval(acd::mix64(base + 0x8CB92BA72F3D8DD7ull));
+    const double w = acd::unitInterval(acd::mix64(base + 0xA0761D6478BD642Full));
     return {lo.x() + u * size.x(), lo.y() + v * size.y(), lo.z() + w * size.z()};
   }
 };
@@ -355,7 +350,7 @@ int main(int argc, char** argv) {
   }
   std::size_t totalPlanes = hulls.planes.size();
 
-  PointStream points{mix64(seed ^ 0x5EED5EED5EED5EEDull), box.lo, box.size()};
+  PointStream points{acd::mix64(seed ^ 0x5EED5EED5EED5EEDull), box.lo, box.size()};
 
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   const int usedThreads = arena.max_concurrency();
@@ -394,7 +389,7 @@ int main(int argc, char** argv) {
 
   // ---- exact answer on the first M points
   const auto tExact = Clock::now();
-  const pointloc::ExactInside exact(read.mesh);
+  const acd::InsideTest exact(read.mesh);
   const double exactBuildSeconds = since(tExact);
   const std::uint64_t eblocks = (exactSamples + kBlock - 1) / kBlock;
   const int nh = hulls.size();

@@ -5,18 +5,15 @@
 // split into fixed blocks whose partial results are combined in block order, so the result
 // does not depend on the number of threads.
 //
-// Point-in-model test: a ray from the query point towards +z; the signed crossings with the
-// model's triangles (sign = orientation of the triangle's xy-projection) sum to the winding
-// number, and a point is inside when it is not zero. The predicates are exact (filtered,
-// with CGAL's exact fallback), and a query point lying exactly on a projected edge or vertex
-// is moved symbolically by (eps, eps^2) in xy, so every ray meets a shared edge exactly once.
-// Only points exactly on the model's surface get an arbitrary (but deterministic) answer.
+// Point-in-model test: acd::InsideTest (inside.hpp).
 //
 // Hulls: the convex hull of each input hull's vertices (so any input orientation or
 // non-convexity is harmless), as half-spaces n.x <= d for the volume test, as triangles
 // (a canonical fan per planar facet) for surface sampling and exact point-to-hull distances.
 #include <acd/evaluate.hpp>
+#include <acd/inside.hpp>
 #include <acd/normalize.hpp>
+#include <acd/random.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -38,7 +35,6 @@ namespace acd {
 namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using P2 = K::Point_2;
 using P3 = K::Point_3;
 
 // Slack of the half-space test, in normalised units: inside a hull iff n.x <= d + kHullSlack.
@@ -46,19 +42,12 @@ constexpr double kHullSlack = 1e-10;
 
 // ---------------------------------------------------------------- random numbers
 
-inline std::uint64_t mix64(std::uint64_t z) {
-  z += 0x9E3779B97F4A7C15ull;
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
-
 /// Counter-based uniform numbers in [0, 1): value k of sample i depends only on (seed, stream, i, k).
 struct Stream {
   std::uint64_t key;
   Stream(std::uint64_t seed, std::uint64_t stream) : key(mix64(mix64(seed) ^ (stream * 0xD1B54A32D192ED03ull))) {}
   double uniform(std::uint64_t i, unsigned k) const {
-    return static_cast<double>(mix64(key ^ mix64(i * 4 + k)) >> 11) * 0x1p-53;
+    return unitInterval(mix64(key ^ mix64(i * 4 + k)));
   }
 };
 
@@ -75,132 +64,6 @@ void forEachBlock(tbb::task_arena& arena, std::size_t blocks, const F& f) {
         tbb::simple_partitioner());
   });
 }
-
-// ---------------------------------------------------------------- exact predicates
-
-inline int sign(double v) { return (v > 0) - (v < 0); }
-
-/// Exact sign of orient2d(a, b, q) (positive when q is left of a->b).
-inline int orient2d(double ax, double ay, double bx, double by, double qx, double qy) {
-  const double l = (bx - ax) * (qy - ay), r = (by - ay) * (qx - ax);
-  const double det = l - r;
-  const double bound = 3.3306690738754716e-16 * (std::abs(l) + std::abs(r));
-  if (det > bound) return 1;
-  if (-det > bound) return -1;
-  return static_cast<int>(CGAL::orientation(P2(ax, ay), P2(bx, by), P2(qx, qy)));
-}
-
-/// orient2d(a, b, q') with q' = q + (eps, eps^2), eps -> 0: zero only when a and b coincide in xy.
-inline int orient2dPerturbed(double ax, double ay, double bx, double by, double qx, double qy) {
-  const int s = orient2d(ax, ay, bx, by, qx, qy);
-  if (s != 0) return s;
-  if (by != ay) return by < ay ? 1 : -1;  // d/dqx of the determinant is -(by - ay)
-  return bx > ax ? 1 : (bx < ax ? -1 : 0);  // d/dqy is (bx - ax)
-}
-
-// ---------------------------------------------------------------- point in model
-
-class ModelLocator {
- public:
-  explicit ModelLocator(const TriMesh& m) {
-    const Box3 box = boundingBox(m);
-    lo_ = box.lo;
-    hi_ = box.hi;
-    tris_.reserve(m.faces.size());
-    for (const Face& f : m.faces) {
-      const Vec3 &a = m.vertices[f[0]], &b = m.vertices[f[1]], &c = m.vertices[f[2]];
-      const int s = orient2d(a.x(), a.y(), b.x(), b.y(), c.x(), c.y());
-      if (s == 0) continue;  // vertical in projection: no generic vertical ray meets it
-      Tri t{a, b, c, a.cwiseMin(b).cwiseMin(c), a.cwiseMax(b).cwiseMax(c), s};
-      tris_.push_back(t);
-    }
-    // Grid over xy with about two cells per triangle.
-    const double w = std::max(hi_.x() - lo_.x(), 1e-300), h = std::max(hi_.y() - lo_.y(), 1e-300);
-    const double cells = std::clamp(2.0 * static_cast<double>(tris_.size()), 1.0, 4.0e6);
-    nx_ = std::clamp(static_cast<int>(std::sqrt(cells * w / h)), 1, 4096);
-    ny_ = std::clamp(static_cast<int>(cells / nx_), 1, 4096);
-    sx_ = nx_ / w;
-    sy_ = ny_ / h;
-    start_.assign(static_cast<std::size_t>(nx_) * ny_ + 1, 0);
-    for (int pass = 0; pass < 2; ++pass) {
-      std::vector<int> fill;
-      if (pass == 1) {
-        std::partial_sum(start_.begin(), start_.end(), start_.begin());
-        items_.resize(start_.back());
-        fill.assign(start_.begin(), start_.end() - 1);
-      }
-      for (int t = 0; t < static_cast<int>(tris_.size()); ++t) {
-        const int x0 = cellX(tris_[t].lo.x()), x1 = cellX(tris_[t].hi.x());
-        const int y0 = cellY(tris_[t].lo.y()), y1 = cellY(tris_[t].hi.y());
-        for (int y = y0; y <= y1; ++y)
-          for (int x = x0; x <= x1; ++x) {
-            const std::size_t c = static_cast<std::size_t>(y) * nx_ + x;
-            if (pass == 0)
-              ++start_[c + 1];
-            else
-              items_[fill[c]++] = Item{down(tris_[t].lo.x()), up(tris_[t].hi.x()), down(tris_[t].lo.y()),
-                                       up(tris_[t].hi.y()), up(tris_[t].hi.z()), t};
-          }
-      }
-    }
-  }
-
-  bool inside(const Vec3& q) const {
-    if (!(q.x() >= lo_.x() && q.x() <= hi_.x() && q.y() >= lo_.y() && q.y() <= hi_.y() && q.z() <= hi_.z()))
-      return false;
-    const std::size_t c = static_cast<std::size_t>(cellY(q.y())) * nx_ + cellX(q.x());
-    int winding = 0;
-    for (int k = start_[c]; k < start_[c + 1]; ++k) {
-      // Conservative prefilter on the cell's contiguous records (boxes rounded outwards to float).
-      const Item& it = items_[k];
-      if (q.z() > it.maxz || q.x() < it.minx || q.x() >= it.maxx || q.y() < it.miny || q.y() >= it.maxy) continue;
-      const Tri& t = tris_[it.tri];
-      if (q.z() > t.hi.z()) continue;  // entirely below the point
-      // Bounding box of the triangle against q' = q + (eps, eps^2).
-      if (q.x() < t.lo.x() || q.x() >= t.hi.x() || q.y() < t.lo.y() || q.y() >= t.hi.y()) continue;
-      if (orient2dPerturbed(t.a.x(), t.a.y(), t.b.x(), t.b.y(), q.x(), q.y()) != t.s) continue;
-      if (orient2dPerturbed(t.b.x(), t.b.y(), t.c.x(), t.c.y(), q.x(), q.y()) != t.s) continue;
-      if (orient2dPerturbed(t.c.x(), t.c.y(), t.a.x(), t.a.y(), q.x(), q.y()) != t.s) continue;
-      bool above = q.z() < t.lo.z();
-      if (!above) {
-        // Below the triangle's plane iff the orientation is opposite to the projected one.
-        const auto o = CGAL::orientation(P3(t.a.x(), t.a.y(), t.a.z()), P3(t.b.x(), t.b.y(), t.b.z()),
-                                         P3(t.c.x(), t.c.y(), t.c.z()), P3(q.x(), q.y(), q.z()));
-        above = static_cast<int>(o) == -t.s;
-      }
-      if (above) winding += t.s;
-    }
-    return winding != 0;
-  }
-
- private:
-  struct Tri {
-    Vec3 a, b, c, lo, hi;
-    int s;  // orientation of the xy-projection
-  };
-  struct Item {
-    float minx, maxx, miny, maxy, maxz;
-    int tri;
-  };
-  static float down(double x) {
-    float f = static_cast<float>(x);
-    return f > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
-  }
-  static float up(double x) {
-    float f = static_cast<float>(x);
-    return f < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
-  }
-  // Monotone in x, so a point inside a triangle's box always lands in one of the triangle's cells.
-  int cellX(double x) const { return std::clamp(static_cast<int>(std::floor((x - lo_.x()) * sx_)), 0, nx_ - 1); }
-  int cellY(double y) const { return std::clamp(static_cast<int>(std::floor((y - lo_.y()) * sy_)), 0, ny_ - 1); }
-
-  Vec3 lo_, hi_;
-  std::vector<Tri> tris_;
-  int nx_ = 1, ny_ = 1;
-  double sx_ = 1, sy_ = 1;
-  std::vector<int> start_;
-  std::vector<Item> items_;
-};
 
 // ---------------------------------------------------------------- convex hulls
 
@@ -677,7 +540,7 @@ Evaluation evaluate(const TriMesh& model, const std::vector<TriMesh>& hulls, con
   const Vec3 size = box.size();
   ev.boxVolume = size.prod();
 
-  const ModelLocator locator(m);
+  const InsideTest locator(m);
   const HullIndex index(hs, box);
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
 

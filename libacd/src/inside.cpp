@@ -1,7 +1,10 @@
-// Exact point-in-model test for pointloc: signed crossings of a +z ray (winding number) with
-// exact predicates and a symbolic perturbation of the query point, over an xy grid of the
-// triangles. A small re-implementation of the library's private locator (evaluate.cpp).
-#include "exact_inside.hpp"
+// Exact point-in-model test. A ray from the query point towards +z; the signed crossings with
+// the model's triangles (sign = orientation of the triangle's xy-projection) sum to the winding
+// number, and a point is inside when it is not zero. The predicates are exact (filtered, with
+// CGAL's exact fallback), and a query point lying exactly on a projected edge or vertex is moved
+// symbolically by (eps, eps^2) in xy, so every ray meets a shared edge exactly once. Triangles
+// are bucketed in an xy grid of about two cells per triangle.
+#include <acd/inside.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -10,13 +13,9 @@
 #include <limits>
 #include <numeric>
 
-namespace pointloc {
+namespace acd {
 namespace {
 
-using acd::Box3;
-using acd::Face;
-using acd::TriMesh;
-using acd::Vec3;
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using P2 = K::Point_2;
 using P3 = K::Point_3;
@@ -43,11 +42,9 @@ inline int orient2dPerturbed(double ax, double ay, double bx, double by, double 
   return bx > ax ? 1 : (bx < ax ? -1 : 0);  // d/dqy is (bx - ax)
 }
 
-
 }  // namespace
 
-
-class ExactInside::Impl {
+class InsideTest::Impl {
  public:
   explicit Impl(const TriMesh& m) {
     const Box3 box = boundingBox(m);
@@ -149,9 +146,8 @@ class ExactInside::Impl {
   std::vector<Item> items_;
 };
 
+InsideTest::InsideTest(const TriMesh& mesh) : impl_(std::make_unique<Impl>(mesh)) {}
+InsideTest::~InsideTest() = default;
+bool InsideTest::inside(const Vec3& q) const { return impl_->inside(q); }
 
-ExactInside::ExactInside(const TriMesh& mesh) : impl_(std::make_unique<Impl>(mesh)) {}
-ExactInside::~ExactInside() = default;
-bool ExactInside::inside(const Vec3& q) const { return impl_->inside(q); }
-
-}  // namespace pointloc
+}  // namespace acd
