@@ -14,6 +14,9 @@ CORE_PKGS=(
     libcgal-dev libeigen3-dev libgmp-dev libmpfr-dev libboost-dev libtbb-dev
     libcli11-dev nlohmann-json3-dev libgtest-dev googletest
     libcgal-demo time jq python3
+    libtet1.5-dev libompl-dev libfcl-dev libyaml-cpp-dev libassimp-dev
+    libboost-filesystem-dev libboost-serialization-dev libboost-graph-dev
+    python3-matplotlib python3-networkx
 )
 # Optional: off-screen pictures (scripts/render.sh). Failure here is not fatal.
 PICTURE_PKGS=(f3d xvfb xauth)
