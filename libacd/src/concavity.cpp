@@ -233,6 +233,7 @@ ConcavityMap measureConcavity(const TriMesh& mesh, const SurfaceGraph& graph, co
 
     // 3. Pockets: faces enclosed by the projected paths; each region takes the bridge most of its border votes for.
     std::unordered_map<std::uint64_t, char> onPath;
+    for (std::uint64_t e : options.barrierEdges) onPath[e] = 1;
     std::vector<std::vector<std::pair<int, int>>> votes(nf);
     auto vote = [&](int face, int bridge) {
       if (face < 0) return;

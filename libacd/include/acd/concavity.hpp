@@ -13,6 +13,7 @@
 #include <acd/surface_graph.hpp>
 
 #include <algorithm>
+#include <cstdint>
 #include <vector>
 
 namespace acd {
@@ -20,6 +21,10 @@ namespace acd {
 struct ConcavityOptions {
   double epsilon = 0.025;     // bridge clustering tolerance (normalised units); <= 0: one bridge per hull facet
   int lloydIterations = 4;    // Lloyd relaxation rounds after Algorithm 2 seeds the clusters
+  /// Mesh edges (edgeKey) that pockets may not grow across, besides the projected bridge
+  /// boundaries: the handle cuts of Section 5, so that on a surface of genus > 0 every
+  /// pocket is bounded by a single bridge.
+  std::vector<std::uint64_t> barrierEdges;
 };
 
 /// A bridge patch: contiguous hull facets and their supporting plane n.x = offset.
