@@ -1,5 +1,6 @@
 // Bridges, pockets and vertex concavity (Lien & Amato 2007, Section 4.1, Appendix A).
 #include <acd/concavity.hpp>
+#include <acd/handles.hpp>
 
 #include <algorithm>
 #include <limits>
@@ -203,6 +204,7 @@ ConcavityMap measureConcavity(const TriMesh& mesh, const SurfaceGraph& graph, co
   std::vector<double> bestEstimate(nv), bestFacet(nv);
   std::vector<int> bestBridge(nv);
 
+  int genus = -1;  // computed when first needed
   for (int attempt = 0;; ++attempt) {
     cluster();
     const int nb = static_cast<int>(seeds.size());
@@ -244,51 +246,75 @@ ConcavityMap measureConcavity(const TriMesh& mesh, const SurfaceGraph& graph, co
         }
       votes[face].emplace_back(bridge, 1);
     };
+    std::unordered_map<std::uint64_t, int> bridgeOnLeft;  // directed path edge -> bridge on that side
     for (const auto& pe : out.projections)
       for (std::size_t i = 0; i + 1 < pe.path.size(); ++i) {
         const int a = pe.path[i], b = pe.path[i + 1];
+        bridgeOnLeft[directedKey(a, b)] = pe.leftBridge;
+        bridgeOnLeft[directedKey(b, a)] = pe.rightBridge;
         onPath[edgeKey(a, b)] = 1;
         vote(graph.faceLeftOf(a, b), pe.leftBridge);
         vote(graph.faceLeftOf(b, a), pe.rightBridge);
       }
-    std::vector<int> region(nf, -1);
-    std::vector<int> stack;
-    int regions = 0;
-    for (int seed = 0; seed < nf; ++seed) {
-      if (region[seed] >= 0) continue;
-      std::vector<int> faces;
-      std::unordered_map<int, int> tally;
-      stack.assign(1, seed);
-      region[seed] = regions;
-      while (!stack.empty()) {
-        const int f = stack.back();
-        stack.pop_back();
-        faces.push_back(f);
-        for (auto [b, count] : votes[f]) tally[b] += count;
-        for (int k = 0; k < 3; ++k) {
-          const int g = graph.faceAcross(f, k);
-          if (g < 0 || region[g] >= 0) continue;
-          if (onPath.count(edgeKey(mesh.faces[f][k], mesh.faces[f][(k + 1) % 3]))) continue;
-          region[g] = regions;
-          stack.push_back(g);
+    // Section 5: on a surface of genus > 0 some regions are enclosed only by several bridges
+    // together (handle caps). Their handle cuts become barriers and the regions are found again.
+    out.handleCuts.clear();
+    std::vector<std::uint64_t> handleBarriers;
+    for (int handlePass = 0;; ++handlePass) {
+      std::vector<int> region(nf, -1);
+      std::vector<int> stack;
+      int regions = 0;
+      for (int seed = 0; seed < nf; ++seed) {
+        if (region[seed] >= 0) continue;
+        std::vector<int> faces;
+        std::unordered_map<int, int> tally;
+        stack.assign(1, seed);
+        region[seed] = regions;
+        while (!stack.empty()) {
+          const int f = stack.back();
+          stack.pop_back();
+          faces.push_back(f);
+          for (auto [b, count] : votes[f]) tally[b] += count;
+          for (int k = 0; k < 3; ++k) {
+            const int g = graph.faceAcross(f, k);
+            if (g < 0 || region[g] >= 0) continue;
+            if (onPath.count(edgeKey(mesh.faces[f][k], mesh.faces[f][(k + 1) % 3]))) continue;
+            region[g] = regions;
+            stack.push_back(g);
+          }
         }
+        // Usually one bridge encloses the region. Where projected paths cross, several claim it: the
+        // region then goes to the claimant it lies closest to (smallest depth below the supporting
+        // plane), so a crossing path cannot hand a region to a bridge on the far side of the model.
+        int bridge = 0;
+        double bestDepth = std::numeric_limits<double>::infinity();
+        std::vector<std::pair<int, int>> claims(tally.begin(), tally.end());
+        // A region enclosed by handle cuts alone has no claimant: every bridge may claim it.
+        if (claims.empty())
+          for (int b = 0; b < nb; ++b) claims.emplace_back(b, 0);
+        std::sort(claims.begin(), claims.end());
+        for (auto [b, count] : claims) {
+          const Bridge& br = out.bridges[b];
+          double depth = 0.0;
+          for (int f : faces)
+            for (int v : mesh.faces[f]) depth = std::max(depth, br.offset - br.normal.dot(mesh.vertices[v]));
+          if (depth < bestDepth) bestDepth = depth, bridge = b;
+        }
+        for (int f : faces) out.facePocket[f] = bridge;
+        ++regions;
       }
-      // Usually one bridge encloses the region. Where projected paths cross, several claim it: the
-      // region then goes to the claimant it lies closest to (smallest depth below the supporting
-      // plane), so a crossing path cannot hand a region to a bridge on the far side of the model.
-      int bridge = 0;
-      double bestDepth = std::numeric_limits<double>::infinity();
-      std::vector<std::pair<int, int>> claims(tally.begin(), tally.end());
-      std::sort(claims.begin(), claims.end());
-      for (auto [b, count] : claims) {
-        const Bridge& br = out.bridges[b];
-        double depth = 0.0;
-        for (int f : faces)
-          for (int v : mesh.faces[f]) depth = std::max(depth, br.offset - br.normal.dot(mesh.vertices[v]));
-        if (depth < bestDepth) bestDepth = depth, bridge = b;
+
+      if (handlePass == 0 && genus < 0) genus = closedGenus(mesh);
+      if (genus == 0) break;
+      const auto shared = findSharedPockets(mesh, graph, region, bridgeOnLeft);
+      out.sharedPockets = static_cast<int>(shared.size());
+      if (shared.empty() || handlePass >= 4) break;
+      auto cuts = findHandleCuts(mesh, graph, shared, handleBarriers);
+      if (cuts.empty()) break;
+      for (auto& cut : cuts) {
+        for (std::uint64_t e : cut.edges) onPath[e] = 1, handleBarriers.push_back(e);
+        out.handleCuts.push_back(std::move(cut));
       }
-      for (int f : faces) out.facePocket[f] = bridge;
-      ++regions;
     }
 
     // 4. Vertex concavity: distance to the supporting plane of the pocket's bridge (max over the pockets

@@ -8,6 +8,7 @@
 // pocket's bridge, and the concavity of the model is the largest vertex concavity.
 #pragma once
 
+#include <acd/handles.hpp>
 #include <acd/hull.hpp>
 #include <acd/mesh.hpp>
 #include <acd/surface_graph.hpp>
@@ -55,6 +56,8 @@ struct ConcavityMap {
   std::vector<double> facetConcavity;    // per-facet concavity: to the nearest facet plane of the same patch
   int bridgeEstimate = 0;                // Algorithm 2's count before Lloyd and refinement
   int refinements = 0;                   // patches split to keep Observation 4.1 within epsilon
+  std::vector<HandleCut> handleCuts;     // Section 5: barriers found on a surface of genus > 0
+  int sharedPockets = 0;                 // pockets ringed by several bridges (handle caps), not disks
   double concavity = 0.0;                // max vertex concavity
   int notch = -1;                        // vertex realising it
 };

@@ -1,0 +1,108 @@
+// Genus reduction (Section 5): handle caps share a pocket until handle cuts separate them.
+#include <acd/concavity.hpp>
+#include <acd/decompose.hpp>
+#include <acd/handles.hpp>
+#include <acd/io.hpp>
+#include <acd/normalize.hpp>
+#include <acd/shapes.hpp>
+#include <acd/surface_graph.hpp>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <string>
+#include <unordered_set>
+
+using namespace acd;
+
+namespace {
+
+TriMesh normalised(const TriMesh& m) { return applyNormalization(m, minimumSphereNormalization(m)); }
+
+ConcavityMap measure(const TriMesh& mesh, double epsilon) {
+  SurfaceGraph graph(mesh);
+  ConcavityOptions o;
+  o.epsilon = epsilon;
+  return measureConcavity(mesh, graph, o);
+}
+
+/// A flat plate of voxels with `holes` square holes in a row: genus = holes.
+TriMesh holedPlate(int holes) {
+  std::vector<std::array<int, 3>> cells;
+  const int nx = 2 + 3 * holes, ny = 5;
+  for (int x = 0; x < nx; ++x)
+    for (int y = 0; y < ny; ++y) {
+      cells.push_back({x, y, 0});
+    }
+  // Holes: cells (3k+2 .. 3k+2, 2) for k < holes, i.e. one cell each, separated by two solid cells.
+  std::vector<std::array<int, 3>> kept;
+  for (auto c : cells) {
+    bool hole = false;
+    for (int k = 0; k < holes; ++k)
+      if (c[0] == 2 + 3 * k && c[1] == 2) hole = true;
+    if (!hole) kept.push_back(c);
+  }
+  return shapes::voxels(kept);
+}
+
+int edgeComponents(const TriMesh& mesh, const std::vector<HandleCut>& cuts) {
+  std::unordered_set<std::uint64_t> blocked;
+  for (const auto& c : cuts) blocked.insert(c.edges.begin(), c.edges.end());
+  SurfaceGraph graph(mesh);
+  const int nf = static_cast<int>(mesh.faces.size());
+  std::vector<char> seen(nf, 0);
+  int comps = 0;
+  for (int s = 0; s < nf; ++s) {
+    if (seen[s]) continue;
+    ++comps;
+    std::vector<int> stack{s};
+    seen[s] = 1;
+    while (!stack.empty()) {
+      int f = stack.back();
+      stack.pop_back();
+      for (int k = 0; k < 3; ++k) {
+        int g = graph.faceAcross(f, k);
+        if (g < 0 || seen[g] || blocked.count(edgeKey(mesh.faces[f][k], mesh.faces[f][(k + 1) % 3]))) continue;
+        seen[g] = 1;
+        stack.push_back(g);
+      }
+    }
+  }
+  return comps;
+}
+
+}  // namespace
+
+TEST(Handles, GenusFromEuler) {
+  EXPECT_EQ(closedGenus(shapes::icosphere(Vec3::Zero(), 1.0, 2)), 0);
+  EXPECT_EQ(closedGenus(shapes::torus(2.0, 1.0, 48, 24)), 1);
+  EXPECT_EQ(closedGenus(holedPlate(2)), 2);
+  EXPECT_EQ(closedGenus(holedPlate(3)), 3);
+}
+
+TEST(Handles, TorusHasOneHandleCutAndTheAnalyticConcavity) {
+  const TriMesh torus = normalised(shapes::torus(2.0, 1.0, 96, 48));
+  const ConcavityMap c = measure(torus, 0.05);
+  ASSERT_EQ(c.handleCuts.size(), 1u);
+  EXPECT_EQ(c.sharedPockets, 0);
+  EXPECT_EQ(edgeComponents(torus, c.handleCuts), 1) << "a handle cut must not split the model";
+  // The hole's wall is measured from the nearer of the two caps: depth r / (R + r) = 1/3,
+  // where one cap for the whole wall would give 2r / (R + r).
+  EXPECT_GT(c.concavity, 1.0 / 3.0 - 0.02);
+  EXPECT_LT(c.concavity, 0.42);
+}
+
+TEST(Handles, PlateWithHolesHasOneCutPerHole) {
+  for (int holes : {1, 2, 3}) {
+    const TriMesh plate = normalised(holedPlate(holes));
+    const ConcavityMap c = measure(plate, 0.02);
+    EXPECT_EQ(static_cast<int>(c.handleCuts.size()), holes) << holes << " holes";
+    EXPECT_EQ(c.sharedPockets, 0) << holes << " holes";
+    EXPECT_EQ(edgeComponents(plate, c.handleCuts), 1);
+  }
+}
+
+TEST(Handles, GenusZeroNeedsNoCuts) {
+  const ConcavityMap c = measure(normalised(shapes::uShape()), 0.02);
+  EXPECT_TRUE(c.handleCuts.empty());
+}
