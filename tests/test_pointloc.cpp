@@ -14,6 +14,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 using namespace acd;
 namespace fs = std::filesystem;
@@ -54,8 +55,32 @@ class PointLoc : public ::testing::Test {
     return json::parse(slurp(j));
   }
 
+  /// Rows of a --dump file: point, hulls' answer through the grid, every hull tested, exact.
+  struct Row {
+    Vec3 p;
+    int hulls, direct, exact;
+  };
+  std::vector<Row> readDump(const std::string& file) const {
+    std::ifstream in(file);
+    std::string line;
+    std::getline(in, line);
+    EXPECT_EQ(line, "x,y,z,hulls,direct,exact");
+    std::vector<Row> rows;
+    while (std::getline(in, line)) {
+      Row r;
+      char c;
+      std::istringstream ls(line);
+      ls >> r.p.x() >> c >> r.p.y() >> c >> r.p.z() >> c >> r.hulls >> c >> r.direct >> c >> r.exact;
+      EXPECT_TRUE(static_cast<bool>(ls)) << line;
+      rows.push_back(r);
+    }
+    return rows;
+  }
+
   std::unique_ptr<acdtest::TempDir> dir_;
 };
+
+std::string corpus(const std::string& name) { return std::string(ACD_DATA_DIR) + "/meshes/" + name + ".off"; }
 
 TEST_F(PointLoc, ConvexModelHasNoError) {
   const std::string model = writeModel("sphere.off", shapes::icosphere(Vec3(0.3, -0.2, 1.0), 2.0, 2));
@@ -71,6 +96,39 @@ TEST_F(PointLoc, ConvexModelHasNoError) {
   EXPECT_NEAR(share, 0.5236, 0.02);
 }
 
+TEST_F(PointLoc, ConvexModelAgreesWithItsOwnHalfSpacesAtEveryPoint) {
+  // The model is convex, so its own faces are the half-spaces: a direct test, independent of
+  // the decomposition, the hull code and the grid.
+  const TriMesh sphere = shapes::icosphere(Vec3(0.3, -0.2, 1.0), 2.0, 2);
+  const std::string model = writeModel("sphere.off", sphere);
+  const std::string dump = path("points.csv");
+  const json j = report(quote(model) + " --samples 30000 --tau 0.05 --grid-cells 500 --dump " + quote(dump));
+  ASSERT_FALSE(j.empty());
+  const auto rows = readDump(dump);
+  ASSERT_EQ(rows.size(), 30000u);
+  int inside = 0, nearSurface = 0;
+  for (const Row& r : rows) {
+    double worst = -1e300;  // largest signed distance to a face plane
+    for (const Face& f : sphere.faces) {
+      const Vec3 &a = sphere.vertices[f[0]], &b = sphere.vertices[f[1]], &c = sphere.vertices[f[2]];
+      const Vec3 n = (b - a).cross(c - a).normalized();
+      worst = std::max(worst, n.dot(r.p - a));
+    }
+    if (std::abs(worst) < 1e-9) {
+      ++nearSurface;
+      continue;
+    }
+    const int direct = worst < 0 ? 1 : 0;
+    inside += direct;
+    EXPECT_EQ(r.hulls, direct) << r.p.transpose();
+    EXPECT_EQ(r.direct, direct) << r.p.transpose();
+    EXPECT_EQ(r.exact, direct) << r.p.transpose();
+  }
+  EXPECT_EQ(nearSurface, 0);
+  EXPECT_EQ(inside, j["points_inside"].get<int>());
+  EXPECT_GT(inside, 10000);
+}
+
 TEST_F(PointLoc, LShapeIsTwoBoxesWithNoError) {
   const std::string model = writeModel("l.off", shapes::lShape());
   const json j = report(quote(model) + " --samples 300000 --tau 0.02");
@@ -81,6 +139,121 @@ TEST_F(PointLoc, LShapeIsTwoBoxesWithNoError) {
   EXPECT_EQ(j["points_inside"], j["exact"]["points_inside"]);  // every point was checked
   EXPECT_GT(j["points_inside"].get<int>(), 0);
   EXPECT_LT(j["points_inside"].get<int>(), 300000);
+}
+
+TEST_F(PointLoc, LShapeMatchesTheAnalyticAnswerAtEveryPoint) {
+  // shapes::lShape(): unit cells (0,0,0), (1,0,0), (0,1,0); its box is [0,2] x [0,2] x [0,1].
+  const std::string model = writeModel("l.off", shapes::lShape());
+  const std::string dump = path("points.csv");
+  const json j = report(quote(model) + " --samples 40000 --tau 0.02 --dump " + quote(dump));
+  ASSERT_FALSE(j.empty());
+  EXPECT_EQ(j["components"], 2);
+  const auto rows = readDump(dump);
+  ASSERT_EQ(rows.size(), 40000u);
+  int inside = 0;
+  for (const Row& r : rows) {
+    const Vec3& p = r.p;
+    ASSERT_TRUE(p.x() >= 0 && p.x() <= 2 && p.y() >= 0 && p.y() <= 2 && p.z() >= 0 && p.z() <= 1) << p.transpose();
+    const int truth = (p.x() < 1 || p.y() < 1) ? 1 : 0;
+    inside += truth;
+    EXPECT_EQ(r.hulls, truth) << p.transpose();
+    EXPECT_EQ(r.direct, truth) << p.transpose();
+    EXPECT_EQ(r.exact, truth) << p.transpose();
+  }
+  EXPECT_EQ(j["points_inside"].get<int>(), inside);
+  EXPECT_NEAR(inside / 40000.0, 0.75, 0.01);  // three of the box's four cells
+}
+
+TEST_F(PointLoc, ErrorEstimateAgreesWithAnIndependentCount) {
+  // A real, non-convex model whose hulls do overlap the outside: the reported false inside and
+  // false outside must equal a count made here with the tests' own point-in-mesh test, and the
+  // reported rate must be that count over the subsample, inside its interval.
+  const std::string model = corpus("eight");
+  ASSERT_TRUE(fs::exists(model)) << "corpus missing: scripts/fetch_corpus.sh";
+  const ReadResult read = readMesh(model);
+  ASSERT_TRUE(read.status.ok()) << read.status.message;
+  const acdtest::MeshIndex mesh(read.mesh);
+  const std::string dump = path("points.csv");
+  const json j = report(quote(model) + " --samples 300000 --exact-samples 60000 --tau 0.05 --dump " + quote(dump));
+  ASSERT_FALSE(j.empty());
+  const auto rows = readDump(dump);
+  ASSERT_EQ(rows.size(), 60000u);
+  std::uint64_t falseIn = 0, falseOut = 0, truthIn = 0;
+  for (const Row& r : rows) {
+    const int truth = mesh.inside(r.p) ? 1 : 0;
+    truthIn += truth;
+    falseIn += r.hulls == 1 && truth == 0 ? 1 : 0;
+    falseOut += r.hulls == 0 && truth == 1 ? 1 : 0;
+    EXPECT_EQ(r.hulls, r.direct) << r.p.transpose();
+  }
+  EXPECT_GT(falseIn, 50u);  // the hulls do stick out: the test is not vacuous
+  EXPECT_EQ(j["exact"]["false_inside"].get<std::uint64_t>(), falseIn);
+  EXPECT_EQ(j["exact"]["false_outside"].get<std::uint64_t>(), falseOut);
+  EXPECT_EQ(j["exact"]["points_inside"].get<std::uint64_t>(), truthIn);
+  const double rate = static_cast<double>(falseIn + falseOut) / 60000.0;
+  EXPECT_DOUBLE_EQ(j["exact"]["error_rate"].get<double>(), rate);
+  EXPECT_LT(j["exact"]["error_rate_ci95"][0].get<double>(), rate);
+  EXPECT_GT(j["exact"]["error_rate_ci95"][1].get<double>(), rate);
+  // The components said to hold most false-inside volume really contain those points.
+  ASSERT_FALSE(j["exact"]["top_false_inside"].empty());
+  const json& top = j["exact"]["top_false_inside"][0];
+  EXPECT_LE(top["false_inside"].get<std::uint64_t>(), falseIn);
+  EXPECT_GT(top["share"].get<double>(), 0.0);
+}
+
+TEST_F(PointLoc, ElephantAtTwoHundredthsMisclassifiesUnderOnePercent) {
+  // The paper's Figure 20 model and tolerance (it reports 0.99 % errors).
+  const std::string model = corpus("elephant");
+  ASSERT_TRUE(fs::exists(model)) << "corpus missing: scripts/fetch_corpus.sh";
+  const json j = report(quote(model) + " --samples 1e6 --exact-samples 1e6 --tau 0.02");
+  ASSERT_FALSE(j.empty());
+  EXPECT_EQ(j["exact"]["samples"], 1000000);
+  EXPECT_LT(j["exact"]["error_rate_ci95"][1].get<double>(), 0.01);
+  EXPECT_GT(j["exact"]["false_inside"].get<int>(), 0);
+  EXPECT_EQ(j["exact"]["false_outside"].get<int>(), 0);  // every component lies in its own hull
+}
+
+TEST_F(PointLoc, CompareTimesTheExactMethodsOnTheSamePoints) {
+  const std::string model = writeModel("l.off", shapes::lShape());
+  const json j = report(quote(model) + " --samples 2e5 --compare --compare-samples 50000 --ecd-time-limit 30");
+  ASSERT_FALSE(j.empty());
+  ASSERT_TRUE(j.contains("compare"));
+  const json& c = j["compare"];
+  EXPECT_EQ(c["samples"], 50000);
+  bool cgal1 = false, insideTest = false, ecdRow = false;
+  for (const json& m : c["methods"]) {
+    const std::string name = m["method"];
+    if (name.find("ECD") != std::string::npos) {
+      ecdRow = true;
+      if (!m["available"].get<bool>()) {
+        // Said explicitly, never left out.
+        EXPECT_FALSE(m["note"].get<std::string>().empty());
+        continue;
+      }
+    }
+    ASSERT_TRUE(m["available"].get<bool>()) << m.dump();
+    EXPECT_GT(m["points_per_second"].get<double>(), 0.0) << name;
+    // The L is two boxes: every method, approximate or not, gives the exact answer.
+    if (!m["disagreements_with_exact"].is_null()) EXPECT_EQ(m["disagreements_with_exact"], 0) << name;
+    if (name.find("CGAL") != std::string::npos && m["threads"] == 1) {
+      cgal1 = true;
+      EXPECT_EQ(m["points"], 50000);
+      EXPECT_TRUE(m["extrapolated"].get<bool>());
+      EXPECT_NEAR(m["points_inside"].get<double>() / 50000.0, 0.75, 0.02);
+    }
+    if (name.find("InsideTest") != std::string::npos) insideTest = true;
+  }
+  EXPECT_TRUE(cgal1);
+  EXPECT_TRUE(insideTest);
+  EXPECT_TRUE(ecdRow);
+  EXPECT_GT(c["speedup_vs_cgal_1_thread"].get<double>(), 0.0);
+  ASSERT_TRUE(c.contains("ecd"));
+  if (c["ecd"]["available"].get<bool>()) {
+    EXPECT_TRUE(c["ecd"]["finished"].get<bool>()) << c["ecd"].dump();
+    EXPECT_GE(c["ecd"]["pieces"].get<int>(), 2);
+  } else {
+    EXPECT_NE(c["ecd"]["note"].get<std::string>().find("not available"), std::string::npos);
+  }
 }
 
 TEST_F(PointLoc, SameSeedSameCountsForAnyThreads) {
@@ -134,6 +307,11 @@ TEST_F(PointLoc, JsonHasTheReportedFields) {
 
 TEST_F(PointLoc, BadInputsAreRefusedWithAMessage) {
   const std::string model = writeModel("l.off", shapes::lShape());
+  const std::string garbage = path("garbage.off");
+  std::ofstream(garbage) << "OFF\n3 1 0\n0 0 zero\n";
+  TriMesh cup = shapes::box(Vec3::Zero(), Vec3::Ones());
+  cup.faces.pop_back();  // a hole: not a solid
+  const std::string open = writeModel("open.off", cup);
   struct Case {
     std::string args;
     int code;
@@ -148,6 +326,15 @@ TEST_F(PointLoc, BadInputsAreRefusedWithAMessage) {
       {quote(model) + " --tau 0", 3, "--tau"},
       {quote(model) + " --tau 3", 3, "--tau"},
       {quote(model) + " --tau nan", 3, "--tau"},
+      {quote(model) + " --tau -0.1", 3, "--tau"},
+      {quote(model) + " --threads -2", 3, "--threads"},
+      {quote(model) + " --exact-samples -1", 3, "--exact-samples"},
+      {quote(model) + " --compare-samples 0", 3, "--compare-samples"},
+      {quote(model) + " --ecd-time-limit 0", 3, "--ecd-time-limit"},
+      {quote(model) + " --grid-cells 0", 3, "--grid-cells"},
+      {quote(garbage), 2, "garbage.off"},
+      {quote(open), 2, "open.off"},
+      {quote(model) + " --json " + quote(path("no/such/dir/r.json")), 5, "r.json"},
   };
   for (const Case& c : cases) {
     const acdtest::ToolRun r = run(c.args);

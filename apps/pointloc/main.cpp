@@ -1,15 +1,22 @@
 // pointloc: point location against the convex hulls of an approximate convex decomposition
-// (paper, Section 7, Figure 20), with error statistics against the exact answer.
+// (paper, Section 7, Figure 20), with error statistics against the exact answer and, with
+// --compare, the same points timed against the original model and its exact decomposition.
 //
-//   pointloc [MODEL] [--samples 1e8] [--tau 0.02] [--threads N] [--seed S] [--exact-samples M] [--json FILE]
+//   pointloc [MODEL] [--samples 1e8] [--tau 0.02] [--threads N] [--seed S] [--exact-samples M]
+//            [--compare] [--json FILE]
 //
 // Points are uniform in the model's bounding box; point i depends only on (seed, i) through a
 // counter-based hash, and work runs over fixed blocks whose counts are combined in block order,
 // so every count is identical for any number of threads.
-#include <acd/inside.hpp>
-#include <acd/random.hpp>
+#include "exact_cgal.hpp"
+#include "exact_pieces.hpp"
+#include "hull_locator.hpp"
+#include "point_stream.hpp"
+#include "statistics.hpp"
 
 #include <acd/decompose.hpp>
+#include <acd/diagnosis.hpp>
+#include <acd/inside.hpp>
 #include <acd/io.hpp>
 
 #include <CLI/CLI.hpp>
@@ -29,12 +36,15 @@
 #include <filesystem>
 #include <fstream>
 #include <numeric>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 using acd::Vec3;
+using pointloc::HullLocator;
+using pointloc::PointStream;
 
 namespace {
 
@@ -45,171 +55,29 @@ constexpr std::uint64_t kBlock = 1u << 16;  // points per block (fixed: results 
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-// ---------------------------------------------------------------- random points
-
-
-/// Point i, uniform in [lo, hi]: depends only on (seed, i).
-struct PointStream {
-  std::uint64_t key;
-  Vec3 lo, size;
-  Vec3 operator()(std::uint64_t i) const {
-    const std::uint64_t base = key ^ acd::mix64(i);
-    const double u = acd::unitInterval(acd::mix64(base + 0x632BE59BD9B4E019ull));
-    const double v = acd::unitInterval(acd::mix64(base + 0x8CB92BA72F3D8DD7ull));
-    const double w = acd::unitInterval(acd::mix64(base + 0xA0761D6478BD642Full));
-    return {lo.x() + u * size.x(), lo.y() + v * size.y(), lo.z() + w * size.z()};
-  }
-};
-
-// ---------------------------------------------------------------- hulls as half-spaces
-
-/// All hulls' planes in one flat array; hull h owns planes [first[h], first[h + 1]).
-struct HullSet {
-  struct Plane {
-    double nx, ny, nz, d;  // inside iff n.x <= d + slack
-  };
-  std::vector<Plane> planes;
-  std::vector<int> first{0};
-  std::vector<Vec3> lo, hi;
-  double slack = 0.0;
-
-  int size() const { return static_cast<int>(lo.size()); }
-
-  void add(const acd::TriMesh& hull) {
-    if (hull.faces.empty()) return;
-    Vec3 l = hull.vertices[hull.faces[0][0]], h = l;
-    const std::size_t start = planes.size();
-    for (const acd::Face& f : hull.faces) {
-      const Vec3 &a = hull.vertices[f[0]], &b = hull.vertices[f[1]], &c = hull.vertices[f[2]];
-      l = l.cwiseMin(a).cwiseMin(b).cwiseMin(c);
-      h = h.cwiseMax(a).cwiseMax(b).cwiseMax(c);
-      Vec3 n = (b - a).cross(c - a);
-      const double len = n.norm();
-      if (!(len > 0)) continue;
-      n /= len;
-      // Support value over all hull vertices, not the face's own plane: a sliver triangle's
-      // rounded normal can point anywhere, and its plane must still keep the whole hull inside.
-      double d = n.dot(a);
-      for (const Vec3& v : hull.vertices) d = std::max(d, n.dot(v));
-      bool duplicate = false;  // coplanar triangles of one facet give one plane
-      for (std::size_t k = start; k < planes.size() && !duplicate; ++k) {
-        const Plane& p = planes[k];
-        duplicate = p.nx * n.x() + p.ny * n.y() + p.nz * n.z() > 1 - 1e-12 && std::abs(p.d - d) <= slack;
-      }
-      if (!duplicate) planes.push_back({n.x(), n.y(), n.z(), d});
-    }
-    lo.push_back(l);
-    hi.push_back(h);
-    first.push_back(static_cast<int>(planes.size()));
-  }
-
-  // ---- uniform grid over the box: per cell, either a hull that holds the whole cell, or the
-  // hulls that may hold part of it (bounding boxes overlap and no half-space excludes the cell).
-  Vec3 gridLo = Vec3::Zero(), gridScale = Vec3::Ones();
-  int gx = 1, gy = 1, gz = 1;
-  std::vector<int> cellFull;              // hull holding the whole cell, or -1
-  std::vector<std::uint32_t> cellStart;   // CSR offsets into cellHulls
-  std::vector<int> cellHulls;
-
-  void buildGrid(const acd::Box3& box, std::size_t targetCells, tbb::task_arena& arena) {
-    const Vec3 extent = box.size().cwiseMax(Vec3::Constant(1e-300));
-    const double unit = std::cbrt(extent.prod() / static_cast<double>(targetCells));
-    gx = std::clamp(static_cast<int>(std::ceil(extent.x() / unit)), 1, 1024);
-    gy = std::clamp(static_cast<int>(std::ceil(extent.y() / unit)), 1, 1024);
-    gz = std::clamp(static_cast<int>(std::ceil(extent.z() / unit)), 1, 1024);
-    gridLo = box.lo;
-    gridScale = Vec3(gx / extent.x(), gy / extent.y(), gz / extent.z());
-    const Vec3 cell(extent.x() / gx, extent.y() / gy, extent.z() / gz);
-    const double margin = 1e-9 * extent.norm();  // covers rounding of the cell index
-    const std::size_t cells = static_cast<std::size_t>(gx) * gy * gz;
-    cellFull.assign(cells, -1);
-    std::vector<std::vector<int>> lists(cells);
+/// Runs body(i0, i1) -> count over fixed blocks of [0, n) and returns the sum, combined in block
+/// order. With `progress`, the blocks go in about 100 rounds, each followed by a percentage.
+template <class Body>
+std::uint64_t overBlocks(tbb::task_arena& arena, std::uint64_t n, const char* progress, const Body& body) {
+  const std::uint64_t blocks = (n + kBlock - 1) / kBlock;
+  std::vector<std::uint64_t> counts(blocks, 0);
+  const std::uint64_t round = progress ? std::max<std::uint64_t>(1, blocks / 100) : std::max<std::uint64_t>(blocks, 1);
+  for (std::uint64_t b0 = 0; b0 < blocks; b0 += round) {
+    const std::uint64_t b1 = std::min(blocks, b0 + round);
     arena.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cells), [&](const tbb::blocked_range<std::size_t>& r) {
-        for (std::size_t c = r.begin(); c != r.end(); ++c) {
-          const int ix = static_cast<int>(c % gx), iy = static_cast<int>((c / gx) % gy),
-                    iz = static_cast<int>(c / (static_cast<std::size_t>(gx) * gy));
-          const Vec3 clo = box.lo + Vec3(ix * cell.x(), iy * cell.y(), iz * cell.z()) - Vec3::Constant(margin);
-          const Vec3 chi = box.lo + Vec3((ix + 1) * cell.x(), (iy + 1) * cell.y(), (iz + 1) * cell.z()) +
-                           Vec3::Constant(margin);
-          for (int h = 0; h < size(); ++h) {
-            if ((chi.array() < lo[h].array()).any() || (clo.array() > hi[h].array()).any()) continue;
-            bool excluded = false, full = true;
-            for (int k = first[h]; k < first[h + 1] && !excluded; ++k) {
-              const Plane& q = planes[k];
-              const double mn = (q.nx > 0 ? q.nx * clo.x() : q.nx * chi.x()) + (q.ny > 0 ? q.ny * clo.y() : q.ny * chi.y()) +
-                                (q.nz > 0 ? q.nz * clo.z() : q.nz * chi.z());
-              const double mx = (q.nx > 0 ? q.nx * chi.x() : q.nx * clo.x()) + (q.ny > 0 ? q.ny * chi.y() : q.ny * clo.y()) +
-                                (q.nz > 0 ? q.nz * chi.z() : q.nz * clo.z());
-              excluded = mn > q.d + 2 * slack;
-              full = full && mx <= q.d;
-            }
-            if (excluded) continue;
-            if (full) {
-              cellFull[c] = h;
-              lists[c].clear();
-              break;
-            }
-            lists[c].push_back(h);
-          }
-        }
-      });
+      tbb::parallel_for(
+          tbb::blocked_range<std::uint64_t>(b0, b1, 1),
+          [&](const tbb::blocked_range<std::uint64_t>& r) {
+            for (std::uint64_t b = r.begin(); b != r.end(); ++b)
+              counts[b] = body(b * kBlock, std::min(n, (b + 1) * kBlock));
+          },
+          tbb::simple_partitioner());
     });
-    cellStart.assign(cells + 1, 0);
-    for (std::size_t c = 0; c < cells; ++c) cellStart[c + 1] = cellStart[c] + static_cast<std::uint32_t>(lists[c].size());
-    cellHulls.resize(cellStart[cells]);
-    for (std::size_t c = 0; c < cells; ++c) std::copy(lists[c].begin(), lists[c].end(), cellHulls.begin() + cellStart[c]);
+    if (progress) std::fprintf(stderr, "\r%s: %3.0f%%", progress, 100.0 * static_cast<double>(b1) / blocks);
   }
-
-  bool inHull(int h, const Vec3& p) const {
-    for (int k = first[h], e = first[h + 1]; k < e; ++k) {
-      const Plane& q = planes[k];
-      if (q.nx * p.x() + q.ny * p.y() + q.nz * p.z() > q.d + slack) return false;
-    }
-    return true;
-  }
-
-  /// A hull that contains p, or -1, through the grid (points outside the grid's box: -1).
-  int locateIndexed(const Vec3& p) const {
-    const double fx = (p.x() - gridLo.x()) * gridScale.x(), fy = (p.y() - gridLo.y()) * gridScale.y(),
-                 fz = (p.z() - gridLo.z()) * gridScale.z();
-    if (!(fx >= 0 && fy >= 0 && fz >= 0 && fx <= gx && fy <= gy && fz <= gz)) return locate(p);
-    const int ix = std::min(static_cast<int>(fx), gx - 1), iy = std::min(static_cast<int>(fy), gy - 1),
-              iz = std::min(static_cast<int>(fz), gz - 1);
-    const std::size_t c = (static_cast<std::size_t>(iz) * gy + iy) * gx + ix;
-    if (cellFull[c] >= 0) return cellFull[c];
-    for (std::uint32_t k = cellStart[c], e = cellStart[c + 1]; k < e; ++k) {
-      const int h = cellHulls[k];
-      if (p.x() < lo[h].x() || p.x() > hi[h].x() || p.y() < lo[h].y() || p.y() > hi[h].y() || p.z() < lo[h].z() ||
-          p.z() > hi[h].z())
-        continue;
-      if (inHull(h, p)) return h;
-    }
-    return -1;
-  }
-
-  /// Index of the first hull that contains p, or -1 (every hull's box tested).
-  int locate(const Vec3& p) const {
-    const int n = size();
-    for (int h = 0; h < n; ++h) {
-      if (p.x() < lo[h].x() || p.x() > hi[h].x() || p.y() < lo[h].y() || p.y() > hi[h].y() || p.z() < lo[h].z() ||
-          p.z() > hi[h].z())
-        continue;
-      bool in = true;
-      for (int k = first[h], e = first[h + 1]; k < e; ++k) {
-        const Plane& q = planes[k];
-        if (q.nx * p.x() + q.ny * p.y() + q.nz * p.z() > q.d + slack) {
-          in = false;
-          break;
-        }
-      }
-      if (in) return h;
-    }
-    return -1;
-  }
-};
-
-// ---------------------------------------------------------------- parsing
+  if (progress && blocks > 0) std::fprintf(stderr, "\n");
+  return std::accumulate(counts.begin(), counts.end(), std::uint64_t{0});
+}
 
 /// Positive integer written as a double ("1e8" or "100000000"), at most `max`.
 bool parseCount(const std::string& s, double max, bool allowZero, std::uint64_t& out) {
@@ -219,18 +87,6 @@ bool parseCount(const std::string& s, double max, bool allowZero, std::uint64_t&
   if (v != std::floor(v) || v > max || v < 0 || (!allowZero && v == 0)) return false;
   out = static_cast<std::uint64_t>(v);
   return true;
-}
-
-struct Wilson {
-  double lo, hi;
-};
-Wilson wilson(std::uint64_t k, std::uint64_t n) {
-  if (n == 0) return {0.0, 1.0};
-  const double z = 1.959963984540054, nn = static_cast<double>(n), p = static_cast<double>(k) / nn;
-  const double denom = 1 + z * z / nn;
-  const double center = (p + z * z / (2 * nn)) / denom;
-  const double half = z * std::sqrt(p * (1 - p) / nn + z * z / (4 * nn * nn)) / denom;
-  return {k == 0 ? 0.0 : std::max(0.0, center - half), k == n ? 1.0 : std::min(1.0, center + half)};
 }
 
 std::string human(double v) {
@@ -246,6 +102,23 @@ std::string human(double v) {
   return buf;
 }
 
+/// One row of the --compare table: one way of answering "is point i inside?".
+struct Method {
+  std::string name;
+  bool exact = false;           // answers the model's own question exactly
+  double prepareSeconds = 0.0;  // decomposition and index
+  int threads = 1;
+  std::uint64_t points = 0;     // points timed
+  double seconds = 0.0;         // location time for `points`
+  std::uint64_t inside = 0;     // on the first `points`
+  std::optional<std::uint64_t> disagreements;  // with acd::InsideTest on the compare subsample
+  std::string note;             // why the row has no figures
+
+  bool measured() const { return points > 0 && note.empty(); }
+  double rate() const { return seconds > 0 ? static_cast<double>(points) / seconds : 0.0; }
+  double secondsFor(std::uint64_t n) const { return seconds * static_cast<double>(n) / static_cast<double>(points); }
+};
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -253,12 +126,13 @@ int main(int argc, char** argv) {
       "pointloc: locate random points in the union of the convex hulls of an approximate convex\n"
       "decomposition, and compare with the exact point-in-model answer on a subsample."};
   std::string model = "data/meshes/elephant.off";
-  std::string samplesText = "1e8", tauText = "0.02", exactText;
+  std::string samplesText = "1e8", tauText = "0.02", exactText, compareText, dumpPath;
   int threads = 0;
   std::uint64_t seed = 1;
   std::string jsonPath;
-  bool noIndex = false;
-  std::size_t gridCells = 1u << 17;
+  bool noIndex = false, compare = false;
+  std::size_t gridCells = 1u << 18;
+  double ecdTimeLimit = 60.0;
   app.add_option("MODEL", model,
                  "closed mesh (OFF, OBJ, PLY, STL); default data/meshes/elephant.off (relative to the current\n"
                  "directory, else the one in the source tree)");
@@ -269,9 +143,18 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--seed", seed, "seed of the point stream")->capture_default_str();
   app.add_option("--exact-samples", exactText, "points (the first M of the stream) checked exactly; default min(N, 2e6)");
+  app.add_flag("--compare", compare,
+               "also time the same points against the original model (CGAL Side_of_triangle_mesh, 1 and all\n"
+               "threads; acd::InsideTest) and against the solid exact convex decomposition when libacd has one");
+  app.add_option("--compare-samples", compareText, "points (the first K) timed by the exact methods; default min(N, 1e6)");
+  app.add_option("--ecd-time-limit", ecdTimeLimit, "seconds allowed for the exact convex decomposition")
+      ->capture_default_str();
   app.add_option("--json", jsonPath, "write the report as JSON to FILE");
-  app.add_flag("--no-index", noIndex, "test every hull's bounding box for every point (no grid; same counts)");
-  app.add_option("--grid-cells", gridCells, "cells of the grid over the box (about)")->capture_default_str();
+  app.add_option("--dump", dumpPath,
+                 "write the exactly checked points as CSV: x,y,z,hulls,direct,exact (1 = inside; hulls through\n"
+                 "the grid, direct by testing every hull)");
+  app.add_flag("--no-index", noIndex, "test every hull for every point (no grid; same counts)");
+  app.add_option("--grid-cells", gridCells, "cells of the grid over the box (about, <= 2^24)")->capture_default_str();
   app.footer(
       "Exit codes: 0 success; 1 bad command line; 2 unreadable or invalid model; 3 invalid parameter;\n"
       "5 cannot write output; 6 internal error.");
@@ -283,7 +166,7 @@ int main(int argc, char** argv) {
   }
 
   // ---- parameters first: they need no model
-  std::uint64_t samples = 0, exactSamples = 0;
+  std::uint64_t samples = 0, exactSamples = 0, compareSamples = 0;
   if (!parseCount(samplesText, 1e10, false, samples)) {
     std::fprintf(stderr, "pointloc: --samples '%s' is not a positive integer <= 1e10\n", samplesText.c_str());
     return kBadParameter;
@@ -306,6 +189,22 @@ int main(int argc, char** argv) {
   } else {
     exactSamples = std::min(exactSamples, samples);
   }
+  if (compareText.empty()) {
+    compareSamples = std::min<std::uint64_t>(samples, 1000000);
+  } else if (!parseCount(compareText, 1e10, false, compareSamples)) {
+    std::fprintf(stderr, "pointloc: --compare-samples '%s' is not a positive integer\n", compareText.c_str());
+    return kBadParameter;
+  } else {
+    compareSamples = std::min(compareSamples, samples);
+  }
+  if (!(ecdTimeLimit > 0) || !std::isfinite(ecdTimeLimit)) {
+    std::fprintf(stderr, "pointloc: --ecd-time-limit %g must be a positive number of seconds\n", ecdTimeLimit);
+    return kBadParameter;
+  }
+  if (gridCells == 0 || gridCells > (1u << 24)) {
+    std::fprintf(stderr, "pointloc: --grid-cells %zu must be in [1, 16777216]\n", gridCells);
+    return kBadParameter;
+  }
 
   // ---- model
   std::string modelPath = model;
@@ -313,7 +212,20 @@ int main(int argc, char** argv) {
   const auto t0 = Clock::now();
   const acd::ReadResult read = acd::readMesh(modelPath);
   if (!read.status.ok()) {
-    std::fprintf(stderr, "pointloc: model %s: %s\n", modelPath.c_str(), read.status.message.c_str());
+    // The reader's message usually names the file already.
+    if (read.status.message.find(modelPath) != std::string::npos)
+      std::fprintf(stderr, "pointloc: %s\n", read.status.message.c_str());
+    else
+      std::fprintf(stderr, "pointloc: model %s: %s\n", modelPath.c_str(), read.status.message.c_str());
+    return kBadModel;
+  }
+  // The exact answer ("inside the model") is defined only for a closed surface; a decomposition
+  // of a repaired copy would be compared with a question that has no answer.
+  const acd::MeshDiagnosis diagnosis = acd::diagnose(read.mesh);
+  if (diagnosis.boundaryEdges > 0 || diagnosis.nonManifoldEdges > 0) {
+    std::fprintf(stderr, "pointloc: model %s is not a closed surface (%d boundary, %d non-manifold edges): %s\n",
+                 modelPath.c_str(), diagnosis.boundaryEdges, diagnosis.nonManifoldEdges,
+                 "inside and outside are undefined");
     return kBadModel;
   }
   const bool progress = isatty(STDERR_FILENO) != 0;
@@ -338,140 +250,190 @@ int main(int argc, char** argv) {
   }
 
   const acd::Box3 box = acd::boundingBox(read.mesh);
-  HullSet hulls;
-  hulls.slack = 1e-10 * std::max(box.size().norm(), 1e-300);
+  const double boxVolume = box.size().prod();
+  const double slack = 1e-10 * std::max(box.size().norm(), 1e-300);
+  HullLocator hulls(slack);
   std::vector<int> hullComponent;  // hull index -> component index
   int unresolved = 0;
   for (std::size_t c = 0; c < dec.components.size(); ++c) {
     unresolved += dec.components[c].unresolved ? 1 : 0;
-    const int before = hulls.size();
-    hulls.add(dec.components[c].hull);
-    if (hulls.size() > before) hullComponent.push_back(static_cast<int>(c));
+    if (hulls.add(dec.components[c].hull)) hullComponent.push_back(static_cast<int>(c));
   }
-  std::size_t totalPlanes = hulls.planes.size();
 
-  PointStream points{acd::mix64(seed ^ 0x5EED5EED5EED5EEDull), box.lo, box.size()};
-
+  const PointStream points(seed, box);
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   const int usedThreads = arena.max_concurrency();
   const auto tGrid = Clock::now();
-  if (!noIndex) hulls.buildGrid(box, std::clamp<std::size_t>(gridCells, 1, 1u << 24), arena);
-  const double gridSeconds = since(tGrid);
-  auto where = [&](const Vec3& p) { return noIndex ? hulls.locate(p) : hulls.locateIndexed(p); };
+  if (!noIndex) hulls.buildIndex(box, gridCells, arena);
+  const double indexSeconds = since(tGrid);
+  const auto hullInside = [&](const Vec3& p) { return noIndex ? hulls.insideDirect(p) : hulls.inside(p); };
 
   // ---- fast location over all N points
-  const std::uint64_t blocks = (samples + kBlock - 1) / kBlock;
-  std::vector<std::uint64_t> blockInside(blocks, 0);
   const auto tLoc = Clock::now();
-  {
-    const std::uint64_t chunk = progress ? std::max<std::uint64_t>(1, blocks / 100) : blocks;
-    for (std::uint64_t b0 = 0; b0 < blocks; b0 += chunk) {
-      const std::uint64_t b1 = std::min(blocks, b0 + chunk);
-      arena.execute([&] {
-        tbb::parallel_for(
-            tbb::blocked_range<std::uint64_t>(b0, b1, 1),
-            [&](const tbb::blocked_range<std::uint64_t>& r) {
-              for (std::uint64_t b = r.begin(); b != r.end(); ++b) {
-                const std::uint64_t i0 = b * kBlock, i1 = std::min(samples, i0 + kBlock);
-                std::uint64_t in = 0;
-                for (std::uint64_t i = i0; i < i1; ++i) in += where(points(i)) >= 0 ? 1 : 0;
-                blockInside[b] = in;
-              }
-            },
-            tbb::simple_partitioner());
-      });
-      if (progress) std::fprintf(stderr, "\rlocating: %3.0f%%", 100.0 * static_cast<double>(b1) / blocks);
-    }
-    if (progress) std::fprintf(stderr, "\n");
-  }
+  const std::uint64_t inside =
+      overBlocks(arena, samples, progress ? "locating" : nullptr,
+                 [&](std::uint64_t i0, std::uint64_t i1) { return hulls.countInside(points, i0, i1); });
   const double locateSeconds = since(tLoc);
-  const std::uint64_t inside = std::accumulate(blockInside.begin(), blockInside.end(), std::uint64_t{0});
 
-  // ---- exact answer on the first M points
+  // ---- exact answer on the first M points: the exact test alone (timed), then the errors
   const auto tExact = Clock::now();
   const acd::InsideTest exact(read.mesh);
   const double exactBuildSeconds = since(tExact);
-  const std::uint64_t eblocks = (exactSamples + kBlock - 1) / kBlock;
-  const int nh = hulls.size();
-  // Per block: false inside, false outside, exact inside, and false inside per hull.
-  std::vector<std::uint64_t> eFalseIn(eblocks, 0), eFalseOut(eblocks, 0), eInside(eblocks, 0);
-  std::vector<std::vector<std::uint64_t>> eByHull(eblocks);
-  // Exact test alone, timed, for the comparison of rates.
-  std::vector<std::uint64_t> exactOnly(eblocks, 0);
   const auto tExactRun = Clock::now();
-  arena.execute([&] {
-    tbb::parallel_for(
-        tbb::blocked_range<std::uint64_t>(0, eblocks, 1),
-        [&](const tbb::blocked_range<std::uint64_t>& r) {
-          for (std::uint64_t b = r.begin(); b != r.end(); ++b) {
-            const std::uint64_t i0 = b * kBlock, i1 = std::min(exactSamples, i0 + kBlock);
-            std::uint64_t in = 0;
-            for (std::uint64_t i = i0; i < i1; ++i) in += exact.inside(points(i)) ? 1 : 0;
-            exactOnly[b] = in;
-          }
-        },
-        tbb::simple_partitioner());
+  const std::uint64_t exactInside = overBlocks(arena, exactSamples, nullptr, [&](std::uint64_t i0, std::uint64_t i1) {
+    std::uint64_t in = 0;
+    for (std::uint64_t i = i0; i < i1; ++i) in += exact.inside(points(i)) ? 1 : 0;
+    return in;
   });
   const double exactRunSeconds = since(tExactRun);
-  arena.execute([&] {
-    tbb::parallel_for(
-        tbb::blocked_range<std::uint64_t>(0, eblocks, 1),
-        [&](const tbb::blocked_range<std::uint64_t>& r) {
-          for (std::uint64_t b = r.begin(); b != r.end(); ++b) {
-            const std::uint64_t i0 = b * kBlock, i1 = std::min(exactSamples, i0 + kBlock);
-            std::vector<std::uint64_t> byHull(nh, 0);
-            std::uint64_t fi = 0, fo = 0, ei = 0;
-            for (std::uint64_t i = i0; i < i1; ++i) {
-              const Vec3 p = points(i);
-              const int h = where(p);
-              const bool truth = exact.inside(p);
-              ei += truth ? 1 : 0;
-              if (h >= 0 && !truth) {
-                ++fi;
-                ++byHull[h];
-              } else if (h < 0 && truth) {
-                ++fo;
-              }
-            }
-            eFalseIn[b] = fi;
-            eFalseOut[b] = fo;
-            eInside[b] = ei;
-            eByHull[b] = std::move(byHull);
-          }
-        },
-        tbb::simple_partitioner());
+  const int nh = hulls.size();
+  const std::uint64_t eblocks = (exactSamples + kBlock - 1) / kBlock;
+  // Per block: false outside, and the false-inside points of each hull (a point inside several
+  // hulls counts for each: it is excess volume of every one of them).
+  std::vector<std::uint64_t> eFalseOut(eblocks, 0);
+  std::vector<std::vector<std::uint64_t>> eByHull(eblocks);
+  const std::uint64_t falseIn = overBlocks(arena, exactSamples, nullptr, [&](std::uint64_t i0, std::uint64_t i1) {
+    const std::uint64_t b = i0 / kBlock;
+    std::uint64_t fi = 0, fo = 0;
+    for (std::uint64_t i = i0; i < i1; ++i) {
+      const Vec3 p = points(i);
+      const bool claimed = hullInside(p), truth = exact.inside(p);
+      if (claimed && !truth) {
+        ++fi;
+        if (eByHull[b].empty()) eByHull[b].assign(nh, 0);
+        for (int h = 0; h < nh; ++h) eByHull[b][h] += hulls.contains(h, p) ? 1 : 0;
+      } else if (!claimed && truth) {
+        ++fo;
+      }
+    }
+    eFalseOut[b] = fo;
+    return fi;
   });
-  std::uint64_t falseIn = 0, falseOut = 0, exactInside = 0;
+  const std::uint64_t falseOut = std::accumulate(eFalseOut.begin(), eFalseOut.end(), std::uint64_t{0});
   std::vector<std::uint64_t> byHull(nh, 0);
-  for (std::uint64_t b = 0; b < eblocks; ++b) {
-    falseIn += eFalseIn[b];
-    falseOut += eFalseOut[b];
-    exactInside += eInside[b];
-    for (int h = 0; h < nh; ++h) byHull[h] += eByHull[b][h];
-  }
+  for (const auto& v : eByHull)
+    for (std::size_t h = 0; h < v.size(); ++h) byHull[h] += v[h];
   std::vector<int> order(nh);
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return byHull[a] > byHull[b]; });
+
+  if (!dumpPath.empty()) {
+    std::ofstream f(dumpPath);
+    f << "x,y,z,hulls,direct,exact\n";
+    char line[160];
+    for (std::uint64_t i = 0; i < exactSamples && f; ++i) {
+      const Vec3 p = points(i);
+      std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%d,%d,%d\n", p.x(), p.y(), p.z(), hullInside(p) ? 1 : 0,
+                    hulls.insideDirect(p) ? 1 : 0, exact.inside(p) ? 1 : 0);
+      f << line;
+    }
+    if (!f) {
+      std::fprintf(stderr, "pointloc: cannot write %s\n", dumpPath.c_str());
+      return kOutputFailed;
+    }
+  }
+  const double mainSeconds = since(t0);
+
+  // ---- --compare: the same points against the model and its exact decomposition
+  std::vector<Method> methods;
+  pointloc::ExactPieces ecd;
+  std::optional<HullLocator> ecdLocator;
+  if (compare) {
+    const std::uint64_t k = compareSamples;
+    std::vector<std::uint8_t> truth(k), answer(k);
+    overBlocks(arena, k, nullptr, [&](std::uint64_t i0, std::uint64_t i1) {
+      for (std::uint64_t i = i0; i < i1; ++i) truth[i] = exact.inside(points(i)) ? 1 : 0;
+      return std::uint64_t{0};
+    });
+    const auto disagreements = [&] {
+      std::uint64_t d = 0;
+      for (std::uint64_t i = 0; i < k; ++i) d += truth[i] != answer[i] ? 1 : 0;
+      return d;
+    };
+    // Times `test` on the first k points in `arena`, keeping the answers for the check.
+    const auto timeOn = [&](Method m, tbb::task_arena& a, const auto& test) {
+      const auto t = Clock::now();
+      m.inside = overBlocks(a, k, nullptr, [&](std::uint64_t i0, std::uint64_t i1) {
+        std::uint64_t in = 0;
+        for (std::uint64_t i = i0; i < i1; ++i) {
+          answer[i] = test(points(i)) ? 1 : 0;
+          in += answer[i];
+        }
+        return in;
+      });
+      m.seconds = since(t);
+      m.points = k;
+      m.threads = a.max_concurrency();
+      m.disagreements = disagreements();
+      return m;
+    };
+    tbb::task_arena single(1);
+
+    Method acdAll{"ACD hulls (grid)", false, decomposeSeconds + indexSeconds, usedThreads, samples, locateSeconds,
+                  inside};
+    methods.push_back(acdAll);
+    methods.push_back(timeOn({"ACD hulls (grid)", false, decomposeSeconds + indexSeconds}, single, hullInside));
+
+    if (progress) std::fprintf(stderr, "compare: CGAL Side_of_triangle_mesh\n");
+    const pointloc::CgalSideOfMesh cgal(read.mesh);
+    const std::string cgalName = "model: CGAL Side_of_triangle_mesh";
+    if (cgal.ok()) {
+      const auto test = [&](const Vec3& p) { return cgal.inside(p); };
+      methods.push_back(timeOn({cgalName, true, cgal.buildSeconds()}, single, test));
+      methods.push_back(timeOn({cgalName, true, cgal.buildSeconds()}, arena, test));
+    } else {
+      methods.push_back({cgalName, true, 0, 1, 0, 0, 0, std::nullopt, cgal.error()});
+    }
+    methods.push_back(timeOn({"model: acd::InsideTest", true, exactBuildSeconds}, single,
+                             [&](const Vec3& p) { return exact.inside(p); }));
+    methods.push_back(timeOn({"model: acd::InsideTest", true, exactBuildSeconds}, arena,
+                             [&](const Vec3& p) { return exact.inside(p); }));
+
+    if (progress) std::fprintf(stderr, "compare: exact convex decomposition (limit %g s)\n", ecdTimeLimit);
+    ecd = pointloc::exactPieces(read.mesh, ecdTimeLimit);
+    const std::string ecdName = "ECD pieces (grid)";
+    if (ecd.finished) {
+      ecdLocator.emplace(slack);
+      for (const acd::TriMesh& piece : ecd.pieces) ecdLocator->add(piece);
+      const auto tIndex = Clock::now();
+      ecdLocator->buildIndex(box, gridCells, arena);
+      const double ecdIndexSeconds = since(tIndex);
+      const auto test = [&](const Vec3& p) { return ecdLocator->inside(p); };
+      methods.push_back(timeOn({ecdName, true, ecd.seconds + ecdIndexSeconds}, single, test));
+      Method all{ecdName, true, ecd.seconds + ecdIndexSeconds, usedThreads, samples};
+      const auto t = Clock::now();
+      all.inside = overBlocks(arena, samples, progress ? "locating in the ECD" : nullptr,
+                              [&](std::uint64_t i0, std::uint64_t i1) { return ecdLocator->countInside(points, i0, i1); });
+      all.seconds = since(t);
+      methods.push_back(all);
+    } else {
+      methods.push_back({ecdName, true, ecd.seconds, 0, 0, 0, 0, std::nullopt,
+                         ecd.available ? "unfinished: " + ecd.note : ecd.note});
+    }
+  }
   const double totalSeconds = since(t0);
 
   // ---- report
   const double pps = locateSeconds > 0 ? static_cast<double>(samples) / locateSeconds : 0.0;
   const double exactPps = exactRunSeconds > 0 ? static_cast<double>(exactSamples) / exactRunSeconds : 0.0;
   const double m = static_cast<double>(std::max<std::uint64_t>(exactSamples, 1));
-  const Wilson ciIn = wilson(falseIn, exactSamples), ciOut = wilson(falseOut, exactSamples),
-               ciAll = wilson(falseIn + falseOut, exactSamples);
+  const pointloc::Interval ciIn = pointloc::wilson95(falseIn, exactSamples),
+                           ciOut = pointloc::wilson95(falseOut, exactSamples),
+                           ciAll = pointloc::wilson95(falseIn + falseOut, exactSamples);
 
   std::printf("pointloc  %s\n", modelPath.c_str());
   std::printf("  tau                    %g\n", tau);
-  std::printf("  components             %zu (%d unresolved), %zu half-spaces\n", dec.components.size(), unresolved,
-              totalPlanes);
+  std::printf("  components             %zu (%d unresolved), %zu half-spaces (6 of them the box, per hull)\n",
+              dec.components.size(), unresolved, hulls.planeCount());
   std::printf("  threads                %d\n", usedThreads);
   std::printf("  seed                   %llu\n", static_cast<unsigned long long>(seed));
   std::printf("  decomposition time     %.3f s\n", decomposeSeconds);
   if (!noIndex)
-    std::printf("  hull grid              %dx%dx%d, %.3f s, %.2f hull candidates per cell\n", hulls.gx, hulls.gy, hulls.gz,
-                gridSeconds, static_cast<double>(hulls.cellHulls.size()) /
-                                 std::max<double>(1.0, static_cast<double>(std::count(hulls.cellFull.begin(), hulls.cellFull.end(), -1))));
+    std::printf("  hull grid              %dx%dx%d, %.3f s, %.1f%% cells inside, %.1f%% boundary (%.1f planes each), %.1f MB\n",
+                hulls.gridX(), hulls.gridY(), hulls.gridZ(), indexSeconds,
+                100.0 * static_cast<double>(hulls.insideCells()) / static_cast<double>(hulls.cellCount()),
+                100.0 * static_cast<double>(hulls.boundaryCells()) / static_cast<double>(hulls.cellCount()),
+                hulls.planesPerBoundaryCell(), static_cast<double>(hulls.indexBytes()) / 1e6);
   std::printf("  points                 %llu\n", static_cast<unsigned long long>(samples));
   std::printf("  location time          %.3f s\n", locateSeconds);
   std::printf("  points per second      %s\n", human(pps).c_str());
@@ -484,16 +446,65 @@ int main(int argc, char** argv) {
               static_cast<unsigned long long>(falseIn), falseIn / m, ciIn.lo, ciIn.hi);
   std::printf("  false outside          %llu  rate %.3e  95%% CI [%.3e, %.3e]\n",
               static_cast<unsigned long long>(falseOut), falseOut / m, ciOut.lo, ciOut.hi);
-  std::printf("  error rate             %.3e  95%% CI [%.3e, %.3e]\n", (falseIn + falseOut) / m, ciAll.lo, ciAll.hi);
-  std::printf("  top components by false inside:\n");
+  std::printf("  error rate             %.3e  95%% CI [%.3e, %.3e]  (of all points; %.3e of the points truly inside)\n",
+              (falseIn + falseOut) / m, ciAll.lo, ciAll.hi,
+              exactInside ? static_cast<double>(falseIn + falseOut) / static_cast<double>(exactInside) : 0.0);
+  std::printf("  top components by false-inside volume (points in their hull, volume estimate, share):\n");
   json top = json::array();
-  for (int k = 0; k < std::min(nh, 5); ++k) {
-    const int h = order[k];
+  for (int t = 0; t < std::min(nh, 5); ++t) {
+    const int h = order[t];
     if (byHull[h] == 0) break;
-    std::printf("    component %-5d %llu\n", hullComponent[h], static_cast<unsigned long long>(byHull[h]));
-    top.push_back({{"component", hullComponent[h]}, {"false_inside", byHull[h]}});
+    const double volume = static_cast<double>(byHull[h]) / m * boxVolume;
+    const double share = static_cast<double>(byHull[h]) / static_cast<double>(std::max<std::uint64_t>(falseIn, 1));
+    std::printf("    component %-5d %8llu  %.4g  %.1f%%\n", hullComponent[h], static_cast<unsigned long long>(byHull[h]),
+                volume, 100.0 * share);
+    top.push_back({{"component", hullComponent[h]}, {"false_inside", byHull[h]}, {"volume", volume}, {"share", share}});
   }
-  std::printf("  total time             %.3f s\n", totalSeconds);
+  std::printf("  total time             %.3f s%s\n", mainSeconds, compare ? " (without --compare)" : "");
+
+  json compareJson = json::array();
+  double vsCgal1 = 0.0, vsCgalAll = 0.0;
+  if (compare) {
+    std::printf("\ncompare (same points; %llu for the exact methods; time for N extrapolated where fewer were timed)\n",
+                static_cast<unsigned long long>(compareSamples));
+    std::printf("  %-36s %7s %9s %7s %11s %12s %11s %10s %10s\n", "method", "threads", "prepare s", "points",
+                "points/s", "N points s", "total s", "inside", "wrong");
+    for (const Method& r : methods) {
+      if (!r.measured()) {
+        std::printf("  %-36s %s\n", r.name.c_str(), r.note.c_str());
+        compareJson.push_back({{"method", r.name}, {"exact", r.exact}, {"available", false}, {"note", r.note}});
+        continue;
+      }
+      const double forN = r.secondsFor(samples);
+      std::printf("  %-36s %7d %9.3f %7s %11s %11.3f%s %11.3f %10llu %10s\n", r.name.c_str(), r.threads,
+                  r.prepareSeconds, human(static_cast<double>(r.points)).c_str(), human(r.rate()).c_str(), forN,
+                  r.points < samples ? "*" : " ", r.prepareSeconds + forN, static_cast<unsigned long long>(r.inside),
+                  r.disagreements ? std::to_string(*r.disagreements).c_str() : "-");
+      compareJson.push_back({{"method", r.name},
+                             {"exact", r.exact},
+                             {"available", true},
+                             {"threads", r.threads},
+                             {"prepare_seconds", r.prepareSeconds},
+                             {"points", r.points},
+                             {"seconds", r.seconds},
+                             {"points_per_second", r.rate()},
+                             {"seconds_for_all_points", forN},
+                             {"extrapolated", r.points < samples},
+                             {"total_seconds", r.prepareSeconds + forN},
+                             {"points_inside", r.inside},
+                             {"disagreements_with_exact", r.disagreements ? json(*r.disagreements) : json(nullptr)}});
+      if (r.name.rfind("model: CGAL", 0) == 0) (r.threads == 1 ? vsCgal1 : vsCgalAll) = pps / r.rate();
+    }
+    std::printf("  (* extrapolated from the points timed; 'wrong' = answers that differ from acd::InsideTest on the\n"
+                "   first %llu points; 'prepare' = decomposition or AABB tree, and the grid)\n",
+                static_cast<unsigned long long>(compareSamples));
+    if (vsCgal1 > 0)
+      std::printf("  ACD hulls, %d threads, are %.1fx the rate of CGAL on 1 thread and %.1fx CGAL on %d threads\n",
+                  usedThreads, vsCgal1, vsCgalAll, usedThreads);
+    if (ecd.available)
+      std::printf("  exact convex decomposition: %zu pieces, %.3f s, %s%s%s\n", ecd.pieceCount, ecd.seconds,
+                  ecd.finished ? "finished" : "unfinished", ecd.note.empty() ? "" : ": ", ecd.note.c_str());
+  }
 
   if (!jsonPath.empty()) {
     json j;
@@ -503,15 +514,23 @@ int main(int argc, char** argv) {
     j["threads"] = usedThreads;
     j["components"] = dec.components.size();
     j["unresolved_components"] = unresolved;
-    j["half_spaces"] = totalPlanes;
+    j["half_spaces"] = hulls.planeCount();
     j["samples"] = samples;
     j["points_inside"] = inside;
+    j["box_volume"] = boxVolume;
     j["decomposition_seconds"] = decomposeSeconds;
     j["location_seconds"] = locateSeconds;
-    j["index"] = noIndex ? json(nullptr) : json{{"cells", {hulls.gx, hulls.gy, hulls.gz}}, {"seconds", gridSeconds}};
-    j["total_seconds"] = totalSeconds;
+    j["index"] = noIndex ? json(nullptr)
+                         : json{{"cells", {hulls.gridX(), hulls.gridY(), hulls.gridZ()}},
+                                {"seconds", indexSeconds},
+                                {"inside_cells", hulls.insideCells()},
+                                {"boundary_cells", hulls.boundaryCells()},
+                                {"planes_per_boundary_cell", hulls.planesPerBoundaryCell()},
+                                {"bytes", hulls.indexBytes()}};
+    j["total_seconds"] = mainSeconds;
     j["points_per_second"] = pps;
-    j["exact"] = {{"samples", exactSamples},
+    j["exact"] = {{"method", "acd::InsideTest"},
+                  {"samples", exactSamples},
                   {"points_inside", exactInside},
                   {"seconds", exactRunSeconds},
                   {"index_seconds", exactBuildSeconds},
@@ -524,7 +543,23 @@ int main(int argc, char** argv) {
                   {"false_outside_ci95", {ciOut.lo, ciOut.hi}},
                   {"error_rate", (falseIn + falseOut) / m},
                   {"error_rate_ci95", {ciAll.lo, ciAll.hi}},
+                  {"error_rate_of_inside",
+                   exactInside ? static_cast<double>(falseIn + falseOut) / static_cast<double>(exactInside) : 0.0},
                   {"top_false_inside", top}};
+    if (compare) {
+      j["compare"] = {{"samples", compareSamples},
+                      {"methods", compareJson},
+                      {"speedup_vs_cgal_1_thread", vsCgal1},
+                      {"speedup_vs_cgal_same_threads", vsCgalAll},
+                      {"ecd",
+                       {{"available", ecd.available},
+                        {"finished", ecd.finished},
+                        {"pieces", ecd.pieceCount},
+                        {"seconds", ecd.seconds},
+                        {"time_limit_seconds", ecdTimeLimit},
+                        {"note", ecd.note}}}};
+      j["compare_seconds"] = totalSeconds - mainSeconds;
+    }
     std::ofstream f(jsonPath);
     f << j.dump(2) << "\n";
     if (!f) {

@@ -1,0 +1,37 @@
+#include "exact_pieces.hpp"
+
+#if __has_include(<acd/exact_decomposition.hpp>)
+#include <acd/exact_decomposition.hpp>
+#define POINTLOC_HAVE_ECD 1
+#endif
+
+namespace pointloc {
+
+#ifdef POINTLOC_HAVE_ECD
+
+ExactPieces exactPieces(const acd::TriMesh& model, double timeLimitSeconds) {
+  ExactPieces out;
+  out.available = true;
+  acd::ExactOptions options;
+  options.timeLimitSeconds = timeLimitSeconds;
+  acd::ExactDecomposition ecd = acd::exactSolidDecomposition(model, options);
+  out.seconds = ecd.seconds;
+  out.pieceCount = ecd.pieceCount;
+  // Capped pieces (maxPieces) would leave holes in the union: only a complete set is located.
+  out.finished = ecd.status.ok() && ecd.finished && ecd.pieces.size() == ecd.pieceCount;
+  out.note = !ecd.status.ok() ? ecd.status.message : ecd.note;
+  if (out.finished) out.pieces = std::move(ecd.pieces);
+  return out;
+}
+
+#else
+
+ExactPieces exactPieces(const acd::TriMesh&, double) {
+  ExactPieces out;
+  out.note = "not available: this libacd has no solid exact convex decomposition";
+  return out;
+}
+
+#endif
+
+}  // namespace pointloc

@@ -1,0 +1,163 @@
+#include "hull_locator.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+
+namespace pointloc {
+
+bool HullLocator::add(const acd::TriMesh& convex) {
+  std::vector<Plane> facets;
+  Vec3 lo = Vec3::Constant(INFINITY), hi = -lo;
+  for (const Vec3& v : convex.vertices) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  for (const acd::Face& f : convex.faces) {
+    const Vec3 &a = convex.vertices[f[0]], &b = convex.vertices[f[1]], &c = convex.vertices[f[2]];
+    Vec3 n = (b - a).cross(c - a);
+    const double len = n.norm();
+    if (!(len > 0)) continue;
+    n /= len;
+    double d = n.dot(a);
+    for (const Vec3& v : convex.vertices) d = std::max(d, n.dot(v));
+    bool duplicate = false;  // coplanar triangles of one facet give one plane
+    for (const Plane& p : facets)
+      if (p.nx * n.x() + p.ny * n.y() + p.nz * n.z() > 1 - 1e-12 && std::abs(p.d - d) <= slack_) {
+        duplicate = true;
+        break;
+      }
+    if (!duplicate) facets.push_back({n.x(), n.y(), n.z(), d});
+  }
+  if (facets.empty()) return false;
+  // The box as six planes, tested first: they reject most points at once, and the scan and
+  // the grid then test exactly the same set.
+  planes_.push_back({-1, 0, 0, -lo.x()});
+  planes_.push_back({1, 0, 0, hi.x()});
+  planes_.push_back({0, -1, 0, -lo.y()});
+  planes_.push_back({0, 1, 0, hi.y()});
+  planes_.push_back({0, 0, -1, -lo.z()});
+  planes_.push_back({0, 0, 1, hi.z()});
+  planes_.insert(planes_.end(), facets.begin(), facets.end());
+  first_.push_back(static_cast<int>(planes_.size()));
+  indexed_ = false;
+  return true;
+}
+
+bool HullLocator::contains(int h, const Vec3& p) const {
+  for (int k = first_[h], e = first_[h + 1]; k < e; ++k) {
+    const Plane& q = planes_[k];
+    if (q.nx * p.x() + q.ny * p.y() + q.nz * p.z() > q.d + slack_) return false;
+  }
+  return true;
+}
+
+int HullLocator::firstContaining(const Vec3& p) const {
+  for (int h = 0, n = size(); h < n; ++h)
+    if (contains(h, p)) return h;
+  return -1;
+}
+
+void HullLocator::buildIndex(const acd::Box3& box, std::size_t targetCells, tbb::task_arena& arena) {
+  const Vec3 extent = box.size().cwiseMax(Vec3::Constant(1e-300));
+  const double unit = std::cbrt(extent.prod() / static_cast<double>(std::max<std::size_t>(targetCells, 1)));
+  gx_ = std::clamp(static_cast<int>(std::ceil(extent.x() / unit)), 1, 2048);
+  gy_ = std::clamp(static_cast<int>(std::ceil(extent.y() / unit)), 1, 2048);
+  gz_ = std::clamp(static_cast<int>(std::ceil(extent.z() / unit)), 1, 2048);
+  gridLo_ = box.lo;
+  gridScale_ = Vec3(gx_ / extent.x(), gy_ / extent.y(), gz_ / extent.z());
+  const Vec3 cell(extent.x() / gx_, extent.y() / gy_, extent.z() / gz_);
+  // Rounding allowances: the cell a point lands in (index arithmetic) and the dot products.
+  const double scale = std::max(box.lo.cwiseAbs().maxCoeff(), box.hi.cwiseAbs().maxCoeff()) + extent.norm();
+  const double margin = 1e-9 * extent.norm() + 1e-13 * scale;
+  const double tol = 1e-12 * scale;
+
+  const std::size_t slab = static_cast<std::size_t>(gx_) * gy_;
+  cellCode_.assign(slab * gz_, kOutside);
+  struct Slab {
+    std::vector<std::uint32_t> boundaryRuns, runPlanes;  // local offsets, closed at the end
+    std::vector<Plane> planes;
+    std::size_t inside = 0;
+  };
+  std::vector<Slab> slabs(gz_);
+  const int nh = size();
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<int>(0, gz_), [&](const tbb::blocked_range<int>& r) {
+      std::vector<std::uint32_t> crossing;
+      for (int iz = r.begin(); iz != r.end(); ++iz) {
+        Slab& s = slabs[iz];
+        for (int iy = 0; iy < gy_; ++iy)
+          for (int ix = 0; ix < gx_; ++ix) {
+            const Vec3 clo = box.lo + Vec3(ix * cell.x(), iy * cell.y(), iz * cell.z()) - Vec3::Constant(margin);
+            const Vec3 chi =
+                box.lo + Vec3((ix + 1) * cell.x(), (iy + 1) * cell.y(), (iz + 1) * cell.z()) + Vec3::Constant(margin);
+            const std::size_t runsBefore = s.runPlanes.size(), planesBefore = s.planes.size();
+            bool full = false;
+            for (int h = 0; h < nh && !full; ++h) {
+              bool excluded = false;
+              crossing.clear();
+              for (int k = first_[h]; k < first_[h + 1] && !excluded; ++k) {
+                const Plane& q = planes_[k];
+                const double mn = (q.nx > 0 ? q.nx * clo.x() : q.nx * chi.x()) +
+                                  (q.ny > 0 ? q.ny * clo.y() : q.ny * chi.y()) +
+                                  (q.nz > 0 ? q.nz * clo.z() : q.nz * chi.z());
+                const double mx = (q.nx > 0 ? q.nx * chi.x() : q.nx * clo.x()) +
+                                  (q.ny > 0 ? q.ny * chi.y() : q.ny * clo.y()) +
+                                  (q.nz > 0 ? q.nz * chi.z() : q.nz * clo.z());
+                if (mn - tol > q.d + slack_)
+                  excluded = true;  // no point of the cell passes this plane
+                else if (mx + tol > q.d + slack_)
+                  crossing.push_back(static_cast<std::uint32_t>(k));  // may reject some point of the cell
+              }
+              if (excluded) continue;
+              if (crossing.empty()) {
+                full = true;  // the cell lies in polyhedron h
+                break;
+              }
+              s.runPlanes.push_back(static_cast<std::uint32_t>(s.planes.size()));
+              for (std::uint32_t k : crossing) s.planes.push_back(planes_[k]);
+            }
+            const std::size_t c = static_cast<std::size_t>(iz) * slab + static_cast<std::size_t>(iy) * gx_ + ix;
+            if (full) {
+              s.runPlanes.resize(runsBefore);
+              s.planes.resize(planesBefore);
+              cellCode_[c] = kInside;
+              ++s.inside;
+            } else if (s.runPlanes.size() > runsBefore) {
+              cellCode_[c] = kBoundary + static_cast<std::uint32_t>(s.boundaryRuns.size());  // local for now
+              s.boundaryRuns.push_back(static_cast<std::uint32_t>(runsBefore));
+            }
+          }
+      }
+    });
+  });
+  // Concatenate the slabs in order: the layout never depends on the threads.
+  boundaryRuns_.clear();
+  runPlanes_.clear();
+  cellPlanes_.clear();
+  insideCells_ = 0;
+  std::vector<std::uint32_t> boundaryOffset(gz_);
+  for (int iz = 0; iz < gz_; ++iz) {
+    const Slab& s = slabs[iz];
+    boundaryOffset[iz] = static_cast<std::uint32_t>(boundaryRuns_.size());
+    const auto runOffset = static_cast<std::uint32_t>(runPlanes_.size());
+    const auto planeOffset = static_cast<std::uint32_t>(cellPlanes_.size());
+    for (std::uint32_t r : s.boundaryRuns) boundaryRuns_.push_back(r + runOffset);
+    for (std::uint32_t k : s.runPlanes) runPlanes_.push_back(k + planeOffset);
+    cellPlanes_.insert(cellPlanes_.end(), s.planes.begin(), s.planes.end());
+    insideCells_ += s.inside;
+  }
+  boundaryRuns_.push_back(static_cast<std::uint32_t>(runPlanes_.size()));
+  runPlanes_.push_back(static_cast<std::uint32_t>(cellPlanes_.size()));
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<int>(0, gz_), [&](const tbb::blocked_range<int>& r) {
+      for (int iz = r.begin(); iz != r.end(); ++iz)
+        for (std::size_t c = iz * slab, e = c + slab; c < e; ++c)
+          if (cellCode_[c] >= kBoundary) cellCode_[c] += boundaryOffset[iz];
+    });
+  });
+  indexed_ = true;
+}
+
+}  // namespace pointloc
