@@ -2,6 +2,8 @@
 //   acd decompose MODEL [-t TAU] ... -o OUTDIR   components, hulls.obj, report.json, summary table
 //   acd info MODEL                              mesh diagnosis
 //   acd evaluate MODEL HULLS.obj                how well any set of hulls approximates the model
+//   acd decompose MODEL --exact [--surface]     exact convex decomposition (exact.cpp)
+//   acd table [--models ...]                    the paper's Table 1 and Figures 18-19 (table.cpp)
 // Exit codes are listed in exitCodes() and in --help.
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
@@ -9,6 +11,8 @@
 #include <acd/io.hpp>
 
 #include <CLI/CLI.hpp>
+#include "exact.hpp"
+#include "table.hpp"
 #include <nlohmann/json.hpp>
 
 #include <unistd.h>
@@ -36,7 +40,7 @@ enum Exit : int {
 
 const char* exitCodes() {
   return "Exit codes: 0 success; 1 bad command line; 2 unreadable or invalid model; 3 invalid parameter;\n"
-         "4 some component still exceeds tau; 5 cannot write output; 6 internal error.";
+         "4 some component still exceeds tau (--exact: a cap stopped it); 5 cannot write output; 6 internal error.";
 }
 
 int exitFor(const acd::Status& s) {
@@ -336,6 +340,10 @@ int main(int argc, char** argv) {
   eval->add_option("--threads", eo.threads, "Worker threads, 0 = all cores")->capture_default_str();
   eval->add_flag("--json", evalJson, "Print JSON instead of a table");
 
+  // Keep after every other decompose option: --exact adds --surface if no one else has.
+  acdcli::addExactOptions(*dec);
+  CLI::App* table = acdcli::addTableCommand(app);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -343,7 +351,9 @@ int main(int argc, char** argv) {
     return code == 0 ? kOk : kUsage;
   }
   try {
+    if (*dec && acdcli::exactRequested(*dec)) return acdcli::runExact(*dec, da.model, da.out, da.quiet);
     if (*dec) return runDecompose(da);
+    if (*table) return acdcli::runTable();
     if (*info) return runInfo(infoModel);
     if (*eval) {
       if (eo.volumeSamples <= 0 || eo.surfaceSamples <= 0)

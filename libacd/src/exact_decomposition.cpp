@@ -18,6 +18,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdint>
@@ -243,6 +244,10 @@ const char* stageName(char stage) {
   }
 }
 
+std::string where(const WorkerState& st, std::size_t solids) {
+  return std::string(stageName(st.stage)) + " solid " + std::to_string(st.solid + 1) + " of " + std::to_string(solids);
+}
+
 std::string seconds(double s) {
   char b[32];
   std::snprintf(b, sizeof b, "%g", s);
@@ -312,8 +317,10 @@ ExactDecomposition exactSolidDecomposition(const TriMesh& closedMesh, const Exac
       }
       wait = static_cast<int>(left * 1000.0) + 1;
     }
+    if (options.progress) wait = wait < 0 ? 1000 : std::min(wait, 1000);
     pollfd p{fds[0], POLLIN, 0};
     const int r = ::poll(&p, 1, wait);
+    if (options.progress) options.progress(where(st, out.solids), elapsed());
     if (r < 0 && errno == EINTR) continue;
     if (r == 0) continue;  // the deadline is checked at the top
     const ssize_t n = ::read(fds[0], chunk.data(), chunk.size());
@@ -345,19 +352,18 @@ ExactDecomposition exactSolidDecomposition(const TriMesh& closedMesh, const Exac
   out.pieceCount = st.pieceCount;
   out.finished = st.solidsDone == out.solids && !timedOut && !malformed && st.error.empty();
   out.unfinishedSolids = out.solids - st.solidsDone;
-  const std::string where = std::string(stageName(st.stage)) + " solid " + std::to_string(st.solid + 1) + " of " +
-                            std::to_string(out.solids);
+  const std::string stopped = where(st, out.solids);
   if (timedOut)
-    out.note = "not finished within " + seconds(options.timeLimitSeconds) + " s: stopped while " + where + " (" +
+    out.note = "not finished within " + seconds(options.timeLimitSeconds) + " s: stopped while " + stopped + " (" +
                std::to_string(out.reflexEdges) + " reflex edges in the input)";
   else if (!st.error.empty())
-    out.note = "stopped while " + where + ": " + st.error;
+    out.note = "stopped while " + stopped + ": " + st.error;
   else if (malformed)
     out.status = Status::error(StatusCode::InternalError, "exact decomposition: malformed worker output");
   else if (!out.finished) {
     const std::string how = WIFSIGNALED(wstatus) ? "killed by signal " + std::to_string(WTERMSIG(wstatus))
                                                  : "exit code " + std::to_string(WEXITSTATUS(wstatus));
-    out.note = "worker ended (" + how + ") while " + where;
+    out.note = "worker ended (" + how + ") while " + stopped;
   }
   if (out.finished && st.pieceCount > st.pieces.size())
     out.note = "only the first " + std::to_string(st.pieces.size()) + " of " + std::to_string(st.pieceCount) +

@@ -7,6 +7,7 @@
 #include <acd/status.hpp>
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,9 @@ struct ExactOptions {
   double timeLimitSeconds = 60.0;                     // wall clock for the whole run; <= 0: no limit
   std::size_t maxPieces = 1000000;                    // pieces beyond this are counted, not returned
   std::size_t memoryLimitBytes = std::size_t(8) << 30;  // address space of the worker; 0: no limit
+  /// Called from the calling thread about once a second and at each stage: what the worker is
+  /// doing ("decomposing solid 1 of 1") and the seconds since the start.
+  std::function<void(const std::string& stage, double seconds)> progress;
 };
 
 struct ExactDecomposition {
