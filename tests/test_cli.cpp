@@ -208,11 +208,28 @@ TEST_F(Cli, EmptyMesh) {
   expectRefused(quote(path("empty.off")), 2, {"no faces"});
 }
 
-TEST_F(Cli, OpenMesh) {
+TEST_F(Cli, OpenMeshIsRefusedWithoutHoleFilling) {
   TriMesh box = shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1));
   box.faces.pop_back();
   const std::string model = writeModel("open.off", box);
-  expectRefused(quote(model), 2, {"open", "boundary"});
+  expectRefused(quote(model) + " --no-fill-holes", 2, {"open", "boundary"});
+}
+
+TEST_F(Cli, OpenMeshHolesAreFilledAndReported) {
+  TriMesh box = shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1));
+  box.faces.pop_back();
+  const std::string model = writeModel("open.off", box);
+  const std::string out = path("out");
+  const acdtest::ToolRun r = acd("decompose " + quote(model) + " -q -o " + quote(out));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json report = json::parse(slurp(out + "/report.json"));
+  EXPECT_EQ(report["input"]["holes_filled"].get<int>(), 1);
+  EXPECT_EQ(report["totals"]["components"].get<int>(), 1);  // the closed box is convex
+  // The closed result has the box's volume (normalised units: the box's half diagonal is 1).
+  EXPECT_NEAR(report["input"]["volume"].get<double>(), std::pow(2.0 / std::sqrt(3.0), 3), 1e-9);
+  bool said = false;
+  for (const auto& line : report["input"]["repairs"]) said |= line.get<std::string>().find("filled 1 hole") != std::string::npos;
+  EXPECT_TRUE(said) << report["input"]["repairs"].dump();
 }
 
 TEST_F(Cli, NonManifoldEdge) {

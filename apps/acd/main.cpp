@@ -111,6 +111,7 @@ struct DecomposeArgs {
   acd::DecomposeOptions options;
   bool noGrouping = false;
   bool noMerge = false;
+  bool noFillHoles = false;
   bool quiet = false;
 };
 
@@ -136,7 +137,8 @@ json reportJson(const DecomposeArgs& a, const acd::Decomposition& d, const acd::
                 {"self_intersecting_face_pairs", selfIntersections},
                 {"normalization", {{"center", {d.normalization.center.x(), d.normalization.center.y(), d.normalization.center.z()}},
                                    {"scale", d.normalization.scale}}},
-                {"repairs", d.repairs}};
+                {"repairs", d.repairs},
+                {"holes_filled", d.stats.holesFilled}};
   json comps = json::array();
   double volume = 0, hullVolume = 0, maxConcavity = 0;
   int unresolved = 0;
@@ -215,6 +217,7 @@ void printSummary(const DecomposeArgs& a, const acd::Decomposition& d) {
 int runDecompose(DecomposeArgs& a) {
   a.options.featureGrouping = !a.noGrouping;
   a.options.merge = !a.noMerge;
+  a.options.fillHoles = !a.noFillHoles;
   const acd::Status valid = acd::validate(a.options);
   if (!valid.ok()) return fail("invalid parameter", valid);
   acd::ReadResult r = load(a.model);
@@ -318,6 +321,8 @@ int main(int argc, char** argv) {
                 "Resolve the most concave notch with a plane bisecting its dihedral angle (no feature grouping)");
   dec->add_flag("--no-merge", da.noMerge,
                 "Keep every piece the recursion made (by default neighbours are glued back while their union stays within tau)");
+  dec->add_flag("--no-fill-holes", da.noFillHoles,
+                "Refuse an open mesh instead of closing its holes before the solid decomposition");
   dec->add_option("--threads", da.options.threads, "Worker threads, 0 = all cores; output is identical for any value")
       ->capture_default_str();
   dec->add_option("-o,--out", da.out, "Output folder: component_NNN.off, hulls.obj (one object per hull), report.json")

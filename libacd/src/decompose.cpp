@@ -311,9 +311,12 @@ Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options) {
   result.options = o;
 
   auto t = Clock::now();
-  PreparedSolid prepared = prepareSolid(mesh);
+  PrepareOptions po;
+  po.openMeshes = o.fillHoles ? OpenMeshPolicy::FillHoles : OpenMeshPolicy::Refuse;
+  PreparedSolid prepared = prepareSolid(mesh, po);
   result.status = prepared.status;
   result.repairs = prepared.repairs;
+  result.stats.holesFilled = prepared.holesFilled;
   if (!result.status.ok()) return result;
   TriMesh all;
   for (const TriMesh& c : prepared.components) {

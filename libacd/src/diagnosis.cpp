@@ -2,6 +2,7 @@
 // same checks in the same order, so `acd info` names the problem that
 // prepareSolid() would refuse or repair first.
 #include <acd/diagnosis.hpp>
+#include <acd/hole_filling.hpp>
 
 #include <algorithm>
 #include <unordered_map>
@@ -371,7 +372,7 @@ MeshDiagnosis diagnose(const TriMesh& mesh) {
   return d;
 }
 
-PreparedSolid prepareSolid(const TriMesh& mesh) {
+PreparedSolid prepareSolid(const TriMesh& mesh, const PrepareOptions& options) {
   PreparedSolid out;
   auto refuse = [&](StatusCode code, std::string message) {
     out.status = Status::error(code, std::move(message));
@@ -484,7 +485,9 @@ PreparedSolid prepareSolid(const TriMesh& mesh) {
       out.repairs.push_back("split " + std::to_string(split) +
                             " non-manifold vertices (parts touching at a point) into one copy per fan");
   }
-  if (const int e = firstEdgeWhere(topology, isBoundary); e >= 0) {
+  const bool open = firstEdgeWhere(topology, isBoundary) >= 0;
+  if (open && options.openMeshes == OpenMeshPolicy::Refuse) {
+    const int e = firstEdgeWhere(topology, isBoundary);
     const auto boundary = std::count_if(topology.edges.begin(), topology.edges.end(), isBoundary);
     return refuse(StatusCode::OpenMesh, "open mesh: " + std::to_string(boundary) + " boundary edges (first: vertices " +
                                             formatEdge(topology.edges[e].key) +
@@ -503,6 +506,7 @@ PreparedSolid prepareSolid(const TriMesh& mesh) {
       const int f = members[next];
       for (int corner = 3 * f; corner < 3 * f + 3; ++corner) {
         const EdgeUse& use = topology.edges[topology.edgeOfCorner[corner]];
+        if (use.count < 2) continue;  // a boundary edge has no face across
         const int g = (use.corners[0] == corner ? use.corners[1] : use.corners[0]) / 3;
         // Both faces running the edge the same way means exactly one of them must turn.
         const signed char wanted = static_cast<signed char>(flip[f] ^ (use.forward != 1));
@@ -532,6 +536,33 @@ PreparedSolid prepareSolid(const TriMesh& mesh) {
     out.repairs.push_back("flipped " + std::to_string(flipped) + " faces to make the orientation consistent");
 
   std::vector<TriMesh> pieces = splitEdgeConnected(TriMesh{vertices, faces});
+  if (open && options.openMeshes == OpenMeshPolicy::KeepOpen) {
+    // Surfaces keep their holes; an open piece has no inside, so its orientation stays as found
+    // (surface ACD turns it so that it faces its hull; see acd/surface_decompose.hpp).
+    for (TriMesh& piece : pieces)
+      if (isClosedOriented(piece) && signedVolume(piece) < 0.0)
+        for (Face& f : piece.faces) std::swap(f[1], f[2]);
+    if (unreferenced > 0)
+      out.repairs.push_back("dropped " + std::to_string(unreferenced) + " vertices not used by any face");
+    out.components = std::move(pieces);
+    out.status = Status::success();
+    return out;
+  }
+  if (open) {
+    int addedFaces = 0;
+    for (TriMesh& piece : pieces) {
+      if (isClosedOriented(piece)) continue;
+      const int before = static_cast<int>(piece.faces.size());
+      HoleFilling filled = fillHoles(piece);
+      if (!filled.status.ok())
+        return refuse(StatusCode::OpenMesh, "open mesh: " + filled.status.message + "; solid decomposition needs a closed mesh (surface decomposition works on the open mesh)");
+      out.holesFilled += filled.holes;
+      addedFaces += static_cast<int>(filled.mesh.faces.size()) - before;
+      piece = std::move(filled.mesh);
+    }
+    out.repairs.push_back("filled " + std::to_string(out.holesFilled) + (out.holesFilled == 1 ? " hole" : " holes") +
+                          " (" + std::to_string(addedFaces) + " faces added) to close the open mesh");
+  }
   int reversed = 0;
   for (TriMesh& piece : pieces) {
     if (signedVolume(piece) < 0.0) {

@@ -17,6 +17,7 @@ struct DecomposeOptions {
   double delta = -1.0;           // Douglas-Peucker knot tolerance; < 0 means tau / 20
   bool featureGrouping = true;   // false: bisect the notch's dihedral angle (Section 3.2)
   bool merge = true;             // glue neighbours back while their union stays within tau
+  bool fillHoles = true;         // close an open mesh's holes first (false: refuse open meshes)
   int threads = 0;               // 0: all cores. The output never depends on it.
   int maxComponents = 10000;     // safety net against runaway recursion
   int maxDepth = 64;
@@ -54,6 +55,7 @@ struct DecomposeStats {
   int merges = 0;             // neighbours glued back by the merge pass
   int inputEdges = 0;
   int inputNotches = 0;       // concave edges of the input
+  int holesFilled = 0;        // boundary loops closed before decomposing an open mesh
   double inputVolume = 0.0;   // normalised units
 };
 

@@ -40,18 +40,31 @@ MeshDiagnosis diagnose(const TriMesh& mesh);
 /// can have crossing loops and a component may stay unresolved; see docs/ERRORS.md.
 int countSelfIntersections(const TriMesh& mesh, int limit = -1);
 
+/// What prepareSolid does with boundary edges.
+enum class OpenMeshPolicy {
+  FillHoles,  // close every hole (acd/hole_filling.hpp); refuse when that cannot be done safely
+  Refuse,     // refuse open meshes (OpenMesh)
+  KeepOpen,   // keep the holes: pieces may be open surfaces, consistently oriented (surface ACD)
+};
+
+struct PrepareOptions {
+  OpenMeshPolicy openMeshes = OpenMeshPolicy::Refuse;
+};
+
 /// Result of checking and repairing a mesh for solid decomposition.
 struct PreparedSolid {
   Status status;                      // not ok: the mesh cannot be decomposed as a solid
-  std::vector<TriMesh> components;    // closed, consistently outward-oriented pieces
+  std::vector<TriMesh> components;    // closed, consistently outward-oriented pieces (open ones only with KeepOpen)
   std::vector<std::string> repairs;   // what was changed, one line each, for the report
+  int holesFilled = 0;                // boundary loops closed by OpenMeshPolicy::FillHoles
 };
 
 /// Validates in a fixed order and applies only safe repairs: merge duplicate
 /// vertices, drop faces with a repeated index and exact duplicate faces, orient
 /// each piece consistently and outward, split into edge-connected components.
 /// Refuses (status not ok) non-finite coordinates, bad indices, empty meshes,
-/// non-manifold edges or vertices, open meshes and zero-area faces it cannot drop safely.
-PreparedSolid prepareSolid(const TriMesh& mesh);
+/// non-manifold edges or vertices and zero-area faces it cannot drop safely. Open meshes are
+/// closed by hole filling, refused, or kept open, as `options` says.
+PreparedSolid prepareSolid(const TriMesh& mesh, const PrepareOptions& options = {});
 
 }  // namespace acd
