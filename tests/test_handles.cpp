@@ -106,3 +106,40 @@ TEST(Handles, GenusZeroNeedsNoCuts) {
   const ConcavityMap c = measure(normalised(shapes::uShape()), 0.02);
   EXPECT_TRUE(c.handleCuts.empty());
 }
+
+TEST(Handles, CorpusModelsOfPositiveGenusAreReducedToSinglyBridgedPockets) {
+  // Full decompositions of these models are checked against every invariant in
+  // test_decompose.cpp (DecomposeCorpus); here, the genus reduction itself.
+  for (const auto& [model, genus] : std::vector<std::pair<std::string, int>>{{"knot", 1}, {"eight", 2}, {"elephant", 3}}) {
+    SCOPED_TRACE(model);
+    ReadResult r = readMesh(std::string(ACD_DATA_DIR) + "/meshes/" + model + ".off");
+    ASSERT_TRUE(r.status.ok()) << r.status.message << " (scripts/fetch_corpus.sh fetches the corpus)";
+    const TriMesh mesh = normalised(r.mesh);
+    ASSERT_EQ(closedGenus(mesh), genus);
+    for (double epsilon : {0.1, 0.025}) {
+      const ConcavityMap c = measure(mesh, epsilon);
+      EXPECT_EQ(c.sharedPockets, 0) << "epsilon " << epsilon;
+      EXPECT_GE(c.handleCuts.size(), 1u) << "epsilon " << epsilon;
+      EXPECT_LE(static_cast<int>(c.handleCuts.size()), genus) << "epsilon " << epsilon;
+      EXPECT_EQ(edgeComponents(mesh, c.handleCuts), 1) << "handle cuts split the model";
+    }
+  }
+}
+
+TEST(Handles, PlateWithTwoHolesDecomposesWithinTau) {
+  const TriMesh plate = holedPlate(2);
+  DecomposeOptions o;
+  o.tau = 0.05;
+  const Decomposition d = decompose(plate, o);
+  ASSERT_TRUE(d.status.ok()) << d.status.message;
+  ASSERT_GE(d.components.size(), 2u);
+  double volume = 0;
+  for (const Component& c : d.components) {
+    EXPECT_TRUE(isClosedOriented(c.mesh));
+    EXPECT_FALSE(c.unresolved) << c.note;
+    EXPECT_LE(c.concavity, o.tau);
+    EXPECT_EQ(closedGenus(c.mesh), 0) << "a convex piece has no handle";
+    volume += c.volume;
+  }
+  EXPECT_NEAR(volume, d.stats.inputVolume, 1e-9 * d.stats.inputVolume);
+}

@@ -1,5 +1,6 @@
 // Bridges, pockets and vertex concavity (Lien & Amato 2007, Section 4.1, Appendix A).
 #include <acd/concavity.hpp>
+#include <acd/open_surface.hpp>
 #include <acd/handles.hpp>
 
 #include <algorithm>
@@ -200,6 +201,8 @@ ConcavityMap measureConcavity(const TriMesh& mesh, const SurfaceGraph& graph, co
   };
 
   PathFinder finder(graph);
+  // Extension 2: on an open surface a bridge edge with a concave end projects to the opening, or not at all.
+  const OpenSurfaceProjection openSurface(mesh, graph, out.hull);
   std::unordered_map<std::uint64_t, std::vector<int>> pathCache;  // hull edge (u<v) -> mesh path u..v
   std::vector<double> bestEstimate(nv), bestFacet(nv);
   std::vector<int> bestBridge(nv);
@@ -228,7 +231,8 @@ ConcavityMap measureConcavity(const TriMesh& mesh, const SurfaceGraph& graph, co
         pe.leftBridge = label[f];
         pe.rightBridge = label[g];
         auto& cached = pathCache[edgeKey(u, v)];
-        if (cached.empty()) cached = finder.path(out.hull.source[u], out.hull.source[v]);
+        if (cached.empty()) cached = openSurface.project(finder, u, v);
+        if (cached.empty()) continue;  // no projection (both ends concave, or unreachable)
         pe.path = cached;
         out.projections.push_back(std::move(pe));
       }
@@ -259,6 +263,7 @@ ConcavityMap measureConcavity(const TriMesh& mesh, const SurfaceGraph& graph, co
     // Section 5: on a surface of genus > 0 some regions are enclosed only by several bridges
     // together (handle caps). Their handle cuts become barriers and the regions are found again.
     out.handleCuts.clear();
+    out.pocketDivides.clear();
     std::vector<std::uint64_t> handleBarriers;
     for (int handlePass = 0;; ++handlePass) {
       std::vector<int> region(nf, -1);
@@ -304,16 +309,19 @@ ConcavityMap measureConcavity(const TriMesh& mesh, const SurfaceGraph& graph, co
         ++regions;
       }
 
-      if (handlePass == 0 && genus < 0) genus = closedGenus(mesh);
+      if (genus < 0) genus = closedGenus(mesh);
       if (genus == 0) break;
       const auto shared = findSharedPockets(mesh, graph, region, bridgeOnLeft);
-      out.sharedPockets = static_cast<int>(shared.size());
-      if (shared.empty() || handlePass >= 4) break;
+      out.sharedPockets = static_cast<int>(
+          std::count_if(shared.begin(), shared.end(), [](const SharedPocket& p) { return distinctBridges(p) >= 2; }));
+      if (shared.empty() || handlePass >= 8) break;
       auto cuts = findHandleCuts(mesh, graph, shared, handleBarriers);
+      const bool dividing = cuts.empty();
+      if (dividing && out.sharedPockets > 0) cuts = findPocketDivides(mesh, graph, shared, handleBarriers);
       if (cuts.empty()) break;
       for (auto& cut : cuts) {
         for (std::uint64_t e : cut.edges) onPath[e] = 1, handleBarriers.push_back(e);
-        out.handleCuts.push_back(std::move(cut));
+        (dividing ? out.pocketDivides : out.handleCuts).push_back(std::move(cut));
       }
     }
 

@@ -100,34 +100,43 @@ void pocketCuts(const TriMesh& mesh, const SurfaceGraph& graph, const SharedPock
       edges.push_back({mesh.faces[f][k], mesh.faces[f][(k + 1) % 3], std::min(lf, lg), std::max(lf, lg)});
     }
   if (edges.empty()) return;
-  std::unordered_map<int, int> local;
-  for (const auto& e : edges) {
-    local.emplace(e.a, static_cast<int>(local.size()));
-    local.emplace(e.b, static_cast<int>(local.size()));
-  }
-  UnionFind sets(static_cast<int>(local.size()));
-  for (const auto& e : edges) sets.join(local[e.a], local[e.b]);
-  std::map<int, std::vector<const CutEdge*>> curves;
-  for (const auto& e : edges) curves[sets.find(local[e.a])].push_back(&e);
-
-  for (const auto& [root, curve] : curves) {
-    // Only a closed curve cuts a handle; an open arc would only split the pocket.
-    std::unordered_map<int, int> degree;
-    std::map<std::pair<int, int>, int> pairs;
-    HandleCut cut;
-    for (const CutEdge* e : curve) {
-      ++degree[e->a], ++degree[e->b];
-      ++pairs[{e->loopA, e->loopB}];
-      cut.edges.push_back(edgeKey(e->a, e->b));
-      cut.length += (mesh.vertices[e->a] - mesh.vertices[e->b]).norm();
+  // The border of each loop's part is a candidate: with two loops it is the curve between them;
+  // with three or more, where the parts' borders branch, each part's own border is still closed.
+  for (std::size_t loop = 0; loop < pocket.loops.size(); ++loop) {
+    std::vector<const CutEdge*> mine;
+    for (const auto& e : edges)
+      if (e.loopA == static_cast<int>(loop) || e.loopB == static_cast<int>(loop)) mine.push_back(&e);
+    if (mine.empty()) continue;
+    std::unordered_map<int, int> local;
+    for (const CutEdge* e : mine) {
+      local.emplace(e->a, static_cast<int>(local.size()));
+      local.emplace(e->b, static_cast<int>(local.size()));
     }
-    if (!std::all_of(degree.begin(), degree.end(), [](const auto& d) { return d.second % 2 == 0; })) continue;
-    const auto major = std::max_element(pairs.begin(), pairs.end(),
-                                        [](const auto& x, const auto& y) { return x.second < y.second; });
-    const int bridgeA = pocket.loopBridge[major->first.first], bridgeB = pocket.loopBridge[major->first.second];
-    cut.capA = std::min(bridgeA, bridgeB);
-    cut.capB = std::max(bridgeA, bridgeB);
-    out.push_back(std::move(cut));
+    UnionFind sets(static_cast<int>(local.size()));
+    for (const CutEdge* e : mine) sets.join(local[e->a], local[e->b]);
+    std::map<int, std::vector<const CutEdge*>> curves;
+    for (const CutEdge* e : mine) curves[sets.find(local[e->a])].push_back(e);
+
+    for (const auto& [root, curve] : curves) {
+      // Only a closed curve cuts a handle; an open arc would only split the pocket.
+      std::unordered_map<int, int> degree;
+      std::map<int, int> others;
+      HandleCut cut;
+      for (const CutEdge* e : curve) {
+        ++degree[e->a], ++degree[e->b];
+        ++others[e->loopA == static_cast<int>(loop) ? e->loopB : e->loopA];
+        cut.edges.push_back(edgeKey(e->a, e->b));
+        cut.length += (mesh.vertices[e->a] - mesh.vertices[e->b]).norm();
+      }
+      if (!std::all_of(degree.begin(), degree.end(), [](const auto& d) { return d.second % 2 == 0; })) continue;
+      const auto major = std::max_element(others.begin(), others.end(),
+                                          [](const auto& x, const auto& y) { return x.second < y.second; });
+      const int bridgeA = pocket.loopBridge[loop], bridgeB = pocket.loopBridge[major->first];
+      cut.capA = std::min(bridgeA, bridgeB);
+      cut.capB = std::max(bridgeA, bridgeB);
+      std::sort(cut.edges.begin(), cut.edges.end());
+      out.push_back(std::move(cut));
+    }
   }
 }
 
@@ -157,6 +166,31 @@ std::vector<HandleCut> findHandleCuts(const TriMesh& mesh, const SurfaceGraph& g
     kept.push_back(std::move(cut));
   }
   return kept;
+}
+
+std::vector<HandleCut> findPocketDivides(const TriMesh& mesh, const SurfaceGraph& graph,
+                                         const std::vector<SharedPocket>& pockets,
+                                         const std::vector<std::uint64_t>& existing) {
+  std::vector<HandleCut> candidates;
+  for (const auto& pocket : pockets)
+    if (pocket.loops.size() >= 2) pocketCuts(mesh, graph, pocket, candidates);
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const HandleCut& a, const HandleCut& b) { return a.length < b.length; });
+  std::unordered_set<std::uint64_t> blocked(existing.begin(), existing.end());
+  std::vector<HandleCut> kept;
+  for (auto& cut : candidates) {
+    if (cut.capA == cut.capB) continue;  // both sides belong to one bridge: nothing to divide
+    bool fresh = false;
+    for (std::uint64_t e : cut.edges) fresh |= blocked.insert(e).second;
+    if (fresh) kept.push_back(std::move(cut));
+  }
+  return kept;
+}
+
+int distinctBridges(const SharedPocket& pocket) {
+  std::vector<int> b = pocket.loopBridge;
+  std::sort(b.begin(), b.end());
+  return static_cast<int>(std::unique(b.begin(), b.end()) - b.begin());
 }
 
 std::vector<SharedPocket> findSharedPockets(const TriMesh& mesh, const SurfaceGraph& graph,

@@ -57,7 +57,8 @@ struct ConcavityMap {
   int bridgeEstimate = 0;                // Algorithm 2's count before Lloyd and refinement
   int refinements = 0;                   // patches split to keep Observation 4.1 within epsilon
   std::vector<HandleCut> handleCuts;     // Section 5: barriers found on a surface of genus > 0
-  int sharedPockets = 0;                 // pockets ringed by several bridges (handle caps), not disks
+  std::vector<HandleCut> pocketDivides;  // barriers dividing pockets still ringed by several bridges after that
+  int sharedPockets = 0;                 // pockets still ringed by loops of several bridges at the end
   double concavity = 0.0;                // max vertex concavity
   int notch = -1;                        // vertex realising it
 };

@@ -56,6 +56,18 @@ std::vector<HandleCut> findHandleCuts(const TriMesh& mesh, const SurfaceGraph& g
                                       const std::vector<SharedPocket>& pockets,
                                       const std::vector<std::uint64_t>& existing = {});
 
+/// Once no handle cut is left (the genus is spent, or a handle hides under one bridge), a
+/// pocket can still be ringed by loops of different bridges: where a knotted tube winds
+/// under its caps, say. Such a pocket is divided the same way, at the curves where the
+/// floods from its loops meet, although each divide splits the surface (they are
+/// barriers for pockets, not genus reduction). Only curves between different bridges.
+std::vector<HandleCut> findPocketDivides(const TriMesh& mesh, const SurfaceGraph& graph,
+                                         const std::vector<SharedPocket>& pockets,
+                                         const std::vector<std::uint64_t>& existing = {});
+
+/// Number of different bridges among a shared pocket's loops.
+int distinctBridges(const SharedPocket& pocket);
+
 /// Euler-characteristic genus of a closed, edge-connected triangle mesh (0 for a sphere).
 int closedGenus(const TriMesh& mesh);
 
