@@ -1,0 +1,89 @@
+#include "acd_sampler.hpp"
+
+#include "problem.hpp"
+
+#include <algorithm>
+
+namespace planner {
+
+AcdValidStateSampler::AcdValidStateSampler(const ompl::base::SpaceInformation* si, const PlanningProblem& problem,
+                                           double spread, double uniformFraction, unsigned orientationTries,
+                                           std::uint32_t seed)
+    : ValidStateSampler(si),
+      problem_(problem),
+      sampler_(si->allocStateSampler()),
+      rng_(seed),
+      spread_(spread),
+      uniformFraction_(uniformFraction),
+      orientationTries_(std::max(1u, orientationTries)) {
+  name_ = "acd";
+  for (const Opening& o : problem.openings()) {
+    std::vector<double> cumulative;
+    double total = 0.0;
+    for (int f = 0; f < static_cast<int>(o.triangles.faces.size()); ++f) {
+      total += 0.5 * acd::faceNormal(o.triangles, f).norm();
+      cumulative.push_back(total);
+    }
+    cumulativeArea_.push_back(std::move(cumulative));
+  }
+}
+
+acd::Vec3 AcdValidStateSampler::pointNearOpening() {
+  const auto& openings = problem_.openings();
+  const int which = rng_.uniformInt(0, static_cast<int>(openings.size()) - 1);
+  const Opening& o = openings[which];
+  const std::vector<double>& cumulative = cumulativeArea_[which];
+  const double r = rng_.uniformReal(0.0, cumulative.back());
+  const int f = static_cast<int>(std::min<std::size_t>(
+      std::lower_bound(cumulative.begin(), cumulative.end(), r) - cumulative.begin(), cumulative.size() - 1));
+  double s = rng_.uniform01(), t = rng_.uniform01();
+  if (s + t > 1) s = 1 - s, t = 1 - t;
+  const acd::Face& tri = o.triangles.faces[f];
+  const acd::Vec3& a = o.triangles.vertices[tri[0]];
+  const acd::Vec3& b = o.triangles.vertices[tri[1]];
+  const acd::Vec3& c = o.triangles.vertices[tri[2]];
+  return a + s * (b - a) + t * (c - a) + rng_.gaussian(0.0, spread_) * o.normal;
+}
+
+void AcdValidStateSampler::candidate(ompl::base::State* state) {
+  sampler_->sampleUniform(state);  // uniform orientation (and position, kept for the uniform share)
+  if (problem_.openings().empty() || rng_.uniform01() < uniformFraction_) return;
+  problem_.setPosition(state, pointNearOpening());
+}
+
+bool AcdValidStateSampler::sample(ompl::base::State* state) {
+  ompl::base::State* turned = si_->allocState();
+  bool found = false;
+  for (unsigned attempt = 0; attempt < attempts_ && !found; ++attempt) {
+    candidate(state);
+    // Where the reference point itself is blocked no orientation helps: next position.
+    if (!si_->satisfiesBounds(state) || !problem_.world().pointFree(problem_.position(state))) continue;
+    if (si_->isValid(state)) {
+      found = true;
+      break;
+    }
+    // Keep the position and turn the robot: in a passage few orientations fit, and without
+    // this the valid states would gather where every orientation fits, away from the passage.
+    const acd::Vec3 p = problem_.position(state);
+    for (unsigned turn = 1; turn < orientationTries_ && !found; ++turn) {
+      sampler_->sampleUniform(turned);
+      problem_.setPosition(turned, p);
+      if (si_->isValid(turned)) {
+        si_->copyState(state, turned);
+        found = true;
+      }
+    }
+  }
+  si_->freeState(turned);
+  return found;
+}
+
+bool AcdValidStateSampler::sampleNear(ompl::base::State* state, const ompl::base::State* near, double distance) {
+  for (unsigned attempt = 0; attempt < attempts_; ++attempt) {
+    sampler_->sampleUniformNear(state, near, distance);
+    if (si_->isValid(state)) return true;
+  }
+  return false;
+}
+
+}  // namespace planner

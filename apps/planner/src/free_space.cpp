@@ -1,0 +1,135 @@
+// CGAL-heavy code (exact kernel, corefinement, Nef polyhedra) kept in this one translation unit.
+#include "free_space.hpp"
+
+#include <acd/shapes.hpp>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Nef_polyhedron_3.h>
+#include <CGAL/Polygon_mesh_processing/corefinement.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/convert_nef_polyhedron_to_polygon_mesh.h>
+
+#include <map>
+
+namespace planner {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+using Nef = CGAL::Nef_polyhedron_3<Kernel>;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+Mesh toCgal(const acd::TriMesh& m) {
+  Mesh out;
+  std::vector<Mesh::Vertex_index> v;
+  v.reserve(m.vertices.size());
+  for (const acd::Vec3& p : m.vertices) v.push_back(out.add_vertex(Point(p.x(), p.y(), p.z())));
+  for (const acd::Face& f : m.faces) out.add_face(v[f[0]], v[f[1]], v[f[2]]);
+  return out;
+}
+
+acd::TriMesh fromCgal(Mesh m) {
+  PMP::triangulate_faces(m);
+  acd::TriMesh out;
+  std::map<Mesh::Vertex_index, int> index;
+  for (Mesh::Vertex_index v : m.vertices()) {
+    const Point& p = m.point(v);
+    index[v] = static_cast<int>(out.vertices.size());
+    out.vertices.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+  for (Mesh::Face_index f : m.faces()) {
+    acd::Face tri{};
+    int k = 0;
+    for (Mesh::Vertex_index v : CGAL::vertices_around_face(m.halfedge(f), m)) tri[k++] = index[v];
+    out.faces.push_back(tri);
+  }
+  return acd::compact(out);
+}
+
+bool checkObstacle(const acd::TriMesh& m, const std::string& name, std::string& error) {
+  if (m.empty()) {
+    error = "obstacle " + name + " has no faces";
+    return false;
+  }
+  if (!acd::isClosedOriented(m)) {
+    error = "obstacle " + name + " is not a closed, consistently oriented mesh";
+    return false;
+  }
+  return true;
+}
+
+FreeSpace viaCorefinement(const Mesh& box, const std::vector<Mesh>& obstacles) {
+  FreeSpace out;
+  Mesh result = box;
+  for (std::size_t i = 0; i < obstacles.size(); ++i) {
+    Mesh obstacle = obstacles[i];
+    Mesh next;
+    if (!PMP::corefine_and_compute_difference(result, obstacle, next)) return out;
+    result = std::move(next);
+  }
+  out.ok = true;
+  out.method = "corefinement";
+  out.mesh = fromCgal(std::move(result));
+  return out;
+}
+
+FreeSpace viaNef(const Mesh& box, const std::vector<Mesh>& obstacles) {
+  FreeSpace out;
+  Nef free(box);
+  for (const Mesh& o : obstacles) free -= Nef(o);
+  free.regularization();
+  if (!free.is_simple()) {
+    out.error = "the free space is not a 2-manifold (obstacles meet the free space along an edge or a corner)";
+    return out;
+  }
+  Mesh result;
+  CGAL::convert_nef_polyhedron_to_polygon_mesh(free, result, true);
+  out.ok = true;
+  out.method = "nef";
+  out.mesh = fromCgal(std::move(result));
+  return out;
+}
+
+}  // namespace
+
+FreeSpace buildFreeSpace(const acd::Box3& workspace, const std::vector<acd::TriMesh>& obstacles,
+                         const std::vector<std::string>& names) {
+  FreeSpace out;
+  if (!((workspace.hi - workspace.lo).array() > 0).all()) {
+    out.error = "the workspace bounds are empty";
+    return out;
+  }
+  std::vector<Mesh> cgalObstacles;
+  for (std::size_t i = 0; i < obstacles.size(); ++i) {
+    const std::string name = i < names.size() ? names[i] : "#" + std::to_string(i);
+    if (!checkObstacle(obstacles[i], name, out.error)) return out;
+    Mesh m = toCgal(obstacles[i]);
+    if (!CGAL::is_closed(m) || !PMP::is_outward_oriented(m)) {
+      out.error = "obstacle " + name + " is not closed and outward oriented";
+      return out;
+    }
+    if (PMP::does_self_intersect(m)) {
+      out.error = "obstacle " + name + " intersects itself";
+      return out;
+    }
+    cgalObstacles.push_back(std::move(m));
+  }
+  const Mesh box = toCgal(acd::shapes::box(workspace.lo, workspace.hi));
+  out = viaCorefinement(box, cgalObstacles);
+  if (!out.ok) out = viaNef(box, cgalObstacles);
+  if (out.ok && out.mesh.empty()) {
+    out.ok = false;
+    out.error = "the obstacles fill the whole workspace: no free space";
+  }
+  if (out.ok && !acd::isClosedOriented(out.mesh)) {
+    out.ok = false;
+    out.error = "the free space computed with " + out.method + " is not a closed oriented mesh";
+  }
+  return out;
+}
+
+}  // namespace planner

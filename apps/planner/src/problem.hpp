@@ -1,0 +1,62 @@
+// One planning problem in OMPL terms: the state space of the robot (R^3 for a point or a
+// sphere, SE(3) for a rigid body, SE(2) for a planar one), the validity checker on top of
+// CollisionWorld, discrete motion checking, and the samplers by name.
+#pragma once
+
+#include "collision_world.hpp"
+#include "openings.hpp"
+#include "scenario.hpp"
+#include "seeding.hpp"
+
+#include <ompl/base/SpaceInformation.h>
+#include <ompl/base/ValidStateSampler.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace planner {
+
+class PlanningProblem {
+ public:
+  /// \throw ScenarioError when the start or the goal is in collision (naming which).
+  PlanningProblem(const Scenario& scenario, const acd::TriMesh& freeSpace, std::vector<Opening> openings);
+
+  const ompl::base::SpaceInformationPtr& si() const { return si_; }
+  const std::shared_ptr<SeedSource>& seeds() const { return seeds_; }
+  const CollisionWorld& world() const { return *world_; }
+  const std::vector<Opening>& openings() const { return openings_; }
+  const Scenario& scenario() const { return scenario_; }
+
+  /// Pose <-> state, whatever the space.
+  void setPose(ompl::base::State* state, const acd::Vec3& position, const Eigen::Quaterniond& orientation) const;
+  void setPosition(ompl::base::State* state, const acd::Vec3& position) const;
+  acd::Vec3 position(const ompl::base::State* state) const;
+  Eigen::Quaterniond orientation(const ompl::base::State* state) const;
+
+  ompl::base::State* startState() const { return start_; }
+  ompl::base::State* goalState() const { return goal_; }
+
+  /// Installs the named valid-state sampler ("uniform", "acd", "gaussian", "obstacle_based",
+  /// "bridge_test") on the space information; samplers allocated later use it.
+  void useSampler(const std::string& name);
+
+  /// Std. deviation of the ACD sampler across the openings (length units), as resolved.
+  double acdSpread() const { return spread_; }
+
+  ~PlanningProblem();
+
+ private:
+  const Scenario& scenario_;
+  std::vector<Opening> openings_;
+  std::unique_ptr<CollisionWorld> world_;
+  ompl::base::StateSpacePtr space_;
+  ompl::base::SpaceInformationPtr si_;
+  std::shared_ptr<SeedSource> seeds_;
+  ompl::base::State* start_ = nullptr;
+  ompl::base::State* goal_ = nullptr;
+  double planeZ_ = 0.0;   // SE(2): the height the robot moves at
+  double spread_ = 0.0;
+};
+
+}  // namespace planner

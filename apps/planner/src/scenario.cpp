@@ -1,0 +1,336 @@
+#include "scenario.hpp"
+
+#include "mesh_loader.hpp"
+
+#include <acd/diagnosis.hpp>
+#include <acd/inside.hpp>
+#include <acd/shapes.hpp>
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace planner {
+
+const std::vector<std::string>& knownSamplers() {
+  static const std::vector<std::string> names{"uniform", "acd", "gaussian", "obstacle_based", "bridge_test"};
+  return names;
+}
+
+double Robot::boundingRadius() const {
+  switch (kind) {
+    case RobotKind::Point: return 0.0;
+    case RobotKind::Sphere: return radius;
+    case RobotKind::Box:
+    case RobotKind::Mesh: {
+      double r = 0.0;
+      for (const acd::Vec3& p : mesh.vertices) r = std::max(r, p.norm());
+      return r;
+    }
+  }
+  return 0.0;
+}
+
+namespace {
+
+/// Reads one scenario: every error names the file and the key path ("robot.size").
+class Parser {
+ public:
+  Parser(std::string source, std::string baseDir) : source_(std::move(source)), baseDir_(std::move(baseDir)) {}
+
+  [[noreturn]] void fail(const std::string& what) const { throw ScenarioError(source_ + ": " + what); }
+
+  void checkKeys(const YAML::Node& node, const std::string& where, const std::set<std::string>& allowed) const {
+    if (!node.IsMap()) fail((where.empty() ? std::string("the document") : "'" + where + "'") + " must be a mapping");
+    for (const auto& kv : node) {
+      const std::string key = kv.first.as<std::string>();
+      if (!allowed.count(key)) {
+        std::string list;
+        for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
+        fail("unknown key '" + (where.empty() ? key : where + "." + key) + "' (allowed: " + list + ")");
+      }
+    }
+  }
+
+  template <class T>
+  T scalar(const YAML::Node& node, const std::string& where) const {
+    if (!node.IsScalar()) fail("'" + where + "' must be a single value");
+    try {
+      return node.as<T>();
+    } catch (const YAML::Exception&) {
+      fail("'" + where + "' has a value of the wrong type: '" + node.as<std::string>() + "'");
+    }
+  }
+
+  double finite(const YAML::Node& node, const std::string& where) const {
+    const double v = scalar<double>(node, where);
+    if (!std::isfinite(v)) fail("'" + where + "' is not a finite number");
+    return v;
+  }
+
+  double positive(const YAML::Node& node, const std::string& where) const {
+    const double v = finite(node, where);
+    if (v <= 0) fail("'" + where + "' must be positive");
+    return v;
+  }
+
+  int positiveInt(const YAML::Node& node, const std::string& where) const {
+    const int v = scalar<int>(node, where);
+    if (v <= 0) fail("'" + where + "' must be a positive integer");
+    return v;
+  }
+
+  acd::Vec3 vec3(const YAML::Node& node, const std::string& where) const {
+    if (!node.IsSequence() || node.size() != 3) fail("'" + where + "' must be a list of three numbers");
+    return {finite(node[0], where + "[0]"), finite(node[1], where + "[1]"), finite(node[2], where + "[2]")};
+  }
+
+  acd::Box3 box(const YAML::Node& node, const std::string& where) const {
+    checkKeys(node, where, {"min", "max"});
+    if (!node["min"] || !node["max"]) fail("'" + where + "' needs 'min' and 'max'");
+    acd::Box3 b{vec3(node["min"], where + ".min"), vec3(node["max"], where + ".max")};
+    if (!((b.hi - b.lo).array() > 0).all()) fail("'" + where + "' is empty: max must exceed min on every axis");
+    return b;
+  }
+
+  std::string resolve(const std::string& file) const {
+    std::filesystem::path p(file);
+    if (p.is_relative() && !baseDir_.empty()) p = std::filesystem::path(baseDir_) / p;
+    return p.lexically_normal().string();
+  }
+
+  /// A closed solid from a mesh file, repaired by libacd's safe repairs or refused.
+  acd::TriMesh solidFile(const YAML::Node& node, const std::string& where) const {
+    const std::string file = resolve(scalar<std::string>(node, where));
+    const LoadedMesh loaded = loadMeshFile(file);
+    if (!loaded.ok) fail("'" + where + "': " + loaded.error);
+    const acd::PreparedSolid solid = acd::prepareSolid(loaded.mesh);
+    if (!solid.status.ok()) fail("'" + where + "': " + file + " is not a closed solid: " + solid.status.message);
+    acd::TriMesh all;
+    for (const acd::TriMesh& c : solid.components) {
+      const int base = static_cast<int>(all.vertices.size());
+      all.vertices.insert(all.vertices.end(), c.vertices.begin(), c.vertices.end());
+      for (const acd::Face& f : c.faces) all.faces.push_back({f[0] + base, f[1] + base, f[2] + base});
+    }
+    return all;
+  }
+
+  acd::TriMesh transformed(acd::TriMesh m, const YAML::Node& node, const std::string& where) const {
+    double scale = 1.0;
+    acd::Vec3 shift = acd::Vec3::Zero();
+    if (node["scale"]) scale = positive(node["scale"], where + ".scale");
+    if (node["translate"]) shift = vec3(node["translate"], where + ".translate");
+    for (acd::Vec3& p : m.vertices) p = scale * p + shift;
+    return m;
+  }
+
+  Pose pose(const YAML::Node& node, const std::string& where) const {
+    checkKeys(node, where, {"position", "orientation", "yaw_deg"});
+    if (!node["position"]) fail("'" + where + "' needs 'position'");
+    Pose p;
+    p.position = vec3(node["position"], where + ".position");
+    if (node["orientation"] && node["yaw_deg"]) fail("'" + where + "': give 'orientation' or 'yaw_deg', not both");
+    if (node["orientation"]) {
+      const YAML::Node& q = node["orientation"];
+      if (!q.IsSequence() || q.size() != 4) fail("'" + where + ".orientation' must be a quaternion [w, x, y, z]");
+      Eigen::Quaterniond quat(finite(q[0], where + ".orientation[0]"), finite(q[1], where + ".orientation[1]"),
+                              finite(q[2], where + ".orientation[2]"), finite(q[3], where + ".orientation[3]"));
+      if (quat.norm() < 1e-9) fail("'" + where + ".orientation' is not a rotation (zero quaternion)");
+      p.orientation = quat.normalized();
+    }
+    if (node["yaw_deg"]) {
+      const double yaw = finite(node["yaw_deg"], where + ".yaw_deg") * M_PI / 180.0;
+      p.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(yaw, acd::Vec3::UnitZ()));
+    }
+    return p;
+  }
+
+  Robot robot(const YAML::Node& node) const {
+    checkKeys(node, "robot", {"type", "radius", "size", "mesh", "scale", "translate", "planar"});
+    if (!node["type"]) fail("'robot' needs 'type' (point, sphere, box or mesh)");
+    const std::string type = scalar<std::string>(node["type"], "robot.type");
+    Robot r;
+    auto forbid = [&](const char* key) {
+      if (node[key]) fail("'robot." + std::string(key) + "' does not apply to a robot of type " + type);
+    };
+    if (type == "point") {
+      r.kind = RobotKind::Point;
+      forbid("radius"), forbid("size"), forbid("mesh");
+    } else if (type == "sphere") {
+      r.kind = RobotKind::Sphere;
+      forbid("size"), forbid("mesh");
+      if (!node["radius"]) fail("'robot' of type sphere needs 'radius'");
+      r.radius = positive(node["radius"], "robot.radius");
+    } else if (type == "box") {
+      r.kind = RobotKind::Box;
+      forbid("radius"), forbid("mesh");
+      if (!node["size"]) fail("'robot' of type box needs 'size' [x, y, z]");
+      r.size = vec3(node["size"], "robot.size");
+      if (!(r.size.array() > 0).all()) fail("'robot.size' must be positive on every axis");
+      r.mesh = acd::shapes::box(-0.5 * r.size, 0.5 * r.size);
+    } else if (type == "mesh") {
+      r.kind = RobotKind::Mesh;
+      forbid("radius"), forbid("size");
+      if (!node["mesh"]) fail("'robot' of type mesh needs 'mesh' (a file)");
+      r.meshPath = resolve(scalar<std::string>(node["mesh"], "robot.mesh"));
+      r.mesh = transformed(solidFile(node["mesh"], "robot.mesh"), node, "robot");
+      // The validity test relies on the reference point lying inside the robot (docs/PLANNER.md).
+      if (!acd::InsideTest(r.mesh).inside(acd::Vec3::Zero()))
+        fail("'robot.mesh': the reference point (the origin of the mesh's frame, after 'translate') is not inside the robot");
+    } else {
+      fail("'robot.type' must be point, sphere, box or mesh, not '" + type + "'");
+    }
+    if (r.kind != RobotKind::Mesh && (node["scale"] || node["translate"]))
+      fail("'robot.scale' and 'robot.translate' apply to mesh robots only");
+    if (node["planar"]) r.planar = scalar<bool>(node["planar"], "robot.planar");
+    if (r.planar && (r.kind == RobotKind::Point || r.kind == RobotKind::Sphere))
+      fail("'robot.planar' needs an oriented robot (box or mesh)");
+    return r;
+  }
+
+  Scenario scenario(const YAML::Node& root) {
+    if (!root || root.IsNull()) fail("empty scenario");
+    checkKeys(root, "", {"name", "description", "expected", "workspace", "obstacles", "free_space", "robot", "start",
+                         "goal", "samplers", "samples", "trials", "sweep", "sweep_trials", "prm", "acd", "seed", "output"});
+    Scenario s;
+    if (root["name"]) s.name = scalar<std::string>(root["name"], "name");
+    if (root["description"]) s.description = scalar<std::string>(root["description"], "description");
+    if (root["expected"]) s.expected = scalar<std::string>(root["expected"], "expected");
+    if (root["free_space"] && root["obstacles"]) fail("give either 'obstacles' or 'free_space', not both");
+    if (root["free_space"]) {
+      s.freeSpace = solidFile(root["free_space"], "free_space");
+      s.freeSpaceGiven = true;
+      s.workspace = acd::boundingBox(s.freeSpace);
+      if (root["workspace"]) fail("'workspace' is taken from 'free_space'; remove one of them");
+    } else {
+      if (!root["workspace"]) fail("missing key 'workspace' (or 'free_space')");
+      s.workspace = box(root["workspace"], "workspace");
+    }
+    if (root["obstacles"]) {
+      const YAML::Node& list = root["obstacles"];
+      if (!list.IsSequence()) fail("'obstacles' must be a list");
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        const std::string where = "obstacles[" + std::to_string(i) + "]";
+        const YAML::Node& o = list[i];
+        checkKeys(o, where, {"box", "mesh", "scale", "translate"});
+        if (o["box"] && o["mesh"]) fail("'" + where + "' has both 'box' and 'mesh'");
+        if (o["box"]) {
+          if (o["scale"] || o["translate"]) fail("'" + where + "': 'scale' and 'translate' apply to meshes only");
+          const acd::Box3 b = box(o["box"], where + ".box");
+          s.obstacles.push_back(acd::shapes::box(b.lo, b.hi));
+          s.obstacleNames.push_back(where + " (box)");
+        } else if (o["mesh"]) {
+          s.obstacles.push_back(transformed(solidFile(o["mesh"], where + ".mesh"), o, where));
+          s.obstacleNames.push_back(where + " (" + o["mesh"].as<std::string>() + ")");
+        } else {
+          fail("'" + where + "' needs 'box' or 'mesh'");
+        }
+      }
+    }
+    if (!root["robot"]) fail("missing key 'robot'");
+    s.robot = robot(root["robot"]);
+    if (!root["start"]) fail("missing key 'start'");
+    if (!root["goal"]) fail("missing key 'goal'");
+    s.start = pose(root["start"], "start");
+    s.goal = pose(root["goal"], "goal");
+    if (s.robot.planar) {
+      for (const Pose* p : {&s.start, &s.goal}) {
+        const acd::Vec3 axis = p->orientation * acd::Vec3::UnitZ();
+        if (axis.z() < 1 - 1e-9) fail("planar robot: 'start' and 'goal' may only turn about z (use 'yaw_deg')");
+      }
+      if (std::abs(s.start.position.z() - s.goal.position.z()) > 1e-12)
+        fail("planar robot: 'start' and 'goal' must have the same z");
+    }
+    for (const auto& [p, name] : {std::pair<const Pose*, const char*>{&s.start, "start"}, {&s.goal, "goal"}})
+      if (((p->position - s.workspace.lo).array() < 0).any() || ((p->position - s.workspace.hi).array() > 0).any())
+        fail("'" + std::string(name) + "' position is outside the workspace");
+    if (root["samplers"]) {
+      const YAML::Node& list = root["samplers"];
+      if (!list.IsSequence() || list.size() == 0) fail("'samplers' must be a non-empty list");
+      s.samplers.clear();
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        const std::string name = scalar<std::string>(list[i], "samplers[" + std::to_string(i) + "]");
+        const auto& known = knownSamplers();
+        if (std::find(known.begin(), known.end(), name) == known.end())
+          fail("unknown sampler '" + name + "' (known: uniform, acd, gaussian, obstacle_based, bridge_test)");
+        if (std::find(s.samplers.begin(), s.samplers.end(), name) != s.samplers.end())
+          fail("sampler '" + name + "' listed twice");
+        s.samplers.push_back(name);
+      }
+    }
+    if (root["samples"]) s.samples = positiveInt(root["samples"], "samples");
+    if (root["trials"]) s.trials = positiveInt(root["trials"], "trials");
+    if (root["sweep_trials"]) s.sweepTrials = positiveInt(root["sweep_trials"], "sweep_trials");
+    if (root["sweep"]) {
+      const YAML::Node& list = root["sweep"];
+      if (!list.IsSequence() || list.size() == 0) fail("'sweep' must be a non-empty list of sample counts");
+      s.sweep.clear();
+      for (std::size_t i = 0; i < list.size(); ++i) s.sweep.push_back(positiveInt(list[i], "sweep[" + std::to_string(i) + "]"));
+    }
+    if (root["prm"]) {
+      const YAML::Node& n = root["prm"];
+      checkKeys(n, "prm", {"neighbors", "resolution"});
+      if (n["neighbors"]) s.prm.neighbors = positiveInt(n["neighbors"], "prm.neighbors");
+      if (n["resolution"]) s.prm.resolution = positive(n["resolution"], "prm.resolution");
+      if (s.prm.resolution >= 0.5) fail("'prm.resolution' must be below 0.5 (a fraction of the space's extent)");
+    }
+    if (root["acd"]) {
+      const YAML::Node& n = root["acd"];
+      checkKeys(n, "acd", {"tau", "spread", "uniform_fraction", "orientation_tries"});
+      if (n["orientation_tries"]) s.acd.orientationTries = positiveInt(n["orientation_tries"], "acd.orientation_tries");
+      if (n["tau"]) s.acd.tau = positive(n["tau"], "acd.tau");
+      if (n["spread"]) s.acd.spread = positive(n["spread"], "acd.spread");
+      if (n["uniform_fraction"]) {
+        s.acd.uniformFraction = finite(n["uniform_fraction"], "acd.uniform_fraction");
+        if (s.acd.uniformFraction < 0 || s.acd.uniformFraction > 1) fail("'acd.uniform_fraction' must be in [0, 1]");
+      }
+    }
+    if (root["seed"]) {
+      const long long seed = scalar<long long>(root["seed"], "seed");
+      if (seed <= 0 || seed > 0xFFFFFFFFll) fail("'seed' must be in 1..4294967295");
+      s.seed = static_cast<unsigned>(seed);
+    }
+    if (root["output"]) s.outputDir = scalar<std::string>(root["output"], "output");
+    return s;
+  }
+
+ private:
+  std::string source_;
+  std::string baseDir_;
+};
+
+}  // namespace
+
+Scenario parseScenario(const std::string& yamlText, const std::string& sourceName, const std::string& baseDir) {
+  Parser parser(sourceName, baseDir);
+  YAML::Node root;
+  try {
+    root = YAML::Load(yamlText);
+  } catch (const YAML::Exception& e) {
+    parser.fail("not valid YAML: " + std::string(e.what()));
+  }
+  try {
+    Scenario s = parser.scenario(root);
+    s.path = sourceName;
+    if (s.name.empty()) s.name = std::filesystem::path(sourceName).stem().string();
+    return s;
+  } catch (const YAML::Exception& e) {
+    parser.fail(e.what());
+  }
+}
+
+Scenario loadScenario(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw ScenarioError(path + ": file not found or not readable");
+  std::ostringstream text;
+  text << in.rdbuf();
+  const std::string base = std::filesystem::path(path).parent_path().string();
+  return parseScenario(text.str(), path, base);
+}
+
+}  // namespace planner

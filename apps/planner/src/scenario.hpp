@@ -1,0 +1,83 @@
+// Motion-planning scenarios: the YAML format documented in docs/PLANNER.md.
+#pragma once
+
+#include <acd/mesh.hpp>
+
+#include <Eigen/Geometry>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace planner {
+
+/// Bad scenario: the message names the file and the offending key, file or pose.
+class ScenarioError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Pose {
+  acd::Vec3 position = acd::Vec3::Zero();
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+};
+
+enum class RobotKind { Point, Sphere, Box, Mesh };
+
+struct Robot {
+  RobotKind kind = RobotKind::Point;
+  double radius = 0.0;                         // sphere
+  acd::Vec3 size = acd::Vec3::Zero();          // box: full edge lengths, centred on the reference point
+  acd::TriMesh mesh;                           // box and mesh: closed, in the robot's frame
+  std::string meshPath;                        // mesh
+  bool planar = false;                         // SE(2): moves in the xy-plane at the start's z, turns about z
+  /// Largest distance from the reference point to the robot's surface.
+  double boundingRadius() const;
+};
+
+struct PrmSettings {
+  int neighbors = 10;             // k of the k-nearest connection strategy
+  double resolution = 0.002;      // motion checking step, fraction of the space's maximum extent
+};
+
+struct AcdSamplerSettings {
+  double tau = 0.05;              // concavity tolerance of the free-space ACD (normalised units)
+  double spread = -1.0;           // std. deviation across the opening, length units; < 0: half the robot's bounding radius
+  double uniformFraction = 0.1;   // share of plain uniform samples mixed in
+  int orientationTries = 20;      // random orientations tried at one free position
+};
+
+struct Scenario {
+  std::string path;               // the YAML file
+  std::string name;
+  std::string description;
+  std::string expected;           // the documented expected outcome
+  acd::Box3 workspace;
+  std::vector<acd::TriMesh> obstacles;
+  std::vector<std::string> obstacleNames;   // "box #1", file names...
+  acd::TriMesh freeSpace;         // given directly (then `obstacles` is empty)
+  bool freeSpaceGiven = false;
+  Robot robot;
+  Pose start, goal;
+  std::vector<std::string> samplers{"uniform", "acd", "gaussian", "obstacle_based", "bridge_test"};
+  int samples = 200;
+  int trials = 100;
+  std::vector<int> sweep{50, 100, 200, 300, 500, 750, 1000};  // sample counts for the plot
+  int sweepTrials = 30;
+  PrmSettings prm;
+  AcdSamplerSettings acd;
+  unsigned seed = 1;
+  std::string outputDir;          // relative paths resolve against the current directory
+};
+
+/// The known sampler names, in their canonical order.
+const std::vector<std::string>& knownSamplers();
+
+/// Parses and validates a scenario file; mesh paths resolve relative to the file.
+/// \throw ScenarioError naming the problem (wrong key, missing file, bad value...).
+Scenario loadScenario(const std::string& path);
+
+/// Parses a scenario from YAML text; `baseDir` resolves relative mesh paths.
+Scenario parseScenario(const std::string& yamlText, const std::string& sourceName, const std::string& baseDir);
+
+}  // namespace planner

@@ -1,0 +1,94 @@
+// The planner command: a small run writes its table and files; bad scenarios exit 2 with
+// one line naming the problem.
+#include <helpers.hpp>
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+
+namespace {
+
+const char* kScenario = R"(
+name: cli
+workspace: {min: [0, 0, 0], max: [4, 2, 2]}
+obstacles:
+  - box: {min: [1.9, 0.0, 0.0], max: [2.1, 0.95, 2.0]}
+  - box: {min: [1.9, 1.05, 0.0], max: [2.1, 2.0, 2.0]}
+  - box: {min: [1.9, 0.95, 0.0], max: [2.1, 1.05, 0.95]}
+  - box: {min: [1.9, 0.95, 1.05], max: [2.1, 1.05, 2.0]}
+robot: {type: point}
+start: {position: [0.3, 0.3, 0.3]}
+goal: {position: [3.7, 1.7, 1.7]}
+samplers: [uniform, acd]
+samples: 100
+trials: 3
+sweep: [50, 100]
+sweep_trials: 2
+seed: 11
+)";
+
+void write(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+TEST(PlannerCli, SmallRunWritesTableJsonLogAndPath) {
+  acdtest::TempDir dir("planner_cli");
+  write(dir / "s.yaml", kScenario);
+  const auto run = acdtest::runTool(PLANNER_BIN, acdtest::quote(dir / "s.yaml") + " --sweep -o " + acdtest::quote(dir / "out"), dir);
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_NE(run.out.find("acd"), std::string::npos);
+  EXPECT_NE(run.out.find("uniform"), std::string::npos);
+  EXPECT_NE(run.out.find("95% CI"), std::string::npos);
+  EXPECT_NE(run.out.find("ACD preprocessing"), std::string::npos);
+  EXPECT_TRUE(run.err.empty()) << run.err;  // no progress when stderr is not a terminal
+  const auto j = nlohmann::json::parse(acdtest::slurp(dir / "out/results.json"));
+  ASSERT_EQ(j["samplers"].size(), 2u);
+  for (const auto& s : j["samplers"]) {
+    EXPECT_EQ(s["trials"], 3);
+    EXPECT_LE(s["ci95"][0].get<double>(), s["success_rate"].get<double>());
+    EXPECT_GE(s["ci95"][1].get<double>(), s["success_rate"].get<double>());
+  }
+  EXPECT_EQ(j["sweep"].size(), 4u);
+  const std::string log = acdtest::slurp(dir / "out/benchmark.log");
+  EXPECT_NE(log.find("2 planners"), std::string::npos);
+  EXPECT_NE(log.find("geometric_PRM_acd"), std::string::npos);
+  EXPECT_NE(log.find("3 runs"), std::string::npos);
+  EXPECT_NE(log.find("solved BOOLEAN"), std::string::npos);
+  EXPECT_EQ(log.back(), '\n');
+  EXPECT_NE(acdtest::slurp(dir / "out/sweep.csv").find("acd,100,2,"), std::string::npos);
+  // The best path: start first, goal last (x y z per line for a point robot).
+  std::ifstream path(dir / "out/best_path.txt");
+  std::vector<std::array<double, 3>> states;
+  std::array<double, 3> p{};
+  while (path >> p[0] >> p[1] >> p[2]) states.push_back(p);
+  ASSERT_GE(states.size(), 2u);
+  EXPECT_NEAR(states.front()[0], 0.3, 1e-9);
+  EXPECT_NEAR(states.back()[0], 3.7, 1e-9);
+}
+
+TEST(PlannerCli, BadScenariosExitTwoNamingTheProblem) {
+  acdtest::TempDir dir("planner_cli_bad");
+  struct Case {
+    std::string from, to, expected;
+  };
+  const std::vector<Case> cases{
+      {"seed: 11", "sead: 11", "unknown key 'sead'"},
+      {"robot: {type: point}", "robot: {type: mesh, mesh: missing_robot.stl}", "missing_robot.stl"},
+      {"start: {position: [0.3, 0.3, 0.3]}", "start: {position: [2.0, 0.3, 0.3]}", "start pose is in collision"},
+      {"goal: {position: [3.7, 1.7, 1.7]}", "goal: {position: [2.0, 1.7, 1.7]}", "goal pose is in collision"},
+  };
+  for (const Case& c : cases) {
+    std::string text = kScenario;
+    text.replace(text.find(c.from), c.from.size(), c.to);
+    write(dir / "bad.yaml", text);
+    const auto run = acdtest::runTool(PLANNER_BIN, acdtest::quote(dir / "bad.yaml") + " -o " + acdtest::quote(dir / "out"), dir);
+    EXPECT_EQ(run.code, 2) << c.expected;
+    EXPECT_NE(run.err.find(c.expected), std::string::npos) << run.err;
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+  }
+  const auto missing = acdtest::runTool(PLANNER_BIN, acdtest::quote(dir / "nope.yaml"), dir);
+  EXPECT_EQ(missing.code, 2);
+  EXPECT_NE(missing.err.find("nope.yaml"), std::string::npos);
+}
+
+}  // namespace
