@@ -1,0 +1,285 @@
+// tetmesh: a tetrahedral mesh of the convex hulls of the solid ACD components, with TetGen
+// (Lien & Amato 2007, Section 7, "Mesh generation", Figure 4).
+//   tetmesh MODEL [--tau 0.2] [--simplify K] [--quality Q] [--max-volume V] [-o OUT]
+//           [--format vtk|mesh|tetgen] [--compare] [--json FILE]
+#include "hull_mesher.hpp"
+#include "tet_files.hpp"
+
+#include <acd/io.hpp>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+namespace {
+
+using json = nlohmann::json;
+using namespace tetmesh;
+
+enum Exit : int {
+  kOk = 0,
+  kUsage = 1,         // bad command line
+  kBadInput = 2,      // model unreadable or not a valid solid
+  kBadParameter = 3,  // option out of range
+  kOutputFailed = 5,  // cannot write the mesh or the report
+  kMeshFailed = 6,    // the hulls could not be meshed (TetGen refused or failed): a bug, please report
+};
+
+const char* exitCodes() {
+  return "Exit codes: 0 success; 1 bad command line; 2 unreadable or invalid model; 3 invalid parameter;\n"
+         "5 cannot write output; 6 meshing failed (TetGen refused or crashed on the hull complex).";
+}
+
+struct Args {
+  std::string model;
+  HullMeshOptions options;
+  std::string out;
+  std::string format;
+  std::string json;
+  std::string poly;
+  bool compare = false;
+  bool quiet = false;
+};
+
+json qualityJson(const MeshQuality& q) {
+  json hist = json::array();
+  for (std::size_t b = 0; b < q.radiusEdgeHistogram.size(); ++b)
+    hist.push_back({{"upto", b < kRadiusEdgeBins.size() ? json(kRadiusEdgeBins[b]) : json(nullptr)},
+                    {"tets", q.radiusEdgeHistogram[b]}});
+  return {{"tets", q.tets},
+          {"vertices", q.points},
+          {"volume", q.volume},
+          {"non_positive_tets", q.nonPositiveTets},
+          {"min_dihedral_deg", q.minDihedral},
+          {"max_dihedral_deg", q.maxDihedral},
+          {"radius_edge", {{"min", q.minRadiusEdge}, {"median", q.medianRadiusEdge}, {"max", q.maxRadiusEdge}}},
+          {"radius_edge_histogram", hist}};
+}
+
+std::string histogramLine(const MeshQuality& q) {
+  std::string s;
+  char buf[64];
+  for (std::size_t b = 0; b < q.radiusEdgeHistogram.size(); ++b) {
+    const double share = q.tets > 0 ? 100.0 * q.radiusEdgeHistogram[b] / q.tets : 0.0;
+    if (b < kRadiusEdgeBins.size())
+      std::snprintf(buf, sizeof buf, "%s<=%g: %.1f%%", b ? ", " : "", kRadiusEdgeBins[b], share);
+    else
+      std::snprintf(buf, sizeof buf, ", >%g: %.1f%%", kRadiusEdgeBins.back(), share);
+    s += buf;
+  }
+  return s;
+}
+
+void printColumns(const char* name, const std::string& a, const std::string& b, bool two) {
+  if (two)
+    std::printf("  %-22s %-22s %s\n", name, a.c_str(), b.c_str());
+  else
+    std::printf("  %-22s %s\n", name, a.c_str());
+}
+
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+int run(const Args& a) {
+  const bool progress = !a.quiet && ::isatty(STDERR_FILENO);
+  TetFormat format = TetFormat::Vtk;
+  std::string formatName = a.format;
+  if (formatName.empty() && !a.out.empty()) {
+    const auto dot = a.out.rfind('.');
+    const std::string ext = dot == std::string::npos ? "" : a.out.substr(dot + 1);
+    formatName = ext == "mesh" ? "mesh" : ext == "vtk" ? "vtk" : "tetgen";
+  }
+  if (!formatName.empty() && !parseTetFormat(formatName, format)) {
+    std::fprintf(stderr, "tetmesh: unknown --format '%s' (vtk, mesh or tetgen)\n", formatName.c_str());
+    return kBadParameter;
+  }
+  if (!(a.options.tau > 0) || !std::isfinite(a.options.tau)) {
+    std::fprintf(stderr, "tetmesh: --tau must be positive, got %g\n", a.options.tau);
+    return kBadParameter;
+  }
+  if (a.options.simplify != 0 && a.options.simplify < 4) {
+    std::fprintf(stderr, "tetmesh: --simplify must be at least 4 (a tetrahedron), got %d\n", a.options.simplify);
+    return kBadParameter;
+  }
+  if (a.options.tetgen.radiusEdge != 0 && !(a.options.tetgen.radiusEdge >= 1.0)) {
+    std::fprintf(stderr, "tetmesh: --quality must be at least 1 (TetGen does not terminate below), or 0 for none; got %g\n",
+                 a.options.tetgen.radiusEdge);
+    return kBadParameter;
+  }
+  if (a.options.tetgen.maxVolume < 0 || !std::isfinite(a.options.tetgen.maxVolume)) {
+    std::fprintf(stderr, "tetmesh: --max-volume must be positive (or 0 for no bound), got %g\n", a.options.tetgen.maxVolume);
+    return kBadParameter;
+  }
+
+  const acd::ReadResult read = acd::readMesh(a.model);
+  if (!read.status.ok()) {
+    std::fprintf(stderr, "tetmesh: %s\n", read.status.message.c_str());
+    return kBadInput;
+  }
+  if (progress) std::fprintf(stderr, "tetmesh: decomposing at tau %g, hulls, TetGen ...\n", a.options.tau);
+  const HullMeshResult r = meshHulls(read.mesh, a.options);
+  // Written even when TetGen fails on it: that is when it is most useful.
+  if (!a.poly.empty() && !r.complex.plc.facets.empty()) {
+    const acd::Status s = writePoly(a.poly, r.complex.plc);
+    if (!s.ok()) {
+      std::fprintf(stderr, "tetmesh: %s\n", s.message.c_str());
+      return kOutputFailed;
+    }
+  }
+  if (!r.status.ok()) {
+    std::fprintf(stderr, "tetmesh: %s: %s\n", a.model.c_str(), r.status.message.c_str());
+    switch (r.status.code) {
+      case acd::StatusCode::InvalidParameter: return kBadParameter;
+      case acd::StatusCode::InternalError: return kMeshFailed;
+      default: return kBadInput;
+    }
+  }
+  DirectMeshResult direct;
+  if (a.compare) {
+    if (progress) std::fprintf(stderr, "tetmesh: TetGen on the model itself ...\n");
+    direct = meshModelDirectly(read.mesh, a.options.tetgen);
+  }
+
+  if (!a.out.empty()) {
+    const acd::Status s = writeTetMesh(a.out, format, r.tetgen.mesh);
+    if (!s.ok()) {
+      std::fprintf(stderr, "tetmesh: %s\n", s.message.c_str());
+      return kOutputFailed;
+    }
+  }
+
+  int unresolved = 0;
+  for (const acd::Component& c : r.decomposition.components) unresolved += c.unresolved ? 1 : 0;
+  const int n = static_cast<int>(r.hulls.size());
+  int hullVerts = 0, simpleVerts = 0;
+  for (int i = 0; i < n; ++i) hullVerts += r.hullVertices[i], simpleVerts += static_cast<int>(r.hulls[i].vertices.size());
+  const double volErr = r.modelVolume > 0 ? (r.quality.volume - r.modelVolume) / r.modelVolume : 0.0;
+  const double directErr =
+      r.modelVolume > 0 && direct.status.ok() ? (direct.quality.volume - r.modelVolume) / r.modelVolume : 0.0;
+
+  std::printf("%s\n", a.model.c_str());
+  std::printf("  decomposition  tau %g, %d components%s, %.3f s\n", a.options.tau, n,
+              a.options.merge ? " (with merge pass)" : " (no merge pass)", r.times.decompose);
+  if (unresolved > 0) std::printf("  warning        %d components still exceed tau (see acd decompose)\n", unresolved);
+  if (a.options.simplify > 0)
+    std::printf("  hulls          %d vertices, simplified to %d (at most %d each; %d hulls could not get there)\n",
+                hullVerts, simpleVerts, a.options.simplify, r.simplifyMissed);
+  else
+    std::printf("  hulls          %d vertices\n", hullVerts);
+  std::printf("  containment    farthest component vertex outside its hull: %.3g\n", r.maxOutside);
+  std::printf("  complex        %d touching pairs (%d overlapping, deepest %.3g), %d contact planes, %d interface + %d boundary facets\n",
+              r.complex.contactPairs, r.complex.overlappingPairs, r.complex.maxOverlapDepth, r.complex.contactPlanes,
+              r.complex.interfaceFacets, r.complex.boundaryFacets);
+  std::printf("  TetGen         -%s\n", r.tetgen.switches.c_str());
+  const bool two = a.compare;
+  if (two) printColumns("", "hulls", "original model", true);
+  const std::string directNote = direct.status.ok() ? "" : "not meshed";
+  auto col = [&](const std::string& v) { return direct.status.ok() ? v : directNote; };
+  printColumns("tets", std::to_string(r.quality.tets), col(std::to_string(direct.quality.tets)), two);
+  printColumns("vertices", std::to_string(r.quality.points), col(std::to_string(direct.quality.points)), two);
+  printColumns("volume", fmt("%.6g", r.quality.volume), col(fmt("%.6g", direct.quality.volume)), two);
+  printColumns("vs model volume", fmt("%+.2f%%", 100 * volErr), col(fmt("%+.2f%%", 100 * directErr)), two);
+  printColumns("min dihedral (deg)", fmt("%.2f", r.quality.minDihedral), col(fmt("%.2f", direct.quality.minDihedral)), two);
+  printColumns("max dihedral (deg)", fmt("%.2f", r.quality.maxDihedral), col(fmt("%.2f", direct.quality.maxDihedral)), two);
+  printColumns("radius-edge median", fmt("%.3f", r.quality.medianRadiusEdge), col(fmt("%.3f", direct.quality.medianRadiusEdge)), two);
+  printColumns("radius-edge max", fmt("%.3f", r.quality.maxRadiusEdge), col(fmt("%.3f", direct.quality.maxRadiusEdge)), two);
+  printColumns("TetGen time (s)", fmt("%.3f", r.times.tetgen), col(fmt("%.3f", direct.tetgen.seconds)), two);
+  std::printf("  radius-edge    %s\n", histogramLine(r.quality).c_str());
+  if (two && direct.status.ok()) std::printf("  (original)     %s\n", histogramLine(direct.quality).c_str());
+  if (two && !direct.status.ok()) std::printf("  original model not meshed: %s\n", direct.status.message.c_str());
+  std::printf("  time (s)       decompose %.3f, hulls %.3f, complex %.3f, TetGen %.3f, quality %.3f\n", r.times.decompose,
+              r.times.hulls, r.times.complex, r.times.tetgen, r.times.quality);
+  if (!a.out.empty()) {
+    std::printf("  wrote         ");
+    for (const std::string& f : tetOutputFiles(a.out, format)) std::printf(" %s", f.c_str());
+    std::printf("\n");
+  }
+
+  if (!a.json.empty()) {
+    json comps = json::array();
+    for (int i = 0; i < n; ++i)
+      comps.push_back({{"label", i + 1},
+                       {"hull_vertices", r.hullVertices[i]},
+                       {"meshed_hull_vertices", r.hulls[i].vertices.size()},
+                       {"region_volume", r.complex.regions[i].empty() ? 0.0 : acd::signedVolume(r.complex.regions[i])},
+                       {"clipped_volume", r.complex.clippedVolume[i]},
+                       {"unresolved", r.decomposition.components[i].unresolved}});
+    json j = {{"model", a.model},
+              {"tau", a.options.tau},
+              {"merge", a.options.merge},
+              {"simplify", a.options.simplify},
+              {"tetgen_switches", r.tetgen.switches},
+              {"model_volume", r.modelVolume},
+              {"components", comps},
+              {"complex",
+               {{"touching_pairs", r.complex.contactPairs},
+                {"overlapping_pairs", r.complex.overlappingPairs},
+                {"max_overlap_depth", r.complex.maxOverlapDepth},
+                {"contact_planes", r.complex.contactPlanes},
+                {"interface_facets", r.complex.interfaceFacets},
+                {"boundary_facets", r.complex.boundaryFacets}}},
+              {"max_outside", r.maxOutside},
+              {"hull_mesh", qualityJson(r.quality)},
+              {"volume_error", volErr},
+              {"seconds",
+               {{"decompose", r.times.decompose},
+                {"hulls", r.times.hulls},
+                {"complex", r.times.complex},
+                {"tetgen", r.times.tetgen},
+                {"quality", r.times.quality}}}};
+    if (a.compare) {
+      if (direct.status.ok())
+        j["original_mesh"] = qualityJson(direct.quality), j["original_mesh"]["seconds"] = direct.seconds,
+        j["original_mesh"]["volume_error"] = directErr;
+      else
+        j["original_mesh"] = {{"error", direct.status.message}};
+    }
+    std::ofstream out(a.json);
+    out << j.dump(2) << "\n";
+    if (!out) {
+      std::fprintf(stderr, "tetmesh: %s: cannot write\n", a.json.c_str());
+      return kOutputFailed;
+    }
+  }
+  return kOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Args a;
+  CLI::App app{"Tetrahedral mesh of the convex hulls of the solid ACD components (TetGen)."};
+  app.footer(exitCodes());
+  app.add_option("MODEL", a.model, "Closed mesh (OFF, OBJ, PLY, STL)")->required();
+  app.add_option("-t,--tau", a.options.tau, "Concavity tolerance, normalised units")->capture_default_str();
+  app.add_option("--simplify", a.options.simplify, "Hulls with at most K vertices that still contain their component (K >= 4)");
+  app.add_option("--quality", a.options.tetgen.radiusEdge, "TetGen radius-edge bound (q); 0: no quality refinement")
+      ->capture_default_str();
+  app.add_option("--max-volume", a.options.tetgen.maxVolume, "TetGen maximum tet volume (a), input units; 0: none");
+  app.add_option("-o,--output", a.out, "Mesh file (.vtk, .mesh) or base name for .node/.ele/.face");
+  app.add_option("--format", a.format, "vtk, mesh or tetgen (default: from the -o extension, else vtk)");
+  app.add_flag("--compare", a.compare, "Also mesh the model itself with TetGen and print both side by side");
+  app.add_flag("--merge", a.options.merge, "Use the decomposition's merge pass (hulls then overlap and are clipped)");
+  app.add_option("--threads", a.options.threads, "Decomposition threads, 0 = all cores")->capture_default_str();
+  app.add_option("--snap", a.options.tolerance,
+                 "Features closer than this (relative to the half-diagonal) are one: welding, contacts")
+      ->capture_default_str();
+  app.add_option("--json", a.json, "Write the report as JSON to this file");
+  app.add_option("--poly", a.poly, "Write the hull complex given to TetGen as a .poly file");
+  app.add_flag("-q,--quiet", a.quiet, "No progress on stderr");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? kOk : kUsage;
+  }
+  return run(a);
+}

@@ -1,0 +1,580 @@
+// The conforming complex of a set of convex hulls; see hull_complex.hpp for the method.
+#include "hull_complex.hpp"
+
+#include <acd/hull.hpp>
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Constrained_triangulation_plus_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+#include <string>
+#include <unordered_map>
+
+namespace tetmesh {
+
+namespace {
+
+using acd::Face;
+using acd::TriMesh;
+
+// ------------------------------------------------------------------ welding points
+/// Points closer than `tol` are one point (first come keeps its position).
+class PointWelder {
+ public:
+  explicit PointWelder(double tol) : tol_(tol), cell_(2.0 * tol) {}
+
+  int add(const Vec3& p) {
+    const std::array<long long, 3> c = cellOf(p);
+    for (long long dx = -1; dx <= 1; ++dx)
+      for (long long dy = -1; dy <= 1; ++dy)
+        for (long long dz = -1; dz <= 1; ++dz) {
+          auto it = grid_.find(key({c[0] + dx, c[1] + dy, c[2] + dz}));
+          if (it == grid_.end()) continue;
+          for (int id : it->second)
+            if ((points_[id] - p).norm() <= tol_) return id;
+        }
+    const int id = static_cast<int>(points_.size());
+    points_.push_back(p);
+    grid_[key(c)].push_back(id);
+    return id;
+  }
+
+  const std::vector<Vec3>& points() const { return points_; }
+
+ private:
+  std::array<long long, 3> cellOf(const Vec3& p) const {
+    return {static_cast<long long>(std::floor(p.x() / cell_)), static_cast<long long>(std::floor(p.y() / cell_)),
+            static_cast<long long>(std::floor(p.z() / cell_))};
+  }
+  static std::uint64_t key(const std::array<long long, 3>& c) {
+    std::uint64_t h = 1469598103934665603ull;
+    for (long long v : c) h = (h ^ static_cast<std::uint64_t>(v)) * 1099511628211ull;
+    return h;
+  }
+
+  double tol_, cell_;
+  std::vector<Vec3> points_;
+  std::unordered_map<std::uint64_t, std::vector<int>> grid_;
+};
+
+// ------------------------------------------------------------------ planes
+/// n . x = c with |n| = 1.
+struct ContactPlane {
+  Vec3 n = Vec3::UnitZ();
+  double c = 0.0;
+  double distance(const Vec3& p) const { return n.dot(p) - c; }
+};
+
+/// A region stays where side * (n . x - c) <= 0 for this plane.
+struct SideConstraint {
+  int plane = -1;
+  double side = 1.0;
+};
+
+std::vector<Vec3> uniqueFacetNormals(const TriMesh& hull) {
+  std::vector<Vec3> out;
+  for (int f = 0; f < static_cast<int>(hull.faces.size()); ++f) {
+    const Vec3 n = acd::faceNormal(hull, f);
+    const double len = n.norm();
+    if (!(len > 0)) continue;
+    const Vec3 u = n / len;
+    bool seen = false;
+    for (const Vec3& o : out)
+      if (o.dot(u) > 1.0 - 1e-12) {
+        seen = true;
+        break;
+      }
+    if (!seen) out.push_back(u);
+  }
+  return out;
+}
+
+double maxAlong(const std::vector<Vec3>& pts, const Vec3& n) {
+  double m = -std::numeric_limits<double>::infinity();
+  for (const Vec3& p : pts) m = std::max(m, n.dot(p));
+  return m;
+}
+double minAlong(const std::vector<Vec3>& pts, const Vec3& n) {
+  double m = std::numeric_limits<double>::infinity();
+  for (const Vec3& p : pts) m = std::min(m, n.dot(p));
+  return m;
+}
+
+/// Least-squares plane through points; normal oriented like `hint`.
+bool fitPlane(const std::vector<Vec3>& pts, const Vec3& hint, Vec3& normal) {
+  if (pts.size() < 3) return false;
+  Vec3 mean = Vec3::Zero();
+  for (const Vec3& p : pts) mean += p;
+  mean /= static_cast<double>(pts.size());
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (const Vec3& p : pts) cov += (p - mean) * (p - mean).transpose();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
+  if (es.info() != Eigen::Success) return false;
+  // A plane needs two clear directions of spread.
+  if (!(es.eigenvalues()(1) > 1e-12 * es.eigenvalues()(2))) return false;
+  normal = es.eigenvectors().col(0).normalized();
+  if (normal.dot(hint) < 0) normal = -normal;
+  return true;
+}
+
+/// Closest point to p on the intersection of the given planes (1 to 3 of them, independent).
+Vec3 projectOnto(const Vec3& p, const std::vector<const ContactPlane*>& planes) {
+  std::vector<const ContactPlane*> use;
+  for (const ContactPlane* q : planes) {
+    // Keep only planes independent enough of those already used.
+    std::vector<const ContactPlane*> trial = use;
+    trial.push_back(q);
+    Eigen::MatrixXd N(trial.size(), 3);
+    for (std::size_t r = 0; r < trial.size(); ++r) N.row(r) = trial[r]->n.transpose();
+    const Eigen::MatrixXd G = N * N.transpose();
+    if (G.determinant() > 1e-6) use = trial;
+    if (use.size() == 3) break;
+  }
+  if (use.empty()) return p;
+  Eigen::MatrixXd N(use.size(), 3);
+  Eigen::VectorXd r(use.size());
+  for (std::size_t k = 0; k < use.size(); ++k) {
+    N.row(k) = use[k]->n.transpose();
+    r(k) = use[k]->distance(p);
+  }
+  const Eigen::VectorXd lambda = (N * N.transpose()).ldlt().solve(r);
+  return p - N.transpose() * lambda;
+}
+
+/// Keeps the part of the convex hull of `pts` where side * (n . x - c) <= tol.
+std::vector<Vec3> clipConvex(const std::vector<Vec3>& pts, const ContactPlane& plane, double side, double tol,
+                             double& removedVolume) {
+  const acd::ConvexHull hull = acd::convexHull(pts);
+  if (hull.degenerate || hull.mesh.empty()) return {};
+  const TriMesh& m = hull.mesh;
+  std::vector<double> d(m.vertices.size());
+  bool any = false;
+  for (std::size_t v = 0; v < m.vertices.size(); ++v) {
+    d[v] = side * plane.distance(m.vertices[v]);
+    any = any || d[v] > tol;
+  }
+  if (!any) return m.vertices;
+  std::vector<Vec3> out;
+  for (std::size_t v = 0; v < m.vertices.size(); ++v)
+    if (d[v] <= tol) out.push_back(m.vertices[v]);
+  std::set<std::uint64_t> edges;
+  for (const Face& f : m.faces)
+    for (int k = 0; k < 3; ++k) {
+      const int a = f[k], b = f[(k + 1) % 3];
+      if (!edges.insert(acd::edgeKey(a, b)).second) continue;
+      if ((d[a] < -tol && d[b] > tol) || (d[b] < -tol && d[a] > tol)) {
+        const double t = d[a] / (d[a] - d[b]);
+        out.push_back(m.vertices[a] + t * (m.vertices[b] - m.vertices[a]));
+      }
+    }
+  const double before = acd::signedVolume(m);
+  const acd::ConvexHull kept = acd::convexHull(out);
+  removedVolume += before - (kept.degenerate ? 0.0 : acd::signedVolume(kept.mesh));
+  return kept.degenerate ? std::vector<Vec3>{} : out;
+}
+
+// ------------------------------------------------------------------ overlay on one plane
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+struct VertexInfo {
+  int id = -1;  // global point; -1 for points the triangulation made (constraint crossings)
+};
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<VertexInfo, K>;
+using Fb = CGAL::Constrained_triangulation_face_base_2<K>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+using Cdt = CGAL::Constrained_triangulation_plus_2<CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>>;
+
+struct PlaneFrame {
+  Vec3 origin, u, v;
+  explicit PlaneFrame(const ContactPlane& p) {
+    origin = p.c * p.n;
+    const Vec3 a = std::abs(p.n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+    u = p.n.cross(a).normalized();
+    v = p.n.cross(u);
+  }
+  K::Point_2 to2(const Vec3& x) const { return {(x - origin).dot(u), (x - origin).dot(v)}; }
+  Vec3 to3(const K::Point_2& q) const { return origin + q.x() * u + q.y() * v; }
+};
+
+bool insideTriangle2(const K::Point_2& p, const K::Point_2& a, const K::Point_2& b, const K::Point_2& c) {
+  const auto o1 = CGAL::orientation(a, b, p), o2 = CGAL::orientation(b, c, p), o3 = CGAL::orientation(c, a, p);
+  const bool hasNeg = o1 == CGAL::NEGATIVE || o2 == CGAL::NEGATIVE || o3 == CGAL::NEGATIVE;
+  const bool hasPos = o1 == CGAL::POSITIVE || o2 == CGAL::POSITIVE || o3 == CGAL::POSITIVE;
+  return !(hasNeg && hasPos);
+}
+
+/// Distance from p to segment ab and the parameter of its projection.
+double segmentDistance(const Vec3& p, const Vec3& a, const Vec3& b, double& t) {
+  const Vec3 ab = b - a;
+  const double len2 = ab.squaredNorm();
+  t = len2 > 0 ? (p - a).dot(ab) / len2 : 0.0;
+  const double tc = std::clamp(t, 0.0, 1.0);
+  return (a + tc * ab - p).norm();
+}
+
+/// Inserts into every facet edge the points of the complex that lie on it (within `tol`), and
+/// drops facets thinner than `tol` (three nearly collinear points the overlay can leave).
+/// TetGen needs both: a point on a segment that is not a vertex of it stops its recovery.
+void resolveTJunctions(Plc& plc, double tol) {
+  const std::vector<Vec3>& P = plc.points;
+  std::vector<int> byX(P.size());
+  for (std::size_t i = 0; i < P.size(); ++i) byX[i] = static_cast<int>(i);
+  std::sort(byX.begin(), byX.end(), [&](int a, int b) { return P[a].x() < P[b].x(); });
+  std::map<std::uint64_t, std::vector<int>> onEdge;
+  auto pointsOn = [&](int a0, int b0) -> const std::vector<int>& {
+    const int a = std::min(a0, b0), b = std::max(a0, b0);  // cached in this direction
+    const std::uint64_t key = acd::edgeKey(a, b);
+    auto it = onEdge.find(key);
+    if (it != onEdge.end()) return it->second;
+    std::vector<int>& found = onEdge[key];
+    const Vec3 lo = P[a].cwiseMin(P[b]) - Vec3::Constant(tol), hi = P[a].cwiseMax(P[b]) + Vec3::Constant(tol);
+    auto first = std::lower_bound(byX.begin(), byX.end(), lo.x(), [&](int i, double x) { return P[i].x() < x; });
+    for (auto it2 = first; it2 != byX.end() && P[*it2].x() <= hi.x(); ++it2) {
+      const int w = *it2;
+      if (w == a || w == b || (P[w].array() < lo.array()).any() || (P[w].array() > hi.array()).any()) continue;
+      double t = 0;
+      if (segmentDistance(P[w], P[a], P[b], t) <= tol && t > 0 && t < 1) found.push_back(w);
+    }
+    const Vec3 d = P[b] - P[a];
+    std::sort(found.begin(), found.end(), [&](int x, int y) { return (P[x] - P[a]).dot(d) < (P[y] - P[a]).dot(d); });
+    return found;
+  };
+  std::vector<Plc::Facet> kept;
+  for (const Plc::Facet& f : plc.facets) {
+    // Thin facets go: their long edge is split by their third point in the neighbouring facet.
+    Vec3 area = Vec3::Zero();
+    double longest = 0;
+    const int m = static_cast<int>(f.polygon.size());
+    for (int k = 0; k < m; ++k) {
+      const Vec3& a = P[f.polygon[k]];
+      const Vec3& b = P[f.polygon[(k + 1) % m]];
+      area += a.cross(b);
+      longest = std::max(longest, (b - a).norm());
+    }
+    if (!(area.norm() > 2.0 * tol * longest)) continue;
+    Plc::Facet g;
+    g.marker = f.marker;
+    for (int k = 0; k < m; ++k) {
+      const int a = f.polygon[k], b = f.polygon[(k + 1) % m];
+      g.polygon.push_back(a);
+      const std::vector<int>& in = pointsOn(a, b);
+      // Keep the order from a to b (the cache stores it for the smaller index first).
+      if (a < b)
+        g.polygon.insert(g.polygon.end(), in.begin(), in.end());
+      else
+        g.polygon.insert(g.polygon.end(), in.rbegin(), in.rend());
+    }
+    kept.push_back(std::move(g));
+  }
+  plc.facets = std::move(kept);
+}
+
+}  // namespace
+
+HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComplexOptions& options) {
+  HullComplex out;
+  const int n = static_cast<int>(hulls.size());
+  if (n == 0) {
+    out.status = acd::Status::error(acd::StatusCode::EmptyMesh, "no hulls to mesh");
+    return out;
+  }
+  // Scale and tolerance.
+  acd::Box3 box;
+  box.lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+  box.hi = -box.lo;
+  std::vector<acd::Box3> boxes(n);
+  for (int i = 0; i < n; ++i) {
+    if (hulls[i].faces.size() < 4 || !(acd::signedVolume(hulls[i]) > 0)) {
+      out.status = acd::Status::error(acd::StatusCode::DegenerateFace,
+                                      "hull " + std::to_string(i + 1) + " is not a solid (no volume)");
+      return out;
+    }
+    boxes[i] = acd::boundingBox(hulls[i]);
+    box.lo = box.lo.cwiseMin(boxes[i].lo);
+    box.hi = box.hi.cwiseMax(boxes[i].hi);
+  }
+  const double scale = 0.5 * box.size().norm();
+  const double tol = options.tolerance * scale;
+
+  // 1. Contacts between pairs, on clustered planes.
+  std::vector<std::vector<Vec3>> normals(n);
+  for (int i = 0; i < n; ++i) normals[i] = uniqueFacetNormals(hulls[i]);
+  std::vector<ContactPlane> planes;
+  std::vector<std::vector<SideConstraint>> constraints(n);
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j) {
+      const bool apart = ((boxes[i].lo.array() - tol > boxes[j].hi.array()) ||
+                          (boxes[j].lo.array() - tol > boxes[i].hi.array())).any();
+      if (apart) continue;
+      const auto& vi = hulls[i].vertices;
+      const auto& vj = hulls[j].vertices;
+      double bestGap = -std::numeric_limits<double>::infinity();
+      Vec3 best = Vec3::UnitZ();
+      auto consider = [&](const Vec3& nrm) {
+        const double gap = minAlong(vj, nrm) - maxAlong(vi, nrm);
+        if (gap > bestGap) bestGap = gap, best = nrm;
+      };
+      for (const Vec3& nrm : normals[i]) consider(nrm);
+      for (const Vec3& nrm : normals[j]) consider(-nrm);
+      if (bestGap > tol) continue;
+      ++out.contactPairs;
+      if (bestGap < -tol) {
+        ++out.overlappingPairs;
+        out.maxOverlapDepth = std::max(out.maxOverlapDepth, -bestGap);
+      } else {
+        // Touching: refit the plane to the vertices of both near it (the shared cut section).
+        const double hi = maxAlong(vi, best), lo = minAlong(vj, best);
+        const double band = 1e3 * tol;
+        std::vector<Vec3> near;
+        for (const Vec3& p : vi)
+          if (std::abs(best.dot(p) - hi) <= band) near.push_back(p);
+        for (const Vec3& p : vj)
+          if (std::abs(best.dot(p) - lo) <= band) near.push_back(p);
+        Vec3 fitted;
+        if (fitPlane(near, best, fitted)) {
+          const double gap = minAlong(vj, fitted) - maxAlong(vi, fitted);
+          if (gap >= bestGap) bestGap = gap, best = fitted;
+        }
+      }
+      ContactPlane pl{best, 0.5 * (maxAlong(vi, best) + minAlong(vj, best))};
+      // The same plane as an earlier contact (possibly facing the other way)?
+      int id = -1;
+      double sideI = 1.0;
+      for (int k = 0; k < static_cast<int>(planes.size()) && id < 0; ++k) {
+        const double dot = planes[k].n.dot(pl.n);
+        if (dot > 1.0 - 1e-12 && std::abs(planes[k].c - pl.c) <= 10 * tol) id = k, sideI = 1.0;
+        if (dot < -1.0 + 1e-12 && std::abs(planes[k].c + pl.c) <= 10 * tol) id = k, sideI = -1.0;
+      }
+      if (id < 0) {
+        id = static_cast<int>(planes.size());
+        planes.push_back(pl);
+      }
+      auto addConstraint = [&](int r, double side) {
+        for (const SideConstraint& s : constraints[r])
+          if (s.plane == id) return;
+        constraints[r].push_back({id, side});
+      };
+      addConstraint(i, sideI);
+      addConstraint(j, -sideI);
+    }
+  out.contactPlanes = static_cast<int>(planes.size());
+
+  // 2. Regions: clip overlaps, snap near-plane vertices onto their planes.
+  out.regions.resize(n);
+  out.clippedVolume.assign(n, 0.0);
+  std::vector<std::vector<Vec3>> regionPoints(n);
+  for (int i = 0; i < n; ++i) {
+    std::vector<Vec3> pts = hulls[i].vertices;
+    for (const SideConstraint& s : constraints[i]) {
+      pts = clipConvex(pts, planes[s.plane], s.side, tol, out.clippedVolume[i]);
+      if (pts.empty()) break;
+    }
+    for (Vec3& p : pts) {
+      std::vector<const ContactPlane*> near;
+      for (const SideConstraint& s : constraints[i])
+        if (std::abs(planes[s.plane].distance(p)) <= tol) near.push_back(&planes[s.plane]);
+      if (!near.empty()) p = projectOnto(p, near);
+    }
+    const acd::ConvexHull h = acd::convexHull(pts);
+    if (!h.degenerate) out.regions[i] = h.mesh;
+  }
+
+  // Global points and region triangles in global numbering.
+  PointWelder welder(tol);
+  std::vector<std::vector<Face>> regionTris(n);
+  std::vector<std::vector<int>> regionIds(n);
+  for (int i = 0; i < n; ++i) {
+    const TriMesh& r = out.regions[i];
+    for (const Vec3& p : r.vertices) regionIds[i].push_back(welder.add(p));
+    for (const Face& f : r.faces) {
+      const Face g{regionIds[i][f[0]], regionIds[i][f[1]], regionIds[i][f[2]]};
+      if (g[0] != g[1] && g[1] != g[2] && g[0] != g[2]) regionTris[i].push_back(g);
+    }
+  }
+  auto onPlane = [&](int id, int k) { return std::abs(planes[k].distance(welder.points()[id])) <= tol; };
+
+  // Which triangles lie on a contact plane (they go through the overlay), which are free.
+  const int np = static_cast<int>(planes.size());
+  std::vector<std::vector<std::vector<Face>>> planeTris(np, std::vector<std::vector<Face>>(n));
+  std::vector<std::vector<Face>> freeTris(n);
+  for (int i = 0; i < n; ++i)
+    for (const Face& f : regionTris[i]) {
+      int on = -1;
+      for (const SideConstraint& s : constraints[i])
+        if (onPlane(f[0], s.plane) && onPlane(f[1], s.plane) && onPlane(f[2], s.plane)) {
+          on = s.plane;
+          break;
+        }
+      if (on >= 0)
+        planeTris[on][i].push_back(f);
+      else
+        freeTris[i].push_back(f);
+    }
+
+  // Constraints and points of each plane: boundary edges of each region's face there, and the
+  // edges and vertices of regions that touch the plane without a face on it.
+  struct PlaneItems {
+    std::vector<std::pair<int, int>> edges;
+    std::vector<int> points;
+  };
+  std::vector<PlaneItems> items(np);
+  for (int k = 0; k < np; ++k) {
+    std::set<int> pts;
+    std::set<std::uint64_t> seenEdges;
+    for (int i = 0; i < n; ++i) {
+      bool touches = false;
+      for (const SideConstraint& s : constraints[i]) touches = touches || s.plane == k;
+      if (!touches) continue;
+      std::map<std::uint64_t, std::pair<int, int>> count;  // edge -> (uses, first a)
+      std::map<std::uint64_t, std::pair<int, int>> ends;
+      for (const Face& f : planeTris[k][i])
+        for (int e = 0; e < 3; ++e) {
+          const int a = f[e], b = f[(e + 1) % 3];
+          const std::uint64_t key = acd::edgeKey(a, b);
+          count[key].first++;
+          ends[key] = {a, b};
+        }
+      for (const auto& [key, c] : count)
+        if (c.first == 1 && seenEdges.insert(key).second) items[k].edges.push_back(ends[key]);
+      // Lower-dimensional contact: edges and vertices of the region on the plane.
+      for (const Face& f : regionTris[i])
+        for (int e = 0; e < 3; ++e) {
+          const int a = f[e], b = f[(e + 1) % 3];
+          if (onPlane(a, k)) pts.insert(a);
+          if (onPlane(a, k) && onPlane(b, k) && !count.count(acd::edgeKey(a, b)) &&
+              seenEdges.insert(acd::edgeKey(a, b)).second)
+            items[k].edges.push_back({a, b});
+        }
+    }
+    for (const auto& e : items[k].edges) pts.insert(e.first), pts.insert(e.second);
+    items[k].points.assign(pts.begin(), pts.end());
+  }
+
+  // 3. Overlay each plane until no plane adds a point to an edge another plane uses.
+  std::map<std::uint64_t, std::set<int>> splits;  // edge -> points strictly inside it
+  std::vector<Plc::Facet> overlayFacets;
+  bool changed = true;
+  for (int pass = 0; pass < 6 && changed; ++pass) {
+    changed = false;
+    ++out.overlayPasses;
+    overlayFacets.clear();
+    for (int k = 0; k < np; ++k) {
+      if (items[k].edges.empty()) continue;
+      const PlaneFrame frame(planes[k]);
+      auto P = [&](int id) -> const Vec3& { return welder.points()[id]; };
+      // Points of this plane that lie on an edge of it split that edge.
+      for (const auto& [a, b] : items[k].edges)
+        for (int w : items[k].points) {
+          if (w == a || w == b) continue;
+          double t = 0;
+          if (segmentDistance(P(w), P(a), P(b), t) <= tol && t > 0 && t < 1)
+            changed = splits[acd::edgeKey(a, b)].insert(w).second || changed;
+        }
+      Cdt cdt;
+      std::unordered_map<int, Cdt::Vertex_handle> handle;
+      auto vertex = [&](int id) {
+        auto it = handle.find(id);
+        if (it != handle.end()) return it->second;
+        Cdt::Vertex_handle vh = cdt.insert(frame.to2(P(id)));
+        if (vh->info().id < 0) vh->info().id = id;  // else an equal 2D point: keep the first id
+        handle.emplace(id, vh);
+        return vh;
+      };
+      for (int id : items[k].points) vertex(id);
+      std::vector<std::pair<std::uint64_t, std::pair<int, int>>> pieces;  // edge -> consecutive points
+      std::vector<Cdt::Constraint_id> ids;
+      for (const auto& [a, b] : items[k].edges) {
+        std::vector<int> chain{a};
+        auto it = splits.find(acd::edgeKey(a, b));
+        if (it != splits.end()) {
+          std::vector<int> inner(it->second.begin(), it->second.end());
+          const Vec3 d = P(b) - P(a);
+          std::sort(inner.begin(), inner.end(), [&](int x, int y) { return (P(x) - P(a)).dot(d) < (P(y) - P(a)).dot(d); });
+          chain.insert(chain.end(), inner.begin(), inner.end());
+        }
+        chain.push_back(b);
+        for (std::size_t c = 0; c + 1 < chain.size(); ++c) {
+          Cdt::Vertex_handle va = vertex(chain[c]), vb = vertex(chain[c + 1]);
+          if (va == vb) continue;
+          ids.push_back(cdt.insert_constraint(va, vb));
+          pieces.push_back({acd::edgeKey(a, b), {a, b}});
+        }
+      }
+      // Points the triangulation created where constraints cross become global points.
+      for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+        if (v->info().id < 0) v->info().id = welder.add(frame.to3(v->point()));
+      // Every point along a constraint splits the original edge.
+      for (std::size_t c = 0; c < ids.size(); ++c) {
+        const auto [a, b] = pieces[c].second;
+        for (auto v = cdt.vertices_in_constraint_begin(ids[c]); v != cdt.vertices_in_constraint_end(ids[c]); ++v) {
+          const int id = (*v)->info().id;
+          if (id != a && id != b) changed = splits[pieces[c].first].insert(id).second || changed;
+        }
+      }
+      // Triangles covered by a region's face on the plane become facets.
+      for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+        const int a = f->vertex(0)->info().id, b = f->vertex(1)->info().id, c = f->vertex(2)->info().id;
+        if (a == b || b == c || a == c) continue;
+        const K::Point_2 centroid = CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
+        int covered = 0;
+        for (int i = 0; i < n; ++i)
+          for (const Face& t : planeTris[k][i])
+            if (insideTriangle2(centroid, frame.to2(P(t[0])), frame.to2(P(t[1])), frame.to2(P(t[2])))) {
+              ++covered;
+              break;
+            }
+        if (covered == 0) continue;
+        overlayFacets.push_back({{a, b, c}, covered >= 2 ? kInterfaceFacet : kBoundaryFacet});
+      }
+    }
+  }
+  if (changed) {
+    out.status = acd::Status::error(acd::StatusCode::InternalError,
+                                    "the interfaces between hulls did not settle after " +
+                                        std::to_string(out.overlayPasses) + " overlay passes");
+    return out;
+  }
+
+  // Free triangles, with the points other facets put on their edges.
+  Plc& plc = out.plc;
+  plc.facets = overlayFacets;
+  for (int i = 0; i < n; ++i)
+    for (const Face& f : freeTris[i]) {
+      Plc::Facet facet;
+      for (int e = 0; e < 3; ++e) {
+        const int a = f[e], b = f[(e + 1) % 3];
+        facet.polygon.push_back(a);
+        auto it = splits.find(acd::edgeKey(a, b));
+        if (it == splits.end()) continue;
+        std::vector<int> inner(it->second.begin(), it->second.end());
+        const Vec3 d = welder.points()[b] - welder.points()[a];
+        std::sort(inner.begin(), inner.end(), [&](int x, int y) {
+          return (welder.points()[x] - welder.points()[a]).dot(d) < (welder.points()[y] - welder.points()[a]).dot(d);
+        });
+        facet.polygon.insert(facet.polygon.end(), inner.begin(), inner.end());
+      }
+      plc.facets.push_back(facet);
+    }
+  plc.points = welder.points();
+  resolveTJunctions(plc, tol);
+  for (const Plc::Facet& f : plc.facets) (f.marker == kInterfaceFacet ? out.interfaceFacets : out.boundaryFacets)++;
+
+  // One seed per region: the mean of its vertices, strictly inside a convex solid.
+  for (int i = 0; i < n; ++i) {
+    if (out.regions[i].empty()) continue;
+    Vec3 seed = Vec3::Zero();
+    for (const Vec3& p : out.regions[i].vertices) seed += p;
+    seed /= static_cast<double>(out.regions[i].vertices.size());
+    plc.regions.push_back({seed, i + 1});
+  }
+  return out;
+}
+
+}  // namespace tetmesh

@@ -1,0 +1,51 @@
+// One piecewise linear complex (PLC) for the union of several convex hulls, with a region per
+// hull, so that TetGen meshes the union conformingly: neighbouring regions share their
+// interface triangles, and every tet lies in exactly one region.
+//
+// How (details in docs/TETMESH.md):
+//  1. Contacts. For every pair of hulls, the facet normal of either hull along which they are
+//     farthest apart (the separating-axis test restricted to facet normals) gives a plane
+//     between them. Pairs closer than the tolerance along it are in contact there. Leaves of
+//     a decomposition without the merge pass touch only along their cut planes (each lies on
+//     one side of every plane that cut its ancestors), so the planes found are the cut planes,
+//     refitted to the vertices near them. Contact planes within the tolerance are one plane.
+//  2. Overlaps. Hulls that overlap (simplified hulls, or hulls of merged components) are both
+//     clipped by that plane, each keeping its own side: the overlap is split at the plane of
+//     least penetration. Vertices within the tolerance of a contact plane are projected onto
+//     it (onto the line or point where two or three of them meet).
+//  3. Interfaces. On each contact plane, the faces, edges and vertices the regions have there
+//     are overlaid in a constrained Delaunay triangulation; each of its triangles covered by a
+//     region becomes a facet, an interface when covered from both sides. Points the overlay
+//     adds on an edge are added to every other facet with that edge (no T-junctions).
+#pragma once
+
+#include "tet_mesh.hpp"
+
+#include <acd/mesh.hpp>
+#include <acd/status.hpp>
+
+#include <vector>
+
+namespace tetmesh {
+
+struct HullComplexOptions {
+  double tolerance = 1e-8;  // snapping distance, relative to the half-diagonal of all hulls' box
+};
+
+struct HullComplex {
+  acd::Status status;
+  Plc plc;                             // region labels are 1 + index into `hulls`
+  std::vector<acd::TriMesh> regions;   // each hull after overlap clipping and snapping; empty if it vanished
+  std::vector<double> clippedVolume;   // per hull: volume given to its neighbours' side of a plane
+  int contactPairs = 0;                // pairs of hulls that touch or overlap
+  int overlappingPairs = 0;            // of these, pairs that overlapped by more than the tolerance
+  int contactPlanes = 0;
+  double maxOverlapDepth = 0.0;        // input units
+  int interfaceFacets = 0, boundaryFacets = 0;
+  int overlayPasses = 0;
+};
+
+/// Builds the PLC. Each hull must be a closed convex triangle mesh; degenerate ones are refused.
+HullComplex buildHullComplex(const std::vector<acd::TriMesh>& hulls, const HullComplexOptions& options = {});
+
+}  // namespace tetmesh

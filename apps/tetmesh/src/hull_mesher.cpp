@@ -1,0 +1,127 @@
+// The tetmesh pipeline; see hull_mesher.hpp.
+#include "hull_mesher.hpp"
+
+#include "hull_simplify.hpp"
+
+#include <acd/diagnosis.hpp>
+#include <acd/hull.hpp>
+
+#include <chrono>
+
+namespace tetmesh {
+
+namespace {
+
+double since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+HullMeshResult meshHulls(const acd::TriMesh& model, const HullMeshOptions& options) {
+  HullMeshResult r;
+  if (options.simplify != 0 && options.simplify < 4) {
+    r.status = acd::Status::error(acd::StatusCode::InvalidParameter,
+                                  "--simplify must be at least 4 (a tetrahedron), got " + std::to_string(options.simplify));
+    return r;
+  }
+  auto t0 = std::chrono::steady_clock::now();
+  acd::DecomposeOptions dopt;
+  dopt.tau = options.tau;
+  dopt.merge = options.merge;
+  dopt.threads = options.threads;
+  r.decomposition = acd::decompose(model, dopt);
+  r.times.decompose = since(t0);
+  if (!r.decomposition.status.ok()) {
+    r.status = r.decomposition.status;
+    return r;
+  }
+  for (const acd::Component& c : r.decomposition.components) r.modelVolume += acd::signedVolume(c.mesh);
+
+  t0 = std::chrono::steady_clock::now();
+  for (const acd::Component& c : r.decomposition.components) {
+    acd::TriMesh hull = c.hull.empty() ? acd::hullMesh(c.mesh.vertices) : c.hull;
+    r.hullVertices.push_back(static_cast<int>(hull.vertices.size()));
+    if (options.simplify > 0) {
+      SimplifiedHull s = simplifyHull(hull, options.simplify);
+      if (!s.reached) ++r.simplifyMissed;
+      hull = std::move(s.mesh);
+    }
+    r.maxOutside = std::max(r.maxOutside, maxOutsideDistance(hull, c.mesh.vertices));
+    r.hulls.push_back(std::move(hull));
+  }
+  r.times.hulls = since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  HullComplexOptions copt;
+  copt.tolerance = options.tolerance;
+  r.complex = buildHullComplex(r.hulls, copt);
+  r.times.complex = since(t0);
+  if (!r.complex.status.ok()) {
+    r.status = r.complex.status;
+    return r;
+  }
+  for (const acd::TriMesh& region : r.complex.regions)
+    if (!region.empty()) r.hullsVolume += acd::signedVolume(region);
+
+  r.tetgen = runTetGen(r.complex.plc, options.tetgen);
+  r.times.tetgen = r.tetgen.seconds;
+  if (!r.tetgen.ok) {
+    // Say which facets were at fault: TetGen's own intersection check (`d`) on the same input.
+    TetGenOptions check = options.tetgen;
+    check.checkIntersections = true;
+    const TetGenResult detect = runTetGen(r.complex.plc, check);
+    std::string why = "meshing the hulls: " + r.tetgen.error;
+    if (!detect.ok) why += " (intersection check: " + detect.error + ")";
+    r.status = acd::Status::error(acd::StatusCode::InternalError, why);
+    return r;
+  }
+  t0 = std::chrono::steady_clock::now();
+  r.quality = measureQuality(r.tetgen.mesh);
+  r.times.quality = since(t0);
+  return r;
+}
+
+DirectMeshResult meshModelDirectly(const acd::TriMesh& model, const TetGenOptions& options) {
+  DirectMeshResult r;
+  const auto t0 = std::chrono::steady_clock::now();
+  const acd::PreparedSolid solid = acd::prepareSolid(model);
+  if (!solid.status.ok()) {
+    r.status = solid.status;
+    r.seconds = since(t0);
+    return r;
+  }
+  Plc plc;
+  for (const acd::TriMesh& piece : solid.components) {
+    const int base = static_cast<int>(plc.points.size());
+    plc.points.insert(plc.points.end(), piece.vertices.begin(), piece.vertices.end());
+    for (const acd::Face& f : piece.faces) plc.facets.push_back({{base + f[0], base + f[1], base + f[2]}, kBoundaryFacet});
+  }
+  // TetGen cannot recover from intersecting facets; refuse them here, by name.
+  acd::TriMesh all;
+  for (const acd::TriMesh& piece : solid.components) {
+    const int base = static_cast<int>(all.vertices.size());
+    all.vertices.insert(all.vertices.end(), piece.vertices.begin(), piece.vertices.end());
+    for (const acd::Face& f : piece.faces) all.faces.push_back({base + f[0], base + f[1], base + f[2]});
+  }
+  r.selfIntersections = acd::countSelfIntersections(all);
+  if (r.selfIntersections > 0) {
+    r.status = acd::Status::error(acd::StatusCode::DegenerateFace,
+                                  "the surface intersects itself (" + std::to_string(r.selfIntersections) +
+                                      " pairs of faces); TetGen needs a surface without self-intersections");
+    r.seconds = since(t0);
+    return r;
+  }
+  TetGenOptions o = options;
+  o.regions = false;
+  r.tetgen = runTetGen(plc, o);
+  r.seconds = since(t0);
+  if (!r.tetgen.ok) {
+    r.status = acd::Status::error(acd::StatusCode::InternalError, r.tetgen.error);
+    return r;
+  }
+  r.quality = measureQuality(r.tetgen.mesh);
+  return r;
+}
+
+}  // namespace tetmesh

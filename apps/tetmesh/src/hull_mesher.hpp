@@ -1,0 +1,58 @@
+// The tetmesh pipeline: solid ACD, a convex hull per component (optionally simplified), one
+// conforming complex of the hulls, TetGen; and, for comparison, TetGen on the model itself.
+#pragma once
+
+#include "hull_complex.hpp"
+#include "mesh_quality.hpp"
+#include "tetgen_run.hpp"
+
+#include <acd/decompose.hpp>
+
+#include <string>
+#include <vector>
+
+namespace tetmesh {
+
+struct HullMeshOptions {
+  double tau = 0.2;          // concavity tolerance of the decomposition, normalised units
+  int simplify = 0;          // > 0: hulls with at most this many vertices (>= 4)
+  bool merge = false;        // the decomposition's merge pass; off keeps hulls apart along cut planes
+  int threads = 0;           // decomposition threads, 0 = all cores
+  double tolerance = 1e-8;   // complex snapping tolerance (relative)
+  TetGenOptions tetgen;
+};
+
+struct HullMeshTimes {
+  double decompose = 0, hulls = 0, complex = 0, tetgen = 0, quality = 0;  // wall seconds
+};
+
+struct HullMeshResult {
+  acd::Status status;                    // not ok: nothing was meshed; message says why
+  acd::Decomposition decomposition;
+  std::vector<acd::TriMesh> hulls;       // per component, as meshed (simplified if asked)
+  std::vector<int> hullVertices;         // per component, before simplification
+  int simplifyMissed = 0;                // hulls that could not get down to `simplify` vertices
+  double maxOutside = 0.0;               // largest distance of a component vertex outside its hull
+  HullComplex complex;
+  TetGenResult tetgen;
+  MeshQuality quality;
+  double modelVolume = 0.0;              // input units
+  double hullsVolume = 0.0;              // volume of the union of the hull regions
+  HullMeshTimes times;
+};
+
+HullMeshResult meshHulls(const acd::TriMesh& model, const HullMeshOptions& options);
+
+struct DirectMeshResult {
+  acd::Status status;        // not ok: the model cannot be given to TetGen (or TetGen failed)
+  TetGenResult tetgen;
+  MeshQuality quality;
+  int selfIntersections = 0;
+  double seconds = 0.0;      // validation + TetGen
+};
+
+/// TetGen on the model's own surface (after the same checks and safe repairs as `acd`).
+/// Refuses self-intersecting surfaces before TetGen sees them.
+DirectMeshResult meshModelDirectly(const acd::TriMesh& model, const TetGenOptions& options);
+
+}  // namespace tetmesh

@@ -1,0 +1,108 @@
+// The complex of hulls: contacts, overlap clipping and interface overlay on boxes with known answers.
+#include "hull_complex.hpp"
+#include "tet_checks.hpp"
+#include "tetgen_run.hpp"
+
+#include <acd/shapes.hpp>
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+using namespace tetmesh;
+
+namespace {
+
+/// Meshes the complex of these hulls with TetGen (no refinement) and checks the basics.
+TetMesh meshOf(const HullComplex& c) {
+  TetGenOptions o;
+  o.radiusEdge = 0;
+  const TetGenResult r = runTetGen(c.plc, o);
+  EXPECT_TRUE(r.ok) << r.error;
+  for (int t = 0; t < static_cast<int>(r.mesh.tets.size()); ++t) EXPECT_GT(tetVolume(r.mesh, t), 0.0);
+  for (const auto& [face, tets] : tmtest::tetFaces(r.mesh)) EXPECT_LE(tets.size(), 2u);
+  return r.mesh;
+}
+
+std::vector<double> volumePerLabel(const TetMesh& m, int n) {
+  std::vector<double> v(n + 1, 0.0);
+  for (int t = 0; t < static_cast<int>(m.tets.size()); ++t) v.at(m.labels[t]) += tetVolume(m, t);
+  return v;
+}
+
+double interfaceArea(const TetMesh& m) {
+  double area = 0;
+  for (const auto& [face, tets] : tmtest::tetFaces(m))
+    if (tets.size() == 2 && m.labels[tets[0]] != m.labels[tets[1]]) area += tmtest::triangleArea(m, face);
+  return area;
+}
+
+}  // namespace
+
+TEST(HullComplex, SeparateHullsHaveNoContact) {
+  const HullComplex c = buildHullComplex({acd::shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1)),
+                                          acd::shapes::box(Vec3(2, 0, 0), Vec3(3, 1, 1))});
+  ASSERT_TRUE(c.status.ok()) << c.status.message;
+  EXPECT_EQ(c.contactPairs, 0);
+  EXPECT_EQ(c.interfaceFacets, 0);
+  const TetMesh m = meshOf(c);
+  const auto v = volumePerLabel(m, 2);
+  EXPECT_NEAR(v[1], 1.0, 1e-12);
+  EXPECT_NEAR(v[2], 1.0, 1e-12);
+}
+
+TEST(HullComplex, PartlyOverlappingFacesBecomeOneInterface) {
+  // A unit cube on a 2 x 2 x 1 slab, half over its edge: it stands at z = 1 on
+  // [1.5, 2.5] x [0.5, 1.5], so the faces share [1.5, 2] x [0.5, 1.5], area 0.5.
+  const HullComplex c = buildHullComplex({acd::shapes::box(Vec3(0, 0, 0), Vec3(2, 2, 1)),
+                                          acd::shapes::box(Vec3(1.5, 0.5, 1), Vec3(2.5, 1.5, 2))});
+  ASSERT_TRUE(c.status.ok()) << c.status.message;
+  EXPECT_EQ(c.contactPairs, 1);
+  EXPECT_EQ(c.overlappingPairs, 0);
+  EXPECT_EQ(c.contactPlanes, 1);
+  EXPECT_GT(c.interfaceFacets, 0);
+  const TetMesh m = meshOf(c);
+  const auto v = volumePerLabel(m, 2);
+  EXPECT_NEAR(v[1], 4.0, 1e-12);
+  EXPECT_NEAR(v[2], 1.0, 1e-12);
+  EXPECT_NEAR(interfaceArea(m), 0.5, 1e-12);
+}
+
+TEST(HullComplex, OverlappingHullsAreSplitAtOnePlane) {
+  // Two unit-section bars overlapping over x in [1, 1.5]: the overlap goes to one side of a
+  // plane x = const in [1, 1.5]; together they fill the union, volume 2 * 1.5 - 0.5 = 2.5.
+  const HullComplex c = buildHullComplex({acd::shapes::box(Vec3(0, 0, 0), Vec3(1.5, 1, 1)),
+                                          acd::shapes::box(Vec3(1, 0, 0), Vec3(2.5, 1, 1))});
+  ASSERT_TRUE(c.status.ok()) << c.status.message;
+  EXPECT_EQ(c.overlappingPairs, 1);
+  EXPECT_NEAR(c.maxOverlapDepth, 0.5, 1e-12);
+  const TetMesh m = meshOf(c);
+  const auto v = volumePerLabel(m, 2);
+  EXPECT_NEAR(v[1] + v[2], 2.5, 1e-12);
+  EXPECT_NEAR(v[1], 1.25, 1e-12);  // split in the middle of the overlap
+  EXPECT_NEAR(interfaceArea(m), 1.0, 1e-12);
+  EXPECT_NEAR(c.clippedVolume[0] + c.clippedVolume[1], 0.5, 1e-12);
+}
+
+TEST(HullComplex, FourBoxesMeetingAtAnEdgeConform) {
+  // Four unit cubes around the z axis; a fifth across the top of two of them. Interfaces
+  // cross each other (T-junctions where the top slab meets the vertical interface).
+  std::vector<acd::TriMesh> hulls{acd::shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1)), acd::shapes::box(Vec3(-1, 0, 0), Vec3(0, 1, 1)),
+                                  acd::shapes::box(Vec3(-1, -1, 0), Vec3(0, 0, 1)), acd::shapes::box(Vec3(0, -1, 0), Vec3(1, 0, 1)),
+                                  acd::shapes::box(Vec3(-0.5, -0.25, 1), Vec3(0.75, 0.5, 1.5))};
+  const HullComplex c = buildHullComplex(hulls);
+  ASSERT_TRUE(c.status.ok()) << c.status.message;
+  const TetMesh m = meshOf(c);
+  const auto v = volumePerLabel(m, 5);
+  for (int i = 1; i <= 4; ++i) EXPECT_NEAR(v[i], 1.0, 1e-12) << i;
+  EXPECT_NEAR(v[5], 1.25 * 0.75 * 0.5, 1e-12);
+  // Interfaces: four unit squares between the cubes, plus the slab's bottom 1.25 x 0.75.
+  EXPECT_NEAR(interfaceArea(m), 4.0 + 1.25 * 0.75, 1e-12);
+}
+
+TEST(HullComplex, RefusesAFlatHull) {
+  acd::TriMesh flat = acd::shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 0));
+  const HullComplex c = buildHullComplex({flat});
+  EXPECT_FALSE(c.status.ok());
+  EXPECT_NE(c.status.message.find("hull 1"), std::string::npos) << c.status.message;
+}

@@ -1,0 +1,79 @@
+// The tetmesh command: files, report, exit codes and error messages.
+#include "helpers.hpp"
+
+#include <acd/io.hpp>
+#include <acd/shapes.hpp>
+
+#include <gtest/gtest.h>
+
+using acdtest::runTool;
+using acdtest::TempDir;
+
+TEST(TetmeshCli, BoxToEveryFormat) {
+  TempDir dir("tetmesh_cli_box");
+  ASSERT_TRUE(acd::writeMesh(dir / "box.off", acd::shapes::box(acd::Vec3(0, 0, 0), acd::Vec3(1, 2, 3))).ok());
+  auto r = runTool(TETMESH_CLI, acdtest::quote(dir / "box.off") + " -o " + acdtest::quote(dir / "box.vtk") + " --compare --json " +
+                                    acdtest::quote(dir / "report.json"),
+                   dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("original model"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("+0.00%"), std::string::npos) << r.out;
+  EXPECT_NE(acdtest::slurp(dir / "box.vtk").find("UNSTRUCTURED_GRID"), std::string::npos);
+  EXPECT_NE(acdtest::slurp(dir / "report.json").find("\"hull_mesh\""), std::string::npos);
+  r = runTool(TETMESH_CLI, acdtest::quote(dir / "box.off") + " -o " + acdtest::quote(dir / "box.mesh"), dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(acdtest::slurp(dir / "box.mesh").find("Tetrahedra"), std::string::npos);
+  r = runTool(TETMESH_CLI, acdtest::quote(dir / "box.off") + " --format tetgen -o " + acdtest::quote(dir / "box"), dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_FALSE(acdtest::slurp(dir / "box.ele").empty());
+  EXPECT_FALSE(acdtest::slurp(dir / "box.node").empty());
+  EXPECT_FALSE(acdtest::slurp(dir / "box.face").empty());
+}
+
+TEST(TetmeshCli, BadInputIsAClearError) {
+  TempDir dir("tetmesh_cli_bad");
+  // Missing file.
+  auto r = runTool(TETMESH_CLI, acdtest::quote(dir / "missing.off"), dir);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("missing.off"), std::string::npos) << r.err;
+  // No faces at all.
+  {
+    std::ofstream(dir / "empty.off") << "OFF\n0 0 0\n";
+  }
+  r = runTool(TETMESH_CLI, acdtest::quote(dir / "empty.off"), dir);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("tetmesh: "), std::string::npos) << r.err;
+  // Garbage file.
+  {
+    std::ofstream(dir / "junk.off") << "OFF\n3 1 0\n0 0 nan\n";
+  }
+  r = runTool(TETMESH_CLI, acdtest::quote(dir / "junk.off"), dir);
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_FALSE(r.err.empty());
+  // Bad parameters.
+  ASSERT_TRUE(acd::writeMesh(dir / "box.off", acd::shapes::box(acd::Vec3(0, 0, 0), acd::Vec3(1, 1, 1))).ok());
+  r = runTool(TETMESH_CLI, acdtest::quote(dir / "box.off") + " --simplify 3", dir);
+  EXPECT_EQ(r.code, 3);
+  EXPECT_NE(r.err.find("--simplify"), std::string::npos) << r.err;
+  r = runTool(TETMESH_CLI, acdtest::quote(dir / "box.off") + " --quality 0.5", dir);
+  EXPECT_EQ(r.code, 3);
+  r = runTool(TETMESH_CLI, acdtest::quote(dir / "box.off") + " --format stl -o x.stl", dir);
+  EXPECT_EQ(r.code, 3);
+  r = runTool(TETMESH_CLI, acdtest::quote(dir / "box.off") + " -o /nonexistent-dir/x.vtk", dir);
+  EXPECT_EQ(r.code, 5);
+  EXPECT_NE(r.err.find("/nonexistent-dir/x.vtk"), std::string::npos) << r.err;
+}
+
+TEST(TetmeshCli, SelfIntersectingModelIsNotGivenToTetGen) {
+  // Two boxes through each other as one surface: the hulls are meshed; the direct mesh is refused.
+  TempDir dir("tetmesh_cli_cross");
+  acd::TriMesh a = acd::shapes::box(acd::Vec3(0, 0, 0), acd::Vec3(2, 2, 2));
+  const acd::TriMesh b = acd::shapes::box(acd::Vec3(1, 1, 1), acd::Vec3(3, 3, 3));
+  const int base = static_cast<int>(a.vertices.size());
+  a.vertices.insert(a.vertices.end(), b.vertices.begin(), b.vertices.end());
+  for (const acd::Face& f : b.faces) a.faces.push_back({f[0] + base, f[1] + base, f[2] + base});
+  ASSERT_TRUE(acd::writeMesh(dir / "cross.off", a).ok());
+  auto r = runTool(TETMESH_CLI, acdtest::quote(dir / "cross.off") + " --compare", dir);
+  EXPECT_NE(r.code, -1);  // no crash whatever the outcome
+  EXPECT_NE(r.out.find("original model not meshed: the surface intersects itself"), std::string::npos) << r.out << r.err;
+}
