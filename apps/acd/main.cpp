@@ -2,6 +2,7 @@
 //   acd decompose MODEL [-t TAU] ... -o OUTDIR   components, hulls.obj, report.json, summary table
 //   acd info MODEL                              mesh diagnosis
 //   acd evaluate MODEL HULLS.obj                how well any set of hulls approximates the model
+//   acd decompose MODEL --surface [-t TAU] -o OUT surface ACD: patches.obj, hulls.obj, report.json (surface.cpp)
 //   acd decompose MODEL --exact [--surface]     exact convex decomposition (exact.cpp)
 //   acd table [--models ...]                    the paper's Table 1 and Figures 18-19 (table.cpp)
 // Exit codes are listed in exitCodes() and in --help.
@@ -12,6 +13,7 @@
 
 #include <CLI/CLI.hpp>
 #include "exact.hpp"
+#include "surface.hpp"
 #include "table.hpp"
 #include <nlohmann/json.hpp>
 
@@ -112,6 +114,7 @@ struct DecomposeArgs {
   bool noGrouping = false;
   bool noMerge = false;
   bool noFillHoles = false;
+  bool surface = false;
   bool quiet = false;
 };
 
@@ -345,6 +348,9 @@ int main(int argc, char** argv) {
   eval->add_option("--threads", eo.threads, "Worker threads, 0 = all cores")->capture_default_str();
   eval->add_flag("--json", evalJson, "Print JSON instead of a table");
 
+  dec->add_flag("--surface", da.surface,
+                "Surface ACD: split the surface along global cuts into patches (patches.obj, hulls.obj); open meshes "
+                "stay open. With --exact: convex surface patches");
   // Keep after every other decompose option: --exact adds --surface if no one else has.
   acdcli::addExactOptions(*dec);
   CLI::App* table = acdcli::addTableCommand(app);
@@ -357,6 +363,19 @@ int main(int argc, char** argv) {
   }
   try {
     if (*dec && acdcli::exactRequested(*dec)) return acdcli::runExact(*dec, da.model, da.out, da.quiet);
+    if (*dec && da.surface) {
+      acdcli::SurfaceArgs sa;
+      sa.model = da.model;
+      sa.out = da.out;
+      sa.quiet = da.quiet;
+      sa.options.tau = da.options.tau;
+      sa.options.epsilon = da.options.epsilon;
+      sa.options.delta = da.options.delta;
+      sa.options.threads = da.options.threads;
+      sa.options.featureGrouping = !da.noGrouping;
+      sa.options.merge = !da.noMerge;
+      return acdcli::runSurfaceDecompose(sa);
+    }
     if (*dec) return runDecompose(da);
     if (*table) return acdcli::runTable();
     if (*info) return runInfo(infoModel);

@@ -2,15 +2,24 @@
 #include <acd/open_surface.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace acd {
 
 std::vector<Vec3> vertexNormals(const TriMesh& mesh) {
+  // Weighted by the corner angle, not the area: at a hull vertex one huge facet (a flat cap over an
+  // opening) must not outvote the thin facets that carry the other half of its normal cone.
   std::vector<Vec3> n(mesh.vertices.size(), Vec3::Zero());
   for (int f = 0; f < static_cast<int>(mesh.faces.size()); ++f) {
-    const Vec3 c = faceNormal(mesh, f);  // length is twice the area: area weighting for free
-    for (int v : mesh.faces[f]) n[v] += c;
+    const Vec3 c = faceNormal(mesh, f);
+    if (!(c.norm() > 0)) continue;
+    const Vec3 unit = c.normalized();
+    for (int k = 0; k < 3; ++k) {
+      const Vec3& p = mesh.vertices[mesh.faces[f][k]];
+      const Vec3 a = mesh.vertices[mesh.faces[f][(k + 1) % 3]] - p, b = mesh.vertices[mesh.faces[f][(k + 2) % 3]] - p;
+      n[mesh.faces[f][k]] += std::atan2(a.cross(b).norm(), a.dot(b)) * unit;
+    }
   }
   for (Vec3& x : n)
     if (x.norm() > 0) x.normalize();

@@ -16,14 +16,14 @@
 
 namespace acd {
 
-/// Area-weighted vertex normals (unit; zero for a vertex without area).
+/// Vertex normals weighted by corner angle (unit; zero for a vertex without area).
 std::vector<Vec3> vertexNormals(const TriMesh& mesh);
 
 /// Vertices on a boundary edge (an edge with a face on one side only).
 std::vector<char> boundaryVertices(const SurfaceGraph& graph);
 
 /// Per hull vertex: 1 when its outward normal on the hull (mean of its facets' normals,
-/// weighted by area) and its normal on the surface point in opposite directions.
+/// weighted by corner angle) and its normal on the surface point in opposite directions.
 std::vector<char> concaveHullVertices(const TriMesh& mesh, const ConvexHull& hull);
 
 /// Turns every face of an open surface when most of its hull vertices are concave: the
