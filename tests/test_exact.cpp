@@ -212,12 +212,21 @@ TEST(ExactSolid, MemoryCapReportsUnfinished) {
   EXPECT_FALSE(d.note.empty());
 }
 
-TEST(ExactSolid, RefusesOpenMesh) {
+// An open mesh has its holes filled first, as for solid ACD, or is refused when asked to.
+TEST(ExactSolid, OpenMeshFilledOrRefused) {
   TriMesh open = shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1));
-  open.faces.pop_back();
-  const ExactDecomposition d = solidECD(open);
-  EXPECT_FALSE(d.status.ok());
-  EXPECT_TRUE(d.pieces.empty());
+  open.faces.pop_back();  // a triangular hole: filling it gives the box back
+  ExactOptions refuse;
+  refuse.fillHoles = false;
+  const ExactDecomposition r = exactSolidDecomposition(open, refuse);
+  EXPECT_EQ(r.status.code, StatusCode::OpenMesh) << r.status.message;
+  EXPECT_TRUE(r.pieces.empty());
+  const ExactDecomposition d = exactSolidDecomposition(open);
+  ASSERT_TRUE(d.status.ok()) << d.status.message;
+  EXPECT_EQ(d.holesFilled, 1);
+  EXPECT_FALSE(d.repairs.empty());
+  ASSERT_EQ(d.pieces.size(), 1u);
+  EXPECT_NEAR(signedVolume(d.pieces[0]), 1.0, 1e-12);
 }
 
 TEST(ExactSolid, RefusesSelfIntersectingInput) {

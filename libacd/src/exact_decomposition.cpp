@@ -14,6 +14,7 @@
 
 #include <poll.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -265,11 +266,15 @@ ExactDecomposition exactSolidDecomposition(const TriMesh& closedMesh, const Exac
     out.status = Status::error(StatusCode::InvalidParameter, "time limit is not a number");
     return out;
   }
-  const PreparedSolid prepared = prepareSolid(closedMesh);
+  PrepareOptions prepare;
+  prepare.openMeshes = options.fillHoles ? OpenMeshPolicy::FillHoles : OpenMeshPolicy::Refuse;
+  const PreparedSolid prepared = prepareSolid(closedMesh, prepare);
   if (!prepared.status.ok()) {
     out.status = prepared.status;
     return out;
   }
+  out.holesFilled = prepared.holesFilled;
+  out.repairs = prepared.repairs;
   TriMesh all;  // the repaired solids together: self-intersections between them count too
   for (const TriMesh& c : prepared.components) {
     const int base = static_cast<int>(all.vertices.size());
@@ -291,6 +296,7 @@ ExactDecomposition exactSolidDecomposition(const TriMesh& closedMesh, const Exac
     return out;
   }
   std::fflush(nullptr);  // the child must not flush the parent's buffered output again
+  const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0) {
     ::close(fds[0]), ::close(fds[1]);
@@ -299,6 +305,9 @@ ExactDecomposition exactSolidDecomposition(const TriMesh& closedMesh, const Exac
   }
   if (pid == 0) {
     ::close(fds[0]);
+    // Never outlive the caller: an interrupted run must not leave hours of work behind.
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(3);
     runWorker(fds[1], prepared.components, options.maxPieces, options.memoryLimitBytes);
   }
   ::close(fds[1]);

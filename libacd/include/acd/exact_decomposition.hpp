@@ -17,6 +17,7 @@ struct ExactOptions {
   double timeLimitSeconds = 60.0;                     // wall clock for the whole run; <= 0: no limit
   std::size_t maxPieces = 1000000;                    // pieces beyond this are counted, not returned
   std::size_t memoryLimitBytes = std::size_t(8) << 30;  // address space of the worker; 0: no limit
+  bool fillHoles = true;  // close an open mesh's holes first, as solid ACD does (false: refuse it)
   /// Called from the calling thread about once a second and at each stage: what the worker is
   /// doing ("decomposing solid 1 of 1") and the seconds since the start.
   std::function<void(const std::string& stage, double seconds)> progress;
@@ -29,12 +30,14 @@ struct ExactDecomposition {
   std::size_t pieceCount = 0;      // pieces made; more than pieces.size() when maxPieces was hit
   std::size_t solids = 0;          // closed connected pieces of the input, decomposed one by one
   std::size_t unfinishedSolids = 0;  // solids whose decomposition the cap stopped (no pieces from them)
-  int reflexEdges = 0;             // concave edges of the input: what the decomposition resolves
+  int reflexEdges = 0;             // concave edges of the (repaired) input: what the decomposition resolves
+  int holesFilled = 0;             // boundary loops closed before decomposing
+  std::vector<std::string> repairs;  // what was changed before decomposing, one line each
   double seconds = 0.0;            // wall time, including the hulls of the pieces
   std::string note;                // one line: why it did not finish, or what was capped
 };
 
-/// Decomposes a closed, non-self-intersecting mesh into interior-disjoint convex pieces whose
+/// Decomposes a closed (or, with fillHoles, hole-filled), non-self-intersecting mesh into interior-disjoint convex pieces whose
 /// union is the input. Input problems come back in `status`; hitting a cap is not an error
 /// (`finished` is false and `note` says which cap and where it stopped). Nothing throws.
 ExactDecomposition exactSolidDecomposition(const TriMesh& closedMesh, const ExactOptions& options = {});
