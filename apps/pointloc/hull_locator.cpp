@@ -76,15 +76,14 @@ void HullLocator::buildIndex(const acd::Box3& box, std::size_t targetCells, tbb:
   const std::size_t slab = static_cast<std::size_t>(gx_) * gy_;
   cellCode_.assign(slab * gz_, kOutside);
   struct Slab {
-    std::vector<std::uint32_t> boundaryRuns, runPlanes;  // local offsets, closed at the end
-    std::vector<Plane> planes;
-    std::size_t inside = 0;
+    std::vector<Slot> slots;  // boundary records, offsets local to the slab until concatenated
+    std::size_t inside = 0, boundary = 0, runs = 0;
   };
   std::vector<Slab> slabs(gz_);
   const int nh = size();
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<int>(0, gz_), [&](const tbb::blocked_range<int>& r) {
-      std::vector<std::uint32_t> crossing;
+      std::vector<std::pair<double, std::uint32_t>> crossing;  // (share of the cell it cuts off, plane)
       for (int iz = r.begin(); iz != r.end(); ++iz) {
         Slab& s = slabs[iz];
         for (int iy = 0; iy < gy_; ++iy)
@@ -92,7 +91,8 @@ void HullLocator::buildIndex(const acd::Box3& box, std::size_t targetCells, tbb:
             const Vec3 clo = box.lo + Vec3(ix * cell.x(), iy * cell.y(), iz * cell.z()) - Vec3::Constant(margin);
             const Vec3 chi =
                 box.lo + Vec3((ix + 1) * cell.x(), (iy + 1) * cell.y(), (iz + 1) * cell.z()) + Vec3::Constant(margin);
-            const std::size_t runsBefore = s.runPlanes.size(), planesBefore = s.planes.size();
+            const std::size_t before = s.slots.size(), runsBefore = s.runs;
+            std::size_t lastHeader = 0;
             bool full = false;
             for (int h = 0; h < nh && !full; ++h) {
               bool excluded = false;
@@ -107,54 +107,57 @@ void HullLocator::buildIndex(const acd::Box3& box, std::size_t targetCells, tbb:
                                   (q.nz > 0 ? q.nz * chi.z() : q.nz * clo.z());
                 if (mn - tol > q.d + slack_)
                   excluded = true;  // no point of the cell passes this plane
-                else if (mx + tol > q.d + slack_)
-                  crossing.push_back(static_cast<std::uint32_t>(k));  // may reject some point of the cell
+                else if (mx + tol > q.d + slack_)  // may reject some point of the cell
+                  crossing.emplace_back((mx - q.d) / std::max(mx - mn, 1e-300), static_cast<std::uint32_t>(k));
               }
               if (excluded) continue;
               if (crossing.empty()) {
                 full = true;  // the cell lies in polyhedron h
                 break;
               }
-              s.runPlanes.push_back(static_cast<std::uint32_t>(s.planes.size()));
-              for (std::uint32_t k : crossing) s.planes.push_back(planes_[k]);
+              // Planes that cut off most of the cell first: points outside leave early.
+              std::stable_sort(crossing.begin(), crossing.end(),
+                               [](const auto& a, const auto& b) { return a.first > b.first; });
+              lastHeader = s.slots.size();
+              s.slots.push_back({static_cast<double>(crossing.size()), 0.0, 0.0, 0.0});
+              for (const auto& [share, k] : crossing) {
+                const Plane& q = planes_[k];
+                s.slots.push_back({q.nx, q.ny, q.nz, q.d});
+              }
+              ++s.runs;
             }
             const std::size_t c = static_cast<std::size_t>(iz) * slab + static_cast<std::size_t>(iy) * gx_ + ix;
             if (full) {
-              s.runPlanes.resize(runsBefore);
-              s.planes.resize(planesBefore);
+              s.slots.resize(before);
+              s.runs = runsBefore;
               cellCode_[c] = kInside;
               ++s.inside;
-            } else if (s.runPlanes.size() > runsBefore) {
-              cellCode_[c] = kBoundary + static_cast<std::uint32_t>(s.boundaryRuns.size());  // local for now
-              s.boundaryRuns.push_back(static_cast<std::uint32_t>(runsBefore));
+            } else if (s.slots.size() > before) {
+              s.slots[lastHeader].b = 1.0;
+              cellCode_[c] = kBoundary + static_cast<std::uint32_t>(before);  // local for now
+              ++s.boundary;
             }
           }
       }
     });
   });
   // Concatenate the slabs in order: the layout never depends on the threads.
-  boundaryRuns_.clear();
-  runPlanes_.clear();
-  cellPlanes_.clear();
-  insideCells_ = 0;
-  std::vector<std::uint32_t> boundaryOffset(gz_);
+  slots_.clear();
+  insideCells_ = boundaryCells_ = runs_ = 0;
+  std::vector<std::uint32_t> slotOffset(gz_);
   for (int iz = 0; iz < gz_; ++iz) {
     const Slab& s = slabs[iz];
-    boundaryOffset[iz] = static_cast<std::uint32_t>(boundaryRuns_.size());
-    const auto runOffset = static_cast<std::uint32_t>(runPlanes_.size());
-    const auto planeOffset = static_cast<std::uint32_t>(cellPlanes_.size());
-    for (std::uint32_t r : s.boundaryRuns) boundaryRuns_.push_back(r + runOffset);
-    for (std::uint32_t k : s.runPlanes) runPlanes_.push_back(k + planeOffset);
-    cellPlanes_.insert(cellPlanes_.end(), s.planes.begin(), s.planes.end());
+    slotOffset[iz] = static_cast<std::uint32_t>(slots_.size());
+    slots_.insert(slots_.end(), s.slots.begin(), s.slots.end());
     insideCells_ += s.inside;
+    boundaryCells_ += s.boundary;
+    runs_ += s.runs;
   }
-  boundaryRuns_.push_back(static_cast<std::uint32_t>(runPlanes_.size()));
-  runPlanes_.push_back(static_cast<std::uint32_t>(cellPlanes_.size()));
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<int>(0, gz_), [&](const tbb::blocked_range<int>& r) {
       for (int iz = r.begin(); iz != r.end(); ++iz)
         for (std::size_t c = iz * slab, e = c + slab; c < e; ++c)
-          if (cellCode_[c] >= kBoundary) cellCode_[c] += boundaryOffset[iz];
+          if (cellCode_[c] >= kBoundary) cellCode_[c] += slotOffset[iz];
     });
   });
   indexed_ = true;

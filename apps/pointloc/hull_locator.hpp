@@ -66,21 +66,24 @@ class HullLocator {
     constexpr int kBatch = 32;
     Vec3 p[kBatch];
     std::size_t cell[kBatch];
+    std::uint32_t code[kBatch];
     std::uint64_t in = 0;
     for (std::uint64_t b = i0; b < i1; b += kBatch) {
       const int n = static_cast<int>(std::min<std::uint64_t>(kBatch, i1 - b));
-      for (int t = 0; t < n; ++t) {
+      for (int t = 0; t < n; ++t) {  // cells, their codes requested
         p[t] = point(b + t);
         cell[t] = cellOf(p[t]);
         if (cell[t] != kNoCell) __builtin_prefetch(&cellCode_[cell[t]]);
       }
+      for (int t = 0; t < n; ++t) {  // codes read, boundary records requested
+        code[t] = cell[t] == kNoCell ? kOffGrid : cellCode_[cell[t]];
+        if (code[t] >= kBoundary) __builtin_prefetch(&slots_[code[t] - kBoundary]);
+      }
       for (int t = 0; t < n; ++t) {
-        if (cell[t] == kNoCell) {
-          in += insideDirect(p[t]) ? 1 : 0;
-          continue;
-        }
-        const std::uint32_t code = cellCode_[cell[t]];
-        in += code < kBoundary ? code : (insideBoundary(code - kBoundary, p[t]) ? 1 : 0);
+        if (code[t] <= kInside)
+          in += code[t];
+        else
+          in += (code[t] == kOffGrid ? insideDirect(p[t]) : insideBoundary(code[t] - kBoundary, p[t])) ? 1 : 0;
       }
     }
     return in;
@@ -99,20 +102,20 @@ class HullLocator {
   int gridX() const { return gx_; }
   int gridY() const { return gy_; }
   int gridZ() const { return gz_; }
-  std::size_t boundaryCells() const { return boundaryRuns_.empty() ? 0 : boundaryRuns_.size() - 1; }
+  std::size_t boundaryCells() const { return boundaryCells_; }
   std::size_t insideCells() const { return insideCells_; }
   std::size_t cellCount() const { return cellCode_.size(); }
   /// Plane tests a boundary cell needs at most, on average over boundary cells.
   double planesPerBoundaryCell() const {
-    return boundaryCells() ? static_cast<double>(cellPlanes_.size()) / static_cast<double>(boundaryCells()) : 0.0;
+    return boundaryCells_ ? static_cast<double>(slots_.size() - runs_) / static_cast<double>(boundaryCells_) : 0.0;
   }
   std::size_t indexBytes() const {
-    return cellCode_.size() * sizeof(std::uint32_t) + boundaryRuns_.size() * sizeof(std::uint32_t) +
-           runPlanes_.size() * sizeof(std::uint32_t) + cellPlanes_.size() * sizeof(Plane);
+    return cellCode_.size() * sizeof(std::uint32_t) + slots_.size() * sizeof(Slot);
   }
 
  private:
-  static constexpr std::uint32_t kOutside = 0, kInside = 1, kBoundary = 2;
+  // Cell codes; kOffGrid is never stored (points outside the grid's box).
+  static constexpr std::uint32_t kOutside = 0, kInside = 1, kOffGrid = 2, kBoundary = 3;
   static constexpr std::size_t kNoCell = ~std::size_t{0};
 
   /// The grid cell of p, or kNoCell outside the grid's box.
@@ -125,20 +128,22 @@ class HullLocator {
     return (static_cast<std::size_t>(iz) * gy_ + iy) * gx_ + ix;
   }
 
-  /// Boundary cell b: some polyhedron holds p by the planes that cross the cell.
-  bool insideBoundary(std::uint32_t b, const Vec3& p) const {
-    for (std::uint32_t r = boundaryRuns_[b], re = boundaryRuns_[b + 1]; r < re; ++r) {
+  /// Boundary record at slots_[offset]: some polyhedron holds p by the planes that cross the cell.
+  bool insideBoundary(std::uint32_t offset, const Vec3& p) const {
+    const Slot* run = &slots_[offset];
+    for (;;) {
+      const int n = static_cast<int>(run->a);
+      const Slot* q = run + 1;
       bool in = true;
-      for (std::uint32_t k = runPlanes_[r], ke = runPlanes_[r + 1]; k < ke; ++k) {
-        const Plane& q = cellPlanes_[k];
-        if (q.nx * p.x() + q.ny * p.y() + q.nz * p.z() > q.d + slack_) {
+      for (int k = 0; k < n; ++k)
+        if (q[k].a * p.x() + q[k].b * p.y() + q[k].c * p.z() > q[k].d + slack_) {
           in = false;
           break;
         }
-      }
       if (in) return true;
+      if (run->b != 0.0) return false;  // the cell's last run
+      run = q + n;
     }
-    return false;
   }
 
   double slack_;
@@ -148,10 +153,15 @@ class HullLocator {
   bool indexed_ = false;
   Vec3 gridLo_ = Vec3::Zero(), gridScale_ = Vec3::Ones();
   int gx_ = 1, gy_ = 1, gz_ = 1;
-  std::vector<std::uint32_t> cellCode_;      // kOutside, kInside, or kBoundary + boundary cell index
-  std::vector<std::uint32_t> boundaryRuns_;  // boundary cell b: runs [boundaryRuns_[b], boundaryRuns_[b + 1])
-  std::vector<std::uint32_t> runPlanes_;     // run r (one polyhedron): planes [runPlanes_[r], runPlanes_[r + 1])
-  std::vector<Plane> cellPlanes_;            // copies of the crossing planes, cell by cell
+  std::vector<std::uint32_t> cellCode_;  // kOutside, kInside, or kBoundary + offset of the cell's record in slots_
+  /// Boundary records, one per boundary cell, each contiguous (one cache miss per query): per
+  /// polyhedron that may hold part of the cell, a header slot (a = its plane count, b = 1 for the
+  /// cell's last polyhedron) and then its planes crossing the cell (a, b, c = normal, d).
+  struct Slot {
+    double a, b, c, d;
+  };
+  std::vector<Slot> slots_;
+  std::size_t boundaryCells_ = 0, runs_ = 0;
   std::size_t insideCells_ = 0;
 };
 
