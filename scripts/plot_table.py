@@ -41,6 +41,13 @@ def plot_sweep(table, kind, path):
                          label=f"{model}, {'with' if grouping else 'without'} grouping")
             ax_n.plot(taus, comps, **style)
             ax_t.plot(taus, secs, **style)
+        # The exact decomposition of the same model, where it finished: the limit tau -> 0 aims at.
+        for row in table.get("models", []):
+            ecd = row.get("runs", {}).get(f"{kind}_ecd", {})
+            if row["model"] == model and usable(ecd):
+                ax_n.axhline(ecd["components"], color=colours[i % len(colours)], linestyle=":",
+                             label=f"{model}, {kind} ECD")
+                ax_t.axhline(ecd["seconds"], color=colours[i % len(colours)], linestyle=":")
     for ax, label in ((ax_n, "components"), (ax_t, "time (s)")):
         ax.set_xscale("log")
         ax.invert_xaxis()  # finer approximations to the right, as tau shrinks
@@ -48,6 +55,7 @@ def plot_sweep(table, kind, path):
         ax.set_ylabel(label)
         ax.grid(True, which="both", alpha=0.3)
     ax_n.set_yscale("log")
+    ax_t.set_yscale("log")
     ax_n.legend(fontsize=7)
     fig.suptitle(f"{kind} ACD: size and time against τ")
     fig.tight_layout()

@@ -107,9 +107,12 @@ TEST_F(ExactCli, TimeCapExitsFourWithNote) {
 TEST_F(ExactCli, BadInputAndParameters) {
   TriMesh open = shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1));
   open.faces.pop_back();
-  auto r = acd("decompose " + quote(model("open.off", open)) + " --exact -q -o " + quote(path("out")));
+  auto r = acd("decompose " + quote(model("open.off", open)) + " --exact --no-fill-holes -q -o " + quote(path("out")));
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("open"), std::string::npos) << r.err;
+  r = acd("decompose " + quote(path("open.off")) + " --exact -q -o " + quote(path("out")));
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(report()["input"]["holes_filled"], 1);
   r = acd("decompose " + quote(model("l.off", shapes::lShape())) + " --exact --exact-time-limit -1 -q -o " + quote(path("out")));
   EXPECT_EQ(r.code, 3) << r.err;
   r = acd("decompose " + quote(path("missing.off")) + " --exact --surface -q -o " + quote(path("out")));

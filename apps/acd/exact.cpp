@@ -35,6 +35,7 @@ struct ExactFlags {
   double timeLimit = 600.0;
   double memoryGiB = 8.0;
   double tolerance = acd::SurfaceExactOptions{}.tolerance;
+  bool fillHoles = true;  // off with decompose's --no-fill-holes
 };
 ExactFlags flags;
 bool ownSurfaceFlag = false;  // --surface was added here: no surface ACD in this build
@@ -86,6 +87,7 @@ int runSolid(const std::string& model, const std::string& out, bool quiet) {
   acd::ExactOptions options;
   options.timeLimitSeconds = flags.timeLimit;
   options.memoryLimitBytes = static_cast<std::size_t>(flags.memoryGiB * double(std::size_t(1) << 30));
+  options.fillHoles = flags.fillHoles;
   const bool showProgress = !quiet && isatty(fileno(stderr));
   if (showProgress)
     options.progress = [](const std::string& stage, double seconds) {
@@ -124,6 +126,8 @@ int runSolid(const std::string& model, const std::string& out, bool quiet) {
   j["input"] = inputJson(r.mesh, diagnosis);
   j["input"]["reflex_edges"] = d.reflexEdges;
   j["input"]["notch_fraction"] = diagnosis.edges > 0 ? double(d.reflexEdges) / diagnosis.edges : 0.0;
+  j["input"]["holes_filled"] = d.holesFilled;
+  j["input"]["repairs"] = d.repairs;
   j["pieces"] = pieces;
   j["totals"] = {{"finished", d.finished},
                  {"components", d.pieceCount},
@@ -157,6 +161,7 @@ int runSolid(const std::string& model, const std::string& out, bool quiet) {
     std::printf("  time           %.3f s\n", d.seconds);
     std::printf("  output         %s (pieces.obj %ju bytes)\n", out.c_str(), fileSize(objPath));
     if (!d.note.empty()) std::printf("  note           %s\n", d.note.c_str());
+    for (const auto& line : d.repairs) std::printf("  repaired       %s\n", line.c_str());
   }
   if (!d.finished) {
     std::fprintf(stderr, "acd: warning: exact decomposition not finished: %s\n", d.note.c_str());
@@ -265,6 +270,8 @@ int runExact(const CLI::App& decompose, const std::string& model, const std::str
   if (!(flags.timeLimit >= 0) || !(flags.memoryGiB >= 0) || !std::isfinite(flags.memoryGiB))
     return report("invalid parameter", acd::Status::error(acd::StatusCode::InvalidParameter,
                                                          "--exact-time-limit and --exact-memory must be >= 0"));
+  const CLI::Option* noFill = decompose.get_option_no_throw("--no-fill-holes");
+  flags.fillHoles = noFill == nullptr || noFill->count() == 0;
   if (surfaceRequested(decompose)) return runSurface(model, out, quiet);
   return runSolid(model, out, quiet);
 }
