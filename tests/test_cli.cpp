@@ -300,6 +300,9 @@ TEST_F(Cli, InfoOnATorusAndAnOpenMesh) {
   ASSERT_EQ(o.code, 0) << o.err;  // diagnosing a broken mesh is not an error
   EXPECT_TRUE(std::regex_search(o.out, std::regex(R"(closed\s+no\b)"))) << o.out;
   EXPECT_TRUE(std::regex_search(o.out, std::regex(R"(boundary edges\s+3\b)"))) << o.out;
+  // decompose closes the hole first, and info says so.
+  EXPECT_TRUE(std::regex_search(o.out, std::regex(R"(solid decomposition\s+possible)"))) << o.out;
+  EXPECT_NE(o.out.find("filled 1 hole"), std::string::npos) << o.out;
 }
 
 TEST_F(Cli, InfoOnAMissingFile) {

@@ -100,7 +100,9 @@ int runInfo(const std::string& path) {
     const int pairs = acd::countSelfIntersections(r.mesh);
     if (pairs >= 0) std::printf("  self-intersections    %d face pairs\n", pairs);
   }
-  const acd::PreparedSolid p = acd::prepareSolid(r.mesh);
+  acd::PrepareOptions fill;  // what `acd decompose` does: holes are closed first
+  fill.openMeshes = acd::OpenMeshPolicy::FillHoles;
+  const acd::PreparedSolid p = acd::prepareSolid(r.mesh, fill);
   std::printf("  solid decomposition   %s\n", p.status.ok() ? "possible" : p.status.message.c_str());
   for (const auto& line : p.repairs) std::printf("  repair                %s\n", line.c_str());
   return kOk;
