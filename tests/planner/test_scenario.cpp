@@ -128,4 +128,11 @@ TEST(Scenario, StartOrGoalInCollisionIsNamed) {
   EXPECT_NE(problemErrorOf(replaced(kValid, "[3.5, 1, 1]", "[2.15, 1, 1]")).find("goal pose is in collision"), std::string::npos);
 }
 
+TEST(Scenario, FloatingObstacleIsRefusedForTheAcdSamplerOnly) {
+  // A box floating in the middle of the workspace: a cavity of the free space.
+  const std::string floating = replaced(kValid, "max: [2.1, 2, 2]}", "max: [2.1, 2, 2]}\n  - box: {min: [3, 0.8, 0.8], max: [3.2, 1.2, 1.2]}");
+  EXPECT_NE(problemErrorOf(floating).find("float inside the workspace"), std::string::npos);
+  EXPECT_EQ(problemErrorOf(replaced(floating, "samplers: [uniform, acd]", "samplers: [uniform]")), "");
+}
+
 }  // namespace

@@ -3,6 +3,7 @@
 #include "problem.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace planner {
 
@@ -17,6 +18,13 @@ AcdValidStateSampler::AcdValidStateSampler(const ompl::base::SpaceInformation* s
       uniformFraction_(uniformFraction),
       orientationTries_(std::max(1u, orientationTries)) {
   name_ = "acd";
+  // Narrow openings first: weight 1 / area, with areas below pi spread^2 counted as that much,
+  // so that slivers left by the decomposition do not take every sample.
+  double totalWeight = 0.0;
+  for (const Opening& o : problem.openings()) {
+    totalWeight += 1.0 / std::max(o.area, M_PI * spread * spread);
+    cumulativeWeight_.push_back(totalWeight);
+  }
   for (const Opening& o : problem.openings()) {
     std::vector<double> cumulative;
     double total = 0.0;
@@ -30,7 +38,10 @@ AcdValidStateSampler::AcdValidStateSampler(const ompl::base::SpaceInformation* s
 
 acd::Vec3 AcdValidStateSampler::pointNearOpening() {
   const auto& openings = problem_.openings();
-  const int which = rng_.uniformInt(0, static_cast<int>(openings.size()) - 1);
+  const double w = rng_.uniformReal(0.0, cumulativeWeight_.back());
+  const int which = static_cast<int>(std::min<std::size_t>(
+      std::lower_bound(cumulativeWeight_.begin(), cumulativeWeight_.end(), w) - cumulativeWeight_.begin(),
+      openings.size() - 1));
   const Opening& o = openings[which];
   const std::vector<double>& cumulative = cumulativeArea_[which];
   const double r = rng_.uniformReal(0.0, cumulative.back());

@@ -16,8 +16,8 @@ namespace planner {
 class PlanningProblem;
 
 /// Each attempt draws a position: with probability `uniformFraction` a plain uniform state;
-/// otherwise an opening chosen with equal probability (a narrow opening counts as much as a
-/// wide one), a point uniform on its shared triangles, moved along the opening's normal by a
+/// otherwise an opening chosen with probability proportional to 1 / max(area, pi spread^2)
+/// (narrow openings first), a point uniform on its shared triangles, moved along the opening's normal by a
 /// normal deviate of std. deviation `spread`. A position whose reference point is not free
 /// is dropped at once; otherwise up to `orientationTries` uniformly random orientations are
 /// tried there. The first valid state within getNrAttempts() positions is returned.
@@ -41,6 +41,7 @@ class AcdValidStateSampler : public ompl::base::ValidStateSampler {
   double spread_;
   double uniformFraction_;
   unsigned orientationTries_;
+  std::vector<double> cumulativeWeight_;             // per opening
   std::vector<std::vector<double>> cumulativeArea_;  // per opening, per triangle
 };
 

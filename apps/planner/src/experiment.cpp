@@ -2,6 +2,7 @@
 
 #include "free_space.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -26,6 +27,18 @@ Preprocessing preprocess(const Scenario& scenario) {
     pre.freeSpaceMethod = fs.method;
   }
   pre.freeSpaceSeconds = secondsSince(t0);
+  const bool acdWanted =
+      std::find(scenario.samplers.begin(), scenario.samplers.end(), "acd") != scenario.samplers.end();
+  if (!acdWanted) return pre;
+  // libacd decomposes every closed shell as a solid of its own; the shell around an obstacle
+  // floating in the workspace would become that obstacle, not a hole in the free space.
+  int cavities = 0;
+  for (const acd::TriMesh& shell : acd::splitEdgeConnected(pre.freeSpace)) cavities += acd::signedVolume(shell) < 0;
+  if (cavities > 0)
+    throw ScenarioError(scenario.path + ": " + std::to_string(cavities) +
+                        " obstacle(s) float inside the workspace (the free space has a cavity), which the solid ACD "
+                        "cannot decompose as one free space; let every obstacle touch the workspace boundary or an "
+                        "obstacle that does, or drop the acd sampler");
 
   t0 = std::chrono::steady_clock::now();
   acd::DecomposeOptions options;

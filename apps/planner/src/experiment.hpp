@@ -26,7 +26,9 @@ struct Preprocessing {
   double totalSeconds() const { return freeSpaceSeconds + decomposeSeconds + openingsSeconds; }
 };
 
-/// \throw ScenarioError when the free space cannot be built or decomposed (message says why).
+/// The ACD part is skipped when the scenario does not compare the acd sampler.
+/// \throw ScenarioError when the free space cannot be built or decomposed (message says why),
+/// or when the acd sampler is wanted and an obstacle floats in the workspace (a cavity).
 Preprocessing preprocess(const Scenario& scenario);
 
 struct Trial {

@@ -8,6 +8,9 @@ namespace planner {
 FixedSamplePRM::FixedSamplePRM(const ompl::base::SpaceInformationPtr& si, unsigned neighbors) : PRM(si) {
   setNearestNeighbors<ompl::NearestNeighborsLinear>();
   setMaxNearestNeighbors(neighbors);
+  // Kavraki et al.'s rule: no motion check between milestones already in one component. Which
+  // milestones end up connected is exactly the same; most motion checks in open rooms go.
+  setConnectionFilter([this](const Vertex& a, const Vertex& b) { return !sameComponent(a, b); });
 }
 
 RoadmapOutcome FixedSamplePRM::grow(const ompl::base::State* start, const ompl::base::State* goal, int samples,

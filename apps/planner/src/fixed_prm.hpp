@@ -23,7 +23,8 @@ struct RoadmapOutcome {
 class FixedSamplePRM : public ompl::geometric::PRM {
  public:
   /// `neighbors`: k of the k-nearest connection strategy. Nearest neighbours by linear scan
-  /// (exact and deterministic at these sizes).
+  /// (exact and deterministic at these sizes). Pairs already in one component are not
+  /// connected again (Kavraki et al. 1996): connectivity is unchanged, the roadmap is sparser.
   FixedSamplePRM(const ompl::base::SpaceInformationPtr& si, unsigned neighbors);
 
   /// Adds start and goal, then N milestones from the space information's valid-state

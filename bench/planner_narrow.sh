@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# The planner's experiment on one scenario (default scenarios/narrow.yaml): the table at the
+# scenario's sample count and trials, the sweep over sample counts, and the plot.
+#   bench/planner_narrow.sh [SCENARIO] [BUILD_DIR]
+# Writes out/planner/<name>/{table.txt,results.json,benchmark.log,best_path.txt,sweep.csv,success.png}.
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$ROOT"
+SCENARIO="${1:-scenarios/narrow.yaml}"
+BUILD="${2:-build}"
+NAME="$(basename "$SCENARIO" .yaml)"
+OUT="out/planner/$NAME"
+mkdir -p "$OUT"
+"$BUILD/bin/planner" "$SCENARIO" --sweep -o "$OUT" | tee "$OUT/table.txt"
+/usr/bin/python3 apps/planner/plot_success.py "$OUT/sweep.csv" "$OUT/success.png" "$NAME.yaml"
+echo "plot: $OUT/success.png"
