@@ -273,6 +273,7 @@ ConcavityMap measureConcavity(const TriMesh& mesh, const SurfaceGraph& graph, co
         if (region[seed] >= 0) continue;
         std::vector<int> faces;
         std::unordered_map<int, int> tally;
+        bool opening = false;  // the region reaches the opening of an open surface
         stack.assign(1, seed);
         region[seed] = regions;
         while (!stack.empty()) {
@@ -282,6 +283,7 @@ ConcavityMap measureConcavity(const TriMesh& mesh, const SurfaceGraph& graph, co
           for (auto [b, count] : votes[f]) tally[b] += count;
           for (int k = 0; k < 3; ++k) {
             const int g = graph.faceAcross(f, k);
+            if (g < 0) opening = true;
             if (g < 0 || region[g] >= 0) continue;
             if (onPath.count(edgeKey(mesh.faces[f][k], mesh.faces[f][(k + 1) % 3]))) continue;
             region[g] = regions;
@@ -295,8 +297,12 @@ ConcavityMap measureConcavity(const TriMesh& mesh, const SurfaceGraph& graph, co
         double bestDepth = std::numeric_limits<double>::infinity();
         std::vector<std::pair<int, int>> claims(tally.begin(), tally.end());
         // A region enclosed by handle cuts alone has no claimant: every bridge may claim it.
-        if (claims.empty())
+        // Through an opening (Extension 2) a region faces the whole hull: the concavity of a point is
+        // its distance to the hull boundary, so every bridge may claim it too.
+        if (claims.empty() || opening) {
+          claims.clear();
           for (int b = 0; b < nb; ++b) claims.emplace_back(b, 0);
+        }
         std::sort(claims.begin(), claims.end());
         for (auto [b, count] : claims) {
           const Bridge& br = out.bridges[b];
