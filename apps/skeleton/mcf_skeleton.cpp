@@ -1,0 +1,54 @@
+// The only translation unit that instantiates CGAL's skeletonization (slow to compile).
+#include "mcf_skeleton.hpp"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/extract_mean_curvature_flow_skeleton.h>
+
+#include <chrono>
+#include <exception>
+
+namespace skeleton {
+
+namespace {
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using Skeletonization = CGAL::Mean_curvature_flow_skeletonization<Mesh>;
+}  // namespace
+
+McfSkeleton meanCurvatureSkeleton(const acd::TriMesh& input) {
+  const auto start = std::chrono::steady_clock::now();
+  McfSkeleton out;
+  Mesh mesh;
+  std::vector<Mesh::Vertex_index> index;
+  index.reserve(input.vertices.size());
+  for (const Vec3& p : input.vertices) index.push_back(mesh.add_vertex(Kernel::Point_3(p.x(), p.y(), p.z())));
+  for (const acd::Face& f : input.faces) {
+    if (mesh.add_face(index[f[0]], index[f[1]], index[f[2]]) == Mesh::null_face()) {
+      out.error = "the mesh is not an oriented 2-manifold (CGAL refused a face)";
+      return out;
+    }
+  }
+  if (!CGAL::is_closed(mesh)) {
+    out.error = "the mesh is not closed";
+    return out;
+  }
+  try {
+    Skeletonization::Skeleton skel;
+    CGAL::extract_mean_curvature_flow_skeleton(mesh, skel);
+    std::vector<int> node(boost::num_vertices(skel), -1);
+    for (auto v : CGAL::make_range(boost::vertices(skel))) {
+      const auto& p = skel[v].point;
+      node[v] = out.graph.addNode(Vec3(p.x(), p.y(), p.z()), NodeKind::Curve);
+    }
+    for (auto e : CGAL::make_range(boost::edges(skel)))
+      out.graph.addEdge(node[boost::source(e, skel)], node[boost::target(e, skel)]);
+    out.ok = true;
+  } catch (const std::exception& e) {
+    out.error = std::string("CGAL skeletonization failed: ") + e.what();
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+}  // namespace skeleton

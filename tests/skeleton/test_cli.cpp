@@ -1,0 +1,86 @@
+// The `skeleton` command: files written, report fields, and clear errors on bad input.
+#include "helpers.hpp"
+
+#include <acd/io.hpp>
+#include <acd/shapes.hpp>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+using acdtest::runTool;
+using acdtest::TempDir;
+using json = nlohmann::json;
+
+TEST(SkeletonCli, DumbbellWithTwoDeformations) {
+  TempDir dir("skeleton_cli");
+  const std::string model = dir / "dumbbell.off";
+  ASSERT_TRUE(acd::writeMesh(model, acd::shapes::dumbbell(2.0, 0.3, 48, 24)).ok());
+  const std::string out = dir / "out";
+  const auto r = runTool(SKELETON_CLI,
+                         acdtest::quote(model) + " --tau 0.1 --deform affine:30,0,60:1,1,1:5,0,0 --deform affine:0,0,0:1,1,1.5"
+                         " --deform bend:+z:x:40 -o " + acdtest::quote(out),
+                         dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* f : {"report.json", "original.acd_skeleton.json", "original.acd_skeleton.obj",
+                        "original.mcf_skeleton.json", "deformed_1.off", "deformed_3.off", "deformed_3.acd_skeleton.obj"})
+    EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(out) / f)) << f;
+  const json report = json::parse(acdtest::slurp(out + "/report.json"));
+  ASSERT_EQ(report["models"].size(), 4u);
+  const json& original = report["models"][0];
+  EXPECT_EQ(original["name"], "original");
+  EXPECT_GE(original["acd"]["nodes"].get<int>(), 3);
+  EXPECT_FALSE(original["acd"].contains("D"));
+  // A rigid motion leaves the decomposition, hence the skeleton, unchanged.
+  const json& rigid = report["models"][1];
+  EXPECT_EQ(rigid["acd"]["nodes"], original["acd"]["nodes"]);
+  EXPECT_EQ(rigid["acd"]["D"]["distance"], 0);
+  EXPECT_EQ(rigid["acd"]["D2"]["distance"], 0);
+  for (const json& m : {report["models"][1], report["models"][2], report["models"][3]}) {
+    for (const char* which : {"acd", "mcf"}) {
+      for (const char* d : {"D", "D2"}) {
+        const json& g = m[which][d];
+        EXPECT_LE(g["lower_bound"].get<int>(), g["distance"].get<int>());
+        EXPECT_TRUE(g["method"] == "exact" || g["method"] == "bipartite");
+        EXPECT_EQ(g["exact"].get<bool>(), g["lower_bound"] == g["distance"] && g["method"] == "exact");
+      }
+    }
+  }
+  // The written skeleton matches the report.
+  const json skel = json::parse(acdtest::slurp(out + "/original.acd_skeleton.json"));
+  EXPECT_EQ(skel["nodes"].size(), original["acd"]["nodes"].get<std::size_t>());
+  EXPECT_NE(r.out.find("ACD D2"), std::string::npos);  // the summary table
+}
+
+TEST(SkeletonCli, BadInputGivesAClearErrorAndExitCode) {
+  TempDir dir("skeleton_cli_bad");
+  const std::string model = dir / "box.off";
+  ASSERT_TRUE(acd::writeMesh(model, acd::shapes::box(acd::Vec3(0, 0, 0), acd::Vec3(1, 1, 1))).ok());
+  const std::string openPath = dir / "broken.off";  // a face names vertex 7 of 4
+  {
+    std::ofstream f(openPath);
+    f << "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 7\n";
+  }
+  const std::string out = " -o " + acdtest::quote(dir / "out");
+  const struct {
+    std::string args;
+    int code;
+    const char* words;
+  } cases[] = {
+      {acdtest::quote(dir / "missing.off") + out, 2, "missing.off"},
+      {acdtest::quote(openPath) + out, 2, "broken.off"},
+      {acdtest::quote(model) + " --deformed " + acdtest::quote(openPath) + out, 2, "broken.off"},
+      {acdtest::quote(model) + " --tau -1" + out, 3, "--tau"},
+      {acdtest::quote(model) + " --deform twist:3" + out, 3, "unknown deformation 'twist'"},
+      {acdtest::quote(model) + " --deform bend:+x:z:nope" + out, 3, "not a number"},
+      {acdtest::quote(model) + " --mcf-runs 0" + out, 3, "--mcf-runs"},
+      {acdtest::quote(model) + " --no-such-option" + out, 1, "no-such-option"},
+  };
+  for (const auto& c : cases) {
+    const auto r = runTool(SKELETON_CLI, c.args, dir);
+    EXPECT_EQ(r.code, c.code) << c.args << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.words), std::string::npos) << c.args << "\n" << r.err;
+  }
+}

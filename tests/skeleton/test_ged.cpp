@@ -1,0 +1,176 @@
+// Graph edit distance: hand-made graphs with known distances, properties of the exact and
+// bipartite methods on random graphs.
+#include "ged.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace skeleton;
+
+namespace {
+
+Graph path(int n) {
+  std::vector<std::pair<int, int>> e;
+  for (int i = 0; i + 1 < n; ++i) e.push_back({i, i + 1});
+  return makeGraph(n, e);
+}
+
+Graph star(int leaves) {
+  std::vector<std::pair<int, int>> e;
+  for (int i = 1; i <= leaves; ++i) e.push_back({0, i});
+  return makeGraph(leaves + 1, e);
+}
+
+Graph cycle(int n) {
+  Graph g = path(n);
+  g.addEdge(n - 1, 0);
+  return g;
+}
+
+Graph randomGraph(std::mt19937& rng, int maxNodes, double p) {
+  const int n = std::uniform_int_distribution<int>(0, maxNodes)(rng);
+  std::bernoulli_distribution coin(p);
+  Graph g = makeGraph(n, {});
+  for (int a = 0; a < n; ++a)
+    for (int b = a + 1; b < n; ++b)
+      if (coin(rng)) g.addEdge(a, b);
+  return g;
+}
+
+/// A relabelled copy: the distance to the original must be 0.
+Graph shuffled(const Graph& g, std::mt19937& rng) {
+  std::vector<int> perm(g.nodeCount());
+  for (int i = 0; i < g.nodeCount(); ++i) perm[i] = i;
+  std::shuffle(perm.begin(), perm.end(), rng);
+  std::vector<std::pair<int, int>> e;
+  for (const auto& [a, b] : g.edges) e.push_back({perm[a], perm[b]});
+  return makeGraph(g.nodeCount(), e);
+}
+
+void expectExact(const Graph& a, const Graph& b, int expected) {
+  const GedResult r = exactGed(a, b);
+  EXPECT_TRUE(r.exact);
+  EXPECT_EQ(r.distance, expected);
+  EXPECT_EQ(r.lowerBound, expected);
+  EXPECT_EQ(editPathCost(a, b, r.mapping), r.distance);  // the reported map realises the distance
+  EXPECT_EQ(exactGed(b, a).distance, expected);          // symmetric cost model
+}
+
+}  // namespace
+
+TEST(Ged, IdenticalGraphsAreAtZero) {
+  expectExact(path(5), path(5), 0);
+  expectExact(star(4), star(4), 0);
+  expectExact(cycle(7), cycle(7), 0);
+  expectExact(Graph{}, Graph{}, 0);
+  std::mt19937 rng(7);
+  for (int trial = 0; trial < 20; ++trial) {
+    const Graph g = randomGraph(rng, 10, 0.35);
+    expectExact(g, shuffled(g, rng), 0);
+  }
+}
+
+TEST(Ged, PathAgainstStar) {
+  // Same node and edge counts but different degree sequences: one edge moves (delete + insert).
+  expectExact(path(4), star(3), 2);
+  // P5 vs K1,4: three of the path's edges can be kept at most (a star has no two disjoint
+  // edges, so only the two edges at a degree-2 node fit): 2 deletions + 2 insertions.
+  expectExact(path(5), star(4), 4);
+}
+
+TEST(Ged, TriangleAgainstPath) {
+  expectExact(cycle(3), path(3), 1);  // delete one edge
+  expectExact(cycle(3), path(4), 3);  // delete an edge, insert a node and its edge
+  expectExact(cycle(4), path(4), 1);
+}
+
+TEST(Ged, EmptyGraphCostsEverything) {
+  const Graph g = makeGraph(6, {{0, 1}, {1, 2}, {2, 0}, {3, 4}});
+  expectExact(Graph{}, g, 6 + 4);
+  const GedResult approx = bipartiteGed(g, Graph{});
+  EXPECT_EQ(approx.distance, 10);
+}
+
+TEST(Ged, EditPathCostCountsEveryOperation) {
+  const Graph a = path(3), b = cycle(3);
+  EXPECT_EQ(editPathCost(a, b, {0, 1, 2}), 1);     // insert edge 0-2
+  EXPECT_EQ(editPathCost(a, b, {-1, -1, -1}), 11);  // 3 nodes + 2 edges deleted, 3 + 3 inserted
+  // a1 deleted with its 2 edges; b1 inserted with its 2 edges; a0-a2 is no edge, so b0-b2 is inserted.
+  EXPECT_EQ(editPathCost(a, b, {2, -1, 0}), 1 + 2 + 1 + 2 + 1);
+}
+
+TEST(Ged, BipartiteBracketsTheExactDistance) {
+  std::mt19937 rng(2024);
+  int strictlyAbove = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const Graph a = randomGraph(rng, 8, 0.3), b = randomGraph(rng, 8, 0.3);
+    const GedResult exact = exactGed(a, b);
+    const GedResult approx = bipartiteGed(a, b);
+    ASSERT_TRUE(exact.exact);
+    EXPECT_GE(approx.distance, exact.distance) << "trial " << trial;
+    EXPECT_LE(approx.lowerBound, exact.distance) << "trial " << trial;
+    EXPECT_EQ(editPathCost(a, b, approx.mapping), approx.distance);
+    strictlyAbove += approx.distance > exact.distance;
+  }
+  // The approximation is not trivially exact on these graphs (otherwise the test above proves little).
+  EXPECT_GT(strictlyAbove, 0);
+}
+
+TEST(Ged, TriangleInequalityOnRandomGraphs) {
+  std::mt19937 rng(99);
+  for (int trial = 0; trial < 60; ++trial) {
+    const Graph a = randomGraph(rng, 6, 0.4), b = randomGraph(rng, 6, 0.4), c = randomGraph(rng, 6, 0.4);
+    const int ab = exactGed(a, b).distance, bc = exactGed(b, c).distance, ac = exactGed(a, c).distance;
+    EXPECT_LE(ac, ab + bc);
+  }
+}
+
+TEST(Ged, ExactUpToTwelveNodesWithinBudget) {
+  std::mt19937 rng(12);
+  for (int trial = 0; trial < 6; ++trial) {
+    Graph a = makeGraph(12, {}), b = makeGraph(12, {});
+    std::bernoulli_distribution coin(0.25);
+    for (int i = 0; i < 12; ++i)
+      for (int j = i + 1; j < 12; ++j) {
+        if (coin(rng)) a.addEdge(i, j);
+        if (coin(rng)) b.addEdge(i, j);
+      }
+    const GedResult r = graphEditDistance(a, b);
+    EXPECT_EQ(r.method, "exact");
+    EXPECT_TRUE(r.exact) << "expansions " << r.expansions;
+    EXPECT_LE(r.distance, bipartiteGed(a, b).distance);
+    EXPECT_EQ(editPathCost(a, b, r.mapping), r.distance);
+  }
+}
+
+TEST(Ged, LargeGraphsUseTheBipartiteMethod) {
+  const GedResult r = graphEditDistance(path(30), star(29));
+  EXPECT_EQ(r.method, "bipartite");
+  EXPECT_FALSE(r.exact);
+  // Same counts: at least 2 (degree sequences differ); a path keeps at most 2 star edges.
+  EXPECT_GE(r.lowerBound, 2);
+  EXPECT_GE(r.distance, 2 * (29 - 2));
+}
+
+TEST(Ged, BudgetExhaustedIsReportedNotHidden) {
+  std::mt19937 rng(5);
+  Graph a = makeGraph(11, {}), b = makeGraph(11, {});
+  std::bernoulli_distribution coin(0.5);
+  for (int i = 0; i < 11; ++i)
+    for (int j = i + 1; j < 11; ++j) {
+      if (coin(rng)) a.addEdge(i, j);
+      if (coin(rng)) b.addEdge(i, j);
+    }
+  const GedResult r = exactGed(a, b, 3);
+  if (!r.exact) {
+    EXPECT_LE(r.lowerBound, r.distance);
+    EXPECT_EQ(editPathCost(a, b, r.mapping), r.distance);
+  } else {
+    EXPECT_EQ(r.lowerBound, r.distance);  // solved at the root already
+  }
+  const GedResult full = exactGed(a, b);
+  ASSERT_TRUE(full.exact);
+  EXPECT_LE(r.lowerBound, full.distance);
+  EXPECT_GE(r.distance, full.distance);
+}
