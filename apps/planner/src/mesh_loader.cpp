@@ -3,6 +3,7 @@
 #include <acd/io.hpp>
 
 #include <assimp/Importer.hpp>
+#include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
@@ -23,6 +24,8 @@ std::string lowerExtension(const std::string& path) {
 LoadedMesh viaAssimp(const std::string& path) {
   LoadedMesh out;
   Assimp::Importer importer;
+  // Coordinates as written in the file: no turning of Z_UP scenes into assimp's Y-up.
+  importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
   const aiScene* scene = importer.ReadFile(
       path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices);
   if (!scene || !scene->mRootNode) {
