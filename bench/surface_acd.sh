@@ -43,6 +43,7 @@ done
 command -v jq >/dev/null 2>&1 || { echo "surface_acd: jq missing (apt-get install jq)" >&2; exit 1; }
 [[ -x "$ACD" ]] || { echo "surface_acd: $ACD not found; run scripts/setup.sh first" >&2; exit 1; }
 
+mkdir -p "$OUTROOT"
 VARIANTS=(on)
 (( BOTH )) && VARIANTS=(on off)
 median() { sort -g | awk '{a[NR]=$1} END {if (NR==0) exit; if (NR%2) print a[(NR+1)/2]; else print (a[NR/2]+a[NR/2+1])/2}'; }
