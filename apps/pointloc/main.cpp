@@ -80,6 +80,13 @@ std::uint64_t overBlocks(tbb::task_arena& arena, std::uint64_t n, const char* pr
   return std::accumulate(counts.begin(), counts.end(), std::uint64_t{0});
 }
 
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
 /// Positive integer written as a double ("1e8" or "100000000"), at most `max`.
 bool parseCount(const std::string& s, double max, bool allowZero, std::uint64_t& out) {
   char* end = nullptr;
@@ -114,6 +121,7 @@ struct Method {
   std::uint64_t inside = 0;     // on the first `points`
   std::optional<std::uint64_t> disagreements;  // with acd::InsideTest on the compare subsample
   std::string note;             // why the row has no figures
+  std::vector<double> runs;     // seconds of each repetition; `seconds` is their median
 
   bool measured() const { return points > 0 && note.empty(); }
   double rate() const { return seconds > 0 ? static_cast<double>(points) / seconds : 0.0; }
@@ -134,6 +142,7 @@ int main(int argc, char** argv) {
   bool noIndex = false, compare = false;
   std::size_t gridCells = 1u << 18;
   double ecdTimeLimit = 60.0;
+  int repeat = 1;
   app.add_option("MODEL", model,
                  "closed mesh (OFF, OBJ, PLY, STL); default data/meshes/elephant.off (relative to the current\n"
                  "directory, else the one in the source tree)");
@@ -149,6 +158,8 @@ int main(int argc, char** argv) {
                "threads; acd::InsideTest) and against the solid exact convex decomposition when libacd has one");
   app.add_option("--compare-samples", compareText, "points (the first K) timed by the exact methods; default min(N, 1e6)");
   app.add_option("--ecd-time-limit", ecdTimeLimit, "seconds allowed for the exact convex decomposition")
+      ->capture_default_str();
+  app.add_option("--repeat", repeat, "time every location pass R times and report the median (1..100)")
       ->capture_default_str();
   app.add_option("--json", jsonPath, "write the report as JSON to FILE");
   app.add_option("--dump", dumpPath,
@@ -200,6 +211,10 @@ int main(int argc, char** argv) {
   }
   if (!(ecdTimeLimit > 0) || !std::isfinite(ecdTimeLimit)) {
     std::fprintf(stderr, "pointloc: --ecd-time-limit %g must be a positive number of seconds\n", ecdTimeLimit);
+    return kBadParameter;
+  }
+  if (repeat < 1 || repeat > 100) {
+    std::fprintf(stderr, "pointloc: --repeat %d must be in [1, 100]\n", repeat);
     return kBadParameter;
   }
   if (gridCells == 0 || gridCells > (1u << 24)) {
@@ -269,15 +284,26 @@ int main(int argc, char** argv) {
   const double indexSeconds = since(tGrid);
   const auto hullInside = [&](const Vec3& p) { return noIndex ? hulls.insideDirect(p) : hulls.inside(p); };
 
-  // ---- fast location over all N points
-  const auto tLoc = Clock::now();
-  const std::clock_t cpuLoc = std::clock();
-  const std::uint64_t inside =
-      overBlocks(arena, samples, progress ? "locating" : nullptr,
-                 [&](std::uint64_t i0, std::uint64_t i1) { return hulls.countInside(points, i0, i1); });
-  const double locateSeconds = since(tLoc);
-  // CPU seconds of all threads: on a busy machine the better guide to what location costs.
-  const double locateCpuSeconds = static_cast<double>(std::clock() - cpuLoc) / CLOCKS_PER_SEC;
+  // ---- fast location over all N points (--repeat times; the median time is reported)
+  std::uint64_t inside = 0;
+  std::vector<double> locateRuns, locateCpuRuns;
+  for (int r = 0; r < repeat; ++r) {
+    const auto tLoc = Clock::now();
+    const std::clock_t cpuLoc = std::clock();
+    const std::uint64_t in =
+        overBlocks(arena, samples, progress ? "locating" : nullptr,
+                   [&](std::uint64_t i0, std::uint64_t i1) { return hulls.countInside(points, i0, i1); });
+    locateRuns.push_back(since(tLoc));
+    // CPU seconds of all threads: on a busy machine the better guide to what location costs.
+    locateCpuRuns.push_back(static_cast<double>(std::clock() - cpuLoc) / CLOCKS_PER_SEC);
+    if (r > 0 && in != inside) {
+      std::fprintf(stderr, "pointloc: internal error: repeated location counted %llu, then %llu\n",
+                   static_cast<unsigned long long>(inside), static_cast<unsigned long long>(in));
+      return kInternal;
+    }
+    inside = in;
+  }
+  const double locateSeconds = median(locateRuns), locateCpuSeconds = median(locateCpuRuns);
 
   // ---- exact answer on the first M points: the exact test alone (timed), then the errors
   const auto tExact = Clock::now();
@@ -356,16 +382,19 @@ int main(int argc, char** argv) {
     };
     // Times `test` on the first k points in `arena`, keeping the answers for the check.
     const auto timeOn = [&](Method m, tbb::task_arena& a, const auto& test) {
-      const auto t = Clock::now();
-      m.inside = overBlocks(a, k, nullptr, [&](std::uint64_t i0, std::uint64_t i1) {
-        std::uint64_t in = 0;
-        for (std::uint64_t i = i0; i < i1; ++i) {
-          answer[i] = test(points(i)) ? 1 : 0;
-          in += answer[i];
-        }
-        return in;
-      });
-      m.seconds = since(t);
+      for (int r = 0; r < repeat; ++r) {
+        const auto t = Clock::now();
+        m.inside = overBlocks(a, k, nullptr, [&](std::uint64_t i0, std::uint64_t i1) {
+          std::uint64_t in = 0;
+          for (std::uint64_t i = i0; i < i1; ++i) {
+            answer[i] = test(points(i)) ? 1 : 0;
+            in += answer[i];
+          }
+          return in;
+        });
+        m.runs.push_back(since(t));
+      }
+      m.seconds = median(m.runs);
       m.points = k;
       m.threads = a.max_concurrency();
       m.disagreements = disagreements();
@@ -375,6 +404,7 @@ int main(int argc, char** argv) {
 
     Method acdAll{"ACD hulls (grid)", false, decomposeSeconds + indexSeconds, usedThreads, samples, locateSeconds,
                   inside};
+    acdAll.runs = locateRuns;
     methods.push_back(acdAll);
     methods.push_back(timeOn({"ACD hulls (grid)", false, decomposeSeconds + indexSeconds}, single, hullInside));
 
@@ -405,10 +435,14 @@ int main(int argc, char** argv) {
       const auto test = [&](const Vec3& p) { return ecdLocator->inside(p); };
       methods.push_back(timeOn({ecdName, true, ecd.seconds + ecdIndexSeconds}, single, test));
       Method all{ecdName, true, ecd.seconds + ecdIndexSeconds, usedThreads, samples};
-      const auto t = Clock::now();
-      all.inside = overBlocks(arena, samples, progress ? "locating in the ECD" : nullptr,
-                              [&](std::uint64_t i0, std::uint64_t i1) { return ecdLocator->countInside(points, i0, i1); });
-      all.seconds = since(t);
+      for (int r = 0; r < repeat; ++r) {
+        const auto t = Clock::now();
+        all.inside =
+            overBlocks(arena, samples, progress ? "locating in the ECD" : nullptr,
+                       [&](std::uint64_t i0, std::uint64_t i1) { return ecdLocator->countInside(points, i0, i1); });
+        all.runs.push_back(since(t));
+      }
+      all.seconds = median(all.runs);
       methods.push_back(all);
     } else {
       methods.push_back({ecdName, true, ecd.seconds, 0, 0, 0, 0, std::nullopt,
@@ -439,7 +473,12 @@ int main(int argc, char** argv) {
                 100.0 * static_cast<double>(hulls.boundaryCells()) / static_cast<double>(hulls.cellCount()),
                 hulls.planesPerBoundaryCell(), static_cast<double>(hulls.indexBytes()) / 1e6);
   std::printf("  points                 %llu\n", static_cast<unsigned long long>(samples));
-  std::printf("  location time          %.3f s wall, %.3f s CPU\n", locateSeconds, locateCpuSeconds);
+  std::printf("  location time          %.3f s wall, %.3f s CPU%s\n", locateSeconds, locateCpuSeconds,
+              repeat > 1 ? (" (median of " + std::to_string(repeat) + " runs, wall " +
+                            std::to_string(*std::min_element(locateRuns.begin(), locateRuns.end())).substr(0, 5) + " to " +
+                            std::to_string(*std::max_element(locateRuns.begin(), locateRuns.end())).substr(0, 5) + " s)")
+                                   .c_str()
+                           : "");
   std::printf("  points per second      %s\n", human(pps).c_str());
   std::printf("  points inside          %llu (%.4f%% of the box)\n", static_cast<unsigned long long>(inside),
               100.0 * static_cast<double>(inside) / static_cast<double>(samples));
@@ -469,8 +508,9 @@ int main(int argc, char** argv) {
   json compareJson = json::array();
   double vsCgal1 = 0.0, vsCgalAll = 0.0;
   if (compare) {
-    std::printf("\ncompare (same points; %llu for the exact methods; time for N extrapolated where fewer were timed)\n",
-                static_cast<unsigned long long>(compareSamples));
+    std::printf("\ncompare (same points; %llu for the exact methods; time for N extrapolated where fewer were timed;"
+                " median of %d runs)\n",
+                static_cast<unsigned long long>(compareSamples), repeat);
     std::printf("  %-36s %7s %9s %7s %11s %12s %11s %10s %10s\n", "method", "threads", "prepare s", "points",
                 "points/s", "N points s", "total s", "inside", "wrong");
     for (const Method& r : methods) {
@@ -491,6 +531,7 @@ int main(int argc, char** argv) {
                              {"prepare_seconds", r.prepareSeconds},
                              {"points", r.points},
                              {"seconds", r.seconds},
+                             {"seconds_runs", r.runs},
                              {"points_per_second", r.rate()},
                              {"seconds_for_all_points", forN},
                              {"extrapolated", r.points < samples},
@@ -525,6 +566,9 @@ int main(int argc, char** argv) {
     j["decomposition_seconds"] = decomposeSeconds;
     j["location_seconds"] = locateSeconds;
     j["location_cpu_seconds"] = locateCpuSeconds;
+    j["repeat"] = repeat;
+    j["location_seconds_runs"] = locateRuns;
+    j["location_cpu_seconds_runs"] = locateCpuRuns;
     j["index"] = noIndex ? json(nullptr)
                          : json{{"cells", {hulls.gridX(), hulls.gridY(), hulls.gridZ()}},
                                 {"seconds", indexSeconds},
