@@ -103,6 +103,31 @@ goal: {position: [3, 3, 3]}
   }
 }
 
+TEST(MeshInput, FreeSpaceGivenDirectly) {
+  // A U-shaped free space (two arms on a base): its ACD cuts the arms off the base.
+  acdtest::TempDir dir("planner_free");
+  acd::writeMesh(dir / "u.off", acd::shapes::uShape());
+  const acd::Box3 b = acd::boundingBox(acd::shapes::uShape());
+  const std::string text = R"(
+free_space: u.off
+robot: {type: point}
+start: {position: [)" + std::to_string(b.lo.x() + 0.5) + ", " + std::to_string(b.hi.y() - 0.5) + ", " + std::to_string(b.center().z()) + R"(]}
+goal: {position: [)" + std::to_string(b.hi.x() - 0.5) + ", " + std::to_string(b.hi.y() - 0.5) + ", " + std::to_string(b.center().z()) + R"(]}
+samplers: [acd]
+acd: {tau: 0.05}
+)";
+  const planner::Scenario s = planner::parseScenario(text, "u.yaml", dir.path().string());
+  EXPECT_TRUE(s.freeSpaceGiven);
+  EXPECT_TRUE(s.workspace.lo.isApprox(b.lo) && s.workspace.hi.isApprox(b.hi));
+  const planner::Preprocessing pre = planner::preprocess(s);
+  EXPECT_EQ(pre.freeSpaceMethod, "given");
+  EXPECT_GE(pre.components.size(), 2u);
+  EXPECT_FALSE(pre.openings.empty());
+  planner::PlanningProblem problem(s, pre.freeSpace, pre.openings);
+  // The point robot must go down one arm, across the base and up the other.
+  EXPECT_TRUE(planner::runTrial(problem, "acd", 100, 0).outcome.connected);
+}
+
 TEST(Planar, Se2RobotSamplesValidStatesAtItsHeight) {
   // A bar in a plane at z = 0.5 between two slabs leaving a 0.5-wide slot.
   const std::string text = R"(
