@@ -179,7 +179,10 @@ int run(const Args& a) {
   std::printf("  complex        %d touching pairs (%d overlapping, deepest %.3g), %d contact planes, %d interface + %d boundary facets\n",
               r.complex.contactPairs, r.complex.overlappingPairs, r.complex.maxOverlapDepth, r.complex.contactPlanes,
               r.complex.interfaceFacets, r.complex.boundaryFacets);
-  std::printf("  TetGen         -%s\n", r.tetgen.switches.c_str());
+  std::printf("  TetGen         -%s (complex snapped at %.0e of the half-diagonal", r.tetgen.switches.c_str(), r.toleranceUsed);
+  if (!r.refusedComplexes.empty())
+    std::printf("; %zu finer ones refused: %s", r.refusedComplexes.size(), r.refusedComplexes.front().c_str());
+  std::printf(")\n");
   const bool two = a.compare;
   if (two) printColumns("", "hulls", "original model", true);
   const std::string directNote = direct.status.ok() ? "" : "not meshed";
@@ -218,6 +221,8 @@ int run(const Args& a) {
               {"merge", a.options.merge},
               {"simplify", a.options.simplify},
               {"tetgen_switches", r.tetgen.switches},
+              {"snap_tolerance", r.toleranceUsed},
+              {"refused_complexes", r.refusedComplexes},
               {"model_volume", r.modelVolume},
               {"components", comps},
               {"complex",
@@ -262,7 +267,8 @@ int main(int argc, char** argv) {
   app.add_option("MODEL", a.model, "Closed mesh (OFF, OBJ, PLY, STL)")->required();
   app.add_option("-t,--tau", a.options.tau, "Concavity tolerance, normalised units")->capture_default_str();
   app.add_option("--simplify", a.options.simplify, "Hulls with at most K vertices that still contain their component (K >= 4)");
-  app.add_option("--quality", a.options.tetgen.radiusEdge, "TetGen radius-edge bound (q); 0: no quality refinement")
+  app.add_option("--quality", a.options.tetgen.radiusEdge,
+                 "TetGen radius-edge bound (q, e.g. 2); 0: no refinement, the coarse constrained Delaunay mesh")
       ->capture_default_str();
   app.add_option("--max-volume", a.options.tetgen.maxVolume, "TetGen maximum tet volume (a), input units; 0: none");
   app.add_option("-o,--output", a.out, "Mesh file (.vtk, .mesh) or base name for .node/.ele/.face");

@@ -30,7 +30,9 @@ void expectConforming(const TetMesh& m) {
 
 TEST(HullMesher, BoxGivesItsExactVolumeWithPositiveTets) {
   const acd::TriMesh box = acd::shapes::box(Vec3(-1, 0, 2), Vec3(2, 1.5, 6));  // volume 3 * 1.5 * 4 = 18
-  const HullMeshResult r = meshHulls(box, fastOptions(0.2));
+  HullMeshOptions o = fastOptions(0.2);
+  o.tetgen.radiusEdge = 2.0;
+  const HullMeshResult r = meshHulls(box, o);
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   ASSERT_EQ(r.hulls.size(), 1u);
   ASSERT_GT(r.quality.tets, 0);

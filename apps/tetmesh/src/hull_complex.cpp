@@ -369,36 +369,64 @@ HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComple
   // 2. Regions: clip overlaps, snap near-plane vertices onto their planes.
   out.regions.resize(n);
   out.clippedVolume.assign(n, 0.0);
-  std::vector<std::vector<Vec3>> regionPoints(n);
   for (int i = 0; i < n; ++i) {
     std::vector<Vec3> pts = hulls[i].vertices;
     for (const SideConstraint& s : constraints[i]) {
       pts = clipConvex(pts, planes[s.plane], s.side, tol, out.clippedVolume[i]);
       if (pts.empty()) break;
     }
-    for (Vec3& p : pts) {
+    // Onto the planes it is near; then points closer than tol are one, the one on most planes kept
+    // (so the faces on contact planes stay on them).
+    std::vector<int> onPlanes(pts.size(), 0);
+    for (std::size_t q = 0; q < pts.size(); ++q) {
       std::vector<const ContactPlane*> near;
       for (const SideConstraint& s : constraints[i])
-        if (std::abs(planes[s.plane].distance(p)) <= tol) near.push_back(&planes[s.plane]);
-      if (!near.empty()) p = projectOnto(p, near);
+        if (std::abs(planes[s.plane].distance(pts[q])) <= tol) near.push_back(&planes[s.plane]);
+      if (!near.empty()) pts[q] = projectOnto(pts[q], near);
+      onPlanes[q] = static_cast<int>(near.size());
     }
-    const acd::ConvexHull h = acd::convexHull(pts);
+    std::vector<int> order(pts.size());
+    for (std::size_t q = 0; q < pts.size(); ++q) order[q] = static_cast<int>(q);
+    std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return onPlanes[x] > onPlanes[y]; });
+    std::vector<Vec3> kept;
+    for (int q : order) {
+      bool close = false;
+      for (const Vec3& k : kept) close = close || (k - pts[q]).norm() <= tol;
+      if (!close) kept.push_back(pts[q]);
+    }
+    const acd::ConvexHull h = acd::convexHull(kept);
     if (!h.degenerate) out.regions[i] = h.mesh;
   }
 
   // Global points and region triangles in global numbering.
+  // Points on more contact planes are welded first, so that they are the ones kept.
   PointWelder welder(tol);
   std::vector<std::vector<Face>> regionTris(n);
   std::vector<std::vector<int>> regionIds(n);
-  for (int i = 0; i < n; ++i) {
-    const TriMesh& r = out.regions[i];
-    for (const Vec3& p : r.vertices) regionIds[i].push_back(welder.add(p));
-    for (const Face& f : r.faces) {
+  {
+    struct Entry {
+      int region, vertex, planes;
+    };
+    std::vector<Entry> entries;
+    for (int i = 0; i < n; ++i) {
+      regionIds[i].assign(out.regions[i].vertices.size(), -1);
+      for (int v = 0; v < static_cast<int>(out.regions[i].vertices.size()); ++v) {
+        int count = 0;
+        for (const SideConstraint& s : constraints[i])
+          count += std::abs(planes[s.plane].distance(out.regions[i].vertices[v])) <= tol ? 1 : 0;
+        entries.push_back({i, v, count});
+      }
+    }
+    std::stable_sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) { return a.planes > b.planes; });
+    for (const Entry& e : entries) regionIds[e.region][e.vertex] = welder.add(out.regions[e.region].vertices[e.vertex]);
+  }
+  for (int i = 0; i < n; ++i)
+    for (const Face& f : out.regions[i].faces) {
       const Face g{regionIds[i][f[0]], regionIds[i][f[1]], regionIds[i][f[2]]};
       if (g[0] != g[1] && g[1] != g[2] && g[0] != g[2]) regionTris[i].push_back(g);
     }
-  }
-  auto onPlane = [&](int id, int k) { return std::abs(planes[k].distance(welder.points()[id])) <= tol; };
+  // Welding moves a point by up to tol: a point of a contact face may now be 2 tol off its plane.
+  auto onPlane = [&](int id, int k) { return std::abs(planes[k].distance(welder.points()[id])) <= 3 * tol; };
 
   // Which triangles lie on a contact plane (they go through the overlay), which are free.
   const int np = static_cast<int>(planes.size());
@@ -563,7 +591,9 @@ HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComple
       plc.facets.push_back(facet);
     }
   plc.points = welder.points();
-  resolveTJunctions(plc, tol);
+  // Only numerically collinear points here: anything coarser was welded above, and dropping a
+  // facet thinner than tol could open a hole where two such facets share their long edge.
+  resolveTJunctions(plc, std::min(tol, 1e-10 * scale));
   for (const Plc::Facet& f : plc.facets) (f.marker == kInterfaceFacet ? out.interfaceFacets : out.boundaryFacets)++;
 
   // One seed per region: the mean of its vertices, strictly inside a convex solid.

@@ -52,20 +52,29 @@ HullMeshResult meshHulls(const acd::TriMesh& model, const HullMeshOptions& optio
   }
   r.times.hulls = since(t0);
 
-  t0 = std::chrono::steady_clock::now();
-  HullComplexOptions copt;
-  copt.tolerance = options.tolerance;
-  r.complex = buildHullComplex(r.hulls, copt);
-  r.times.complex = since(t0);
+  // TetGen merges points closer than its own tolerance and then trips over the complex; when it
+  // refuses one, the complex is rebuilt with a 10 times larger snapping distance (twice at most).
+  double tolerance = options.tolerance;
+  for (int attempt = 0; attempt < 3; ++attempt, tolerance *= 10) {
+    t0 = std::chrono::steady_clock::now();
+    HullComplexOptions copt;
+    copt.tolerance = tolerance;
+    r.complex = buildHullComplex(r.hulls, copt);
+    r.times.complex += since(t0);
+    r.toleranceUsed = tolerance;
+    if (!r.complex.status.ok()) continue;
+    r.tetgen = runTetGen(r.complex.plc, options.tetgen);
+    r.times.tetgen += r.tetgen.seconds;
+    if (r.tetgen.ok) break;
+    r.refusedComplexes.push_back(r.tetgen.error);
+  }
   if (!r.complex.status.ok()) {
     r.status = r.complex.status;
     return r;
   }
+  r.hullsVolume = 0;
   for (const acd::TriMesh& region : r.complex.regions)
     if (!region.empty()) r.hullsVolume += acd::signedVolume(region);
-
-  r.tetgen = runTetGen(r.complex.plc, options.tetgen);
-  r.times.tetgen = r.tetgen.seconds;
   if (!r.tetgen.ok) {
     // Say which facets were at fault: TetGen's own intersection check (`d`) on the same input.
     TetGenOptions check = options.tetgen;

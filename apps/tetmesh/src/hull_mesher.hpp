@@ -18,8 +18,14 @@ struct HullMeshOptions {
   int simplify = 0;          // > 0: hulls with at most this many vertices (>= 4)
   bool merge = false;        // the decomposition's merge pass; off keeps hulls apart along cut planes
   int threads = 0;           // decomposition threads, 0 = all cores
-  double tolerance = 1e-8;   // complex snapping tolerance (relative)
-  TetGenOptions tetgen;
+  double tolerance = 1e-8;   // complex snapping tolerance (relative); raised 10x if TetGen refuses
+  TetGenOptions tetgen = coarse();
+  /// No quality refinement: the constrained Delaunay mesh of the complex, as coarse as it gets.
+  static TetGenOptions coarse() {
+    TetGenOptions o;
+    o.radiusEdge = 0;
+    return o;
+  }
 };
 
 struct HullMeshTimes {
@@ -34,6 +40,8 @@ struct HullMeshResult {
   int simplifyMissed = 0;                // hulls that could not get down to `simplify` vertices
   double maxOutside = 0.0;               // largest distance of a component vertex outside its hull
   HullComplex complex;
+  double toleranceUsed = 0.0;                  // snapping tolerance of the complex TetGen meshed
+  std::vector<std::string> refusedComplexes;   // TetGen's errors on complexes with smaller tolerances
   TetGenResult tetgen;
   MeshQuality quality;
   double modelVolume = 0.0;              // input units
