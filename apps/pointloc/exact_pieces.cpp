@@ -14,12 +14,15 @@ ExactPieces exactPieces(const acd::TriMesh& model, double timeLimitSeconds) {
   out.available = true;
   acd::ExactOptions options;
   options.timeLimitSeconds = timeLimitSeconds;
+  // No cap on the count: a partial set of pieces would leave holes in the union (the time
+  // and memory caps still stop a decomposition that grows too large).
+  options.maxPieces = static_cast<std::size_t>(-1);
   acd::ExactDecomposition ecd = acd::exactSolidDecomposition(model, options);
   out.seconds = ecd.seconds;
   out.pieceCount = ecd.pieceCount;
-  // Capped pieces (maxPieces) would leave holes in the union: only a complete set is located.
-  out.finished = ecd.status.ok() && ecd.finished && ecd.pieces.size() == ecd.pieceCount;
-  out.note = !ecd.status.ok() ? ecd.status.message : ecd.note;
+  out.refused = !ecd.status.ok();
+  out.finished = !out.refused && ecd.finished;
+  out.note = out.refused ? ecd.status.message : ecd.note;
   if (out.finished) out.pieces = std::move(ecd.pieces);
   return out;
 }

@@ -10,7 +10,8 @@ namespace pointloc {
 
 struct ExactPieces {
   bool available = false;         // libacd provides an exact solid decomposition
-  bool finished = false;          // every piece is convex (the decomposition completed)
+  bool refused = false;           // the ECD does not accept this model (e.g. self-intersecting)
+  bool finished = false;          // the decomposition completed: the pieces cover the model
   std::vector<acd::TriMesh> pieces;
   std::size_t pieceCount = 0;     // as reported, also when unfinished
   double seconds = 0.0;

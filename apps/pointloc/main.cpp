@@ -446,7 +446,7 @@ int main(int argc, char** argv) {
       methods.push_back(all);
     } else {
       methods.push_back({ecdName, true, ecd.seconds, 0, 0, 0, 0, std::nullopt,
-                         ecd.available ? "unfinished: " + ecd.note : ecd.note});
+                         !ecd.available ? ecd.note : (ecd.refused ? "refused: " : "unfinished: ") + ecd.note});
     }
   }
   const double totalSeconds = since(t0);
@@ -548,7 +548,8 @@ int main(int argc, char** argv) {
                   usedThreads, vsCgal1, vsCgalAll, usedThreads);
     if (ecd.available)
       std::printf("  exact convex decomposition: %zu pieces, %.3f s, %s%s%s\n", ecd.pieceCount, ecd.seconds,
-                  ecd.finished ? "finished" : "unfinished", ecd.note.empty() ? "" : ": ", ecd.note.c_str());
+                  ecd.refused ? "refused" : ecd.finished ? "finished" : "unfinished", ecd.note.empty() ? "" : ": ",
+                  ecd.note.c_str());
   }
 
   if (!jsonPath.empty()) {
@@ -602,6 +603,7 @@ int main(int argc, char** argv) {
                       {"speedup_vs_cgal_same_threads", vsCgalAll},
                       {"ecd",
                        {{"available", ecd.available},
+                        {"refused", ecd.refused},
                         {"finished", ecd.finished},
                         {"pieces", ecd.pieceCount},
                         {"seconds", ecd.seconds},
