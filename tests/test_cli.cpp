@@ -232,6 +232,22 @@ TEST_F(Cli, OpenMeshHolesAreFilledAndReported) {
   EXPECT_TRUE(said) << report["input"]["repairs"].dump();
 }
 
+TEST_F(Cli, SelfIntersectingInputIsReportedAndDecomposed) {
+  // Two boxes that pass through each other, written as one mesh.
+  TriMesh both = shapes::box(Vec3(0, 0, 0), Vec3(2, 1, 1));
+  const TriMesh other = shapes::box(Vec3(1, 0.25, 0.25), Vec3(3, 0.75, 0.75));
+  const int base = static_cast<int>(both.vertices.size());
+  both.vertices.insert(both.vertices.end(), other.vertices.begin(), other.vertices.end());
+  for (Face f : other.faces) both.faces.push_back({f[0] + base, f[1] + base, f[2] + base});
+  const std::string model = writeModel("crossing.off", both);
+  const std::string out = path("out");
+  const acdtest::ToolRun r = acd("decompose " + quote(model) + " -q -o " + quote(out));
+  EXPECT_TRUE(r.code == 0 || r.code == 4) << r.code << " " << r.err;
+  EXPECT_NE(r.err.find("intersects itself"), std::string::npos) << r.err;
+  const json report = json::parse(slurp(out + "/report.json"));
+  EXPECT_GT(report["input"]["self_intersecting_face_pairs"].get<int>(), 0);
+}
+
 TEST_F(Cli, NonManifoldEdge) {
   const TriMesh twoCubes = shapes::voxels({{0, 0, 0}, {1, 1, 0}});  // share the edge x = y = 1
   const std::string model = writeModel("nme.off", twoCubes);

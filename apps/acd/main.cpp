@@ -237,6 +237,12 @@ int runDecompose(DecomposeArgs& a) {
   acd::Decomposition d = acd::decompose(r.mesh, a.options);
   if (showProgress) std::fprintf(stderr, "\r%60s\r", "");
   if (!d.status.ok()) return fail(a.model, d.status);
+  // A self-intersecting solid is decomposed anyway: every cut that succeeds yields closed pieces,
+  // and where a section crosses itself no clean cut exists, which is flagged, never hidden.
+  const int selfIntersections = acd::countSelfIntersections(r.mesh);
+  if (selfIntersections > 0)
+    std::fprintf(stderr, "acd: warning: %s intersects itself (%d face pairs); pieces whose sections cross "
+                 "themselves may stay above tau and are marked unresolved\n", a.model.c_str(), selfIntersections);
 
   std::error_code ec;
   fs::create_directories(a.out, ec);
@@ -255,9 +261,7 @@ int runDecompose(DecomposeArgs& a) {
   acd::Status s = acd::writeObjObjects((fs::path(a.out) / "hulls.obj").string(), hulls, names);
   if (!s.ok()) return (void)fail("output", s), kOutputFailed;
   std::ofstream report(fs::path(a.out) / "report.json");
-  // Self-intersections explain unresolved components; only look for them when there are some.
   const bool anyUnresolved = std::any_of(d.components.begin(), d.components.end(), [](const auto& c) { return c.unresolved; });
-  const int selfIntersections = anyUnresolved ? acd::countSelfIntersections(r.mesh) : 0;
   report << reportJson(a, d, diagnosis, selfIntersections).dump(2) << "\n";
   if (!report) return (void)fail("output", acd::Status::error(acd::StatusCode::FileUnreadable, "cannot write report.json")), kOutputFailed;
   if (!a.quiet) printSummary(a, d);
