@@ -23,6 +23,7 @@
 #include <map>
 #include <memory>
 #include <numeric>
+#include <optional>
 #include <unordered_set>
 
 namespace acd {
@@ -205,19 +206,29 @@ Outcome processPiece(const TriMesh& surface, const Piece& piece, const SurfaceDe
   };
   std::vector<Candidate> candidates;
   std::vector<std::unordered_set<std::uint64_t>> seen;
+  // Different cuts often give the same parts: each distinct partition is measured once.
+  std::vector<std::vector<int>> partitions;
+  auto admit = [&](std::vector<std::vector<int>>&& parts, SplitKind kind) {
+    if (parts.size() < 2) return;
+    std::vector<int> label(mesh.faces.size());
+    for (auto& part : parts) {
+      std::sort(part.begin(), part.end());
+      for (int f : part) label[f] = part.front();
+    }
+    if (std::find(partitions.begin(), partitions.end(), label) != partitions.end()) return;
+    partitions.push_back(std::move(label));
+    candidates.push_back({std::move(parts), kind});
+  };
   auto addCut = [&](const GlobalCut& cut) {
     if (cut.vertices.size() < 2) return;
     std::unordered_set<std::uint64_t> edges = cutEdges(mesh, graph, cut, boundary);
     if (edges.empty() || std::find(seen.begin(), seen.end(), edges) != seen.end()) return;
     seen.push_back(edges);
-    auto parts = regions(mesh, graph, oneLabel, edges);
-    if (parts.size() >= 2) candidates.push_back({std::move(parts), SplitKind::GlobalCut});
+    admit(regions(mesh, graph, oneLabel, edges), SplitKind::GlobalCut);
   };
-  auto addPlane = [&](const Plane& plane) {
-    auto parts = regions(mesh, graph, sideLabels(mesh, plane), {});
-    if (parts.size() >= 2) candidates.push_back({std::move(parts), SplitKind::Plane});
-  };
+  auto addPlane = [&](const Plane& plane) { admit(regions(mesh, graph, sideLabels(mesh, plane), {}), SplitKind::Plane); };
   const Vec3& x = mesh.vertices[notch];
+  std::optional<Plane> fitted;  // best-fit plane of the first grown cut
   if (o.featureGrouping) {
     // The paper's global cut (the minimum-weight cycle of G_K) and the greedily grown variants
     // the solid decomposition also tries; the split is along the cut's own edges.
@@ -230,19 +241,17 @@ Outcome processPiece(const TriMesh& surface, const Piece& piece, const SurfaceDe
       fo.notchAsEnd = variant % 2 == 0;
       const GlobalCut cut = findGlobalCut(mesh, graph, map, fo);
       addCut(cut);
-      if (variant == 0 && cut.vertices.size() >= 3)
-        addPlane(Plane::through(x, fitCutPlane(mesh, cut, bridgeNormal, 0.5 * o.tau).normal));
+      if (variant == 0 && cut.vertices.size() >= 3) fitted = fitCutPlane(mesh, cut, bridgeNormal, 0.5 * o.tau);
     }
+    // After every cut, so that a plane giving the same parts as a cut does not take its place.
+    if (fitted) addPlane(Plane::through(x, fitted->normal));
   }
   // Planes through the notch: the bisector of its dihedral angle, and two that contain the bridge normal.
   addPlane(bisectorPlane(mesh, graph, notch, bridgeNormal));
   const Vec3 u = bridgeNormal.unitOrthogonal(), w = bridgeNormal.cross(u);
   addPlane(Plane::through(x, u));
   addPlane(Plane::through(x, w));
-  if (candidates.empty()) {
-    auto parts = regions(mesh, graph, geodesicLabels(mesh, graph, notch), {});
-    if (parts.size() >= 2) candidates.push_back({std::move(parts), SplitKind::Geodesic});
-  }
+  if (candidates.empty()) admit(regions(mesh, graph, geodesicLabels(mesh, graph, notch), {}), SplitKind::Geodesic);
   if (candidates.empty()) {
     out.unresolved = true;
     out.note = "no split of the patch along its edges was found";
@@ -422,6 +431,9 @@ SurfaceDecomposition decomposeSurface(const TriMesh& mesh, const SurfaceDecompos
   t = Clock::now();
   if (o.merge) {
     std::vector<char> alive(finals.size(), 1);
+    // Union concavity of pairs measured in earlier rounds, dropped when either side changes:
+    // a round only measures the pairs next to the patches the previous round glued.
+    std::map<std::pair<int, int>, double> known;
     for (bool merged = true; merged;) {
       merged = false;
       std::vector<int> patchOf(surface.faces.size(), -1);
@@ -435,19 +447,25 @@ SurfaceDecomposition decomposeSurface(const TriMesh& mesh, const SurfaceDecompos
       std::vector<std::size_t> order(pairs.size());
       std::iota(order.begin(), order.end(), 0);
       std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return length[a] > length[b]; });
-      std::vector<std::vector<int>> unionFaces(pairs.size());
       std::vector<double> concavity(pairs.size());
-      tbb::parallel_for(std::size_t(0), pairs.size(), [&](std::size_t k) {
-        const auto [a, b] = pairs[k];
+      std::vector<char> cached(pairs.size(), 0);
+      for (std::size_t k = 0; k < pairs.size(); ++k)
+        if (auto it = known.find(pairs[k]); it != known.end()) concavity[k] = it->second, cached[k] = 1;
+      auto unionOf = [&](int a, int b) {
+        std::vector<int> faces;
         std::merge(finals[a].faces.begin(), finals[a].faces.end(), finals[b].faces.begin(), finals[b].faces.end(),
-                   std::back_inserter(unionFaces[k]));
-        concavity[k] = measure(subMesh(surface, unionFaces[k]), o.epsilon);
+                   std::back_inserter(faces));
+        return faces;
+      };
+      tbb::parallel_for(std::size_t(0), pairs.size(), [&](std::size_t k) {
+        if (!cached[k]) concavity[k] = measure(subMesh(surface, unionOf(pairs[k].first, pairs[k].second)), o.epsilon);
       });
+      for (std::size_t k = 0; k < pairs.size(); ++k) known[pairs[k]] = concavity[k];
       std::vector<char> changed(finals.size(), 0);
       for (std::size_t k : order) {
         const auto [a, b] = pairs[k];
         if (concavity[k] > o.tau || changed[a] || changed[b]) continue;
-        finals[a].faces = std::move(unionFaces[k]);
+        finals[a].faces = unionOf(a, b);
         finals[a].depth = std::min(finals[a].depth, finals[b].depth);
         finalInfo[a].concavity = concavity[k];
         alive[b] = 0;
@@ -455,6 +473,8 @@ SurfaceDecomposition decomposeSurface(const TriMesh& mesh, const SurfaceDecompos
         ++result.stats.merges;
         merged = true;
       }
+      for (auto it = known.begin(); it != known.end();)
+        it = changed[it->first.first] || changed[it->first.second] ? known.erase(it) : std::next(it);
     }
     std::vector<Piece> keptPieces;
     std::vector<Outcome> keptInfo;
