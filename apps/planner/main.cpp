@@ -45,7 +45,11 @@ int main(int argc, char** argv) {
   app.add_flag("--sweep", sweep, "Also run every sample count of the scenario's 'sweep' (success-rate plot data)");
   app.add_option("--sweep-trials", sweepTrials, "Trials per point of the sweep (overrides the scenario)");
   app.add_flag("-q,--quiet", quiet, "No progress and no preprocessing report");
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 1;  // --help is not an error
+  }
 
   ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
   planner::Scenario scenario;
@@ -78,6 +82,13 @@ int main(int argc, char** argv) {
     std::cerr << "planner: " << e.what() << "\n";
     return 2;
   }
+  // Before the long part: a run whose results cannot be written is not started.
+  std::error_code ec;
+  std::filesystem::create_directories(scenario.outputDir, ec);
+  if (ec || !std::filesystem::is_directory(scenario.outputDir)) {
+    std::cerr << "planner: cannot create the output folder " << scenario.outputDir << (ec ? ": " + ec.message() : "") << "\n";
+    return 3;
+  }
   if (pre.openings.empty() && std::find(scenario.samplers.begin(), scenario.samplers.end(), "acd") != scenario.samplers.end())
     std::cerr << "planner: warning: the ACD of the free space has no openings (one component at tau " << scenario.acd.tau
               << "); the acd sampler falls back to uniform samples\n";
@@ -106,8 +117,6 @@ int main(int argc, char** argv) {
             << " trials per sampler, seed " << scenario.seed << "\n";
   planner::printTable(std::cout, runs);
 
-  std::error_code ec;
-  std::filesystem::create_directories(scenario.outputDir, ec);
   const std::filesystem::path dir(scenario.outputDir);
   std::ofstream(dir / "results.json") << planner::resultsJson(scenario, pre, problem->acdSpread(), runs, sweepResults) << "\n";
   if (!planner::writeBenchmarkLog((dir / "benchmark.log").string(), *problem, runs, seconds))

@@ -89,6 +89,14 @@ TEST(PlannerCli, BadScenariosExitTwoNamingTheProblem) {
   const auto missing = acdtest::runTool(PLANNER_BIN, acdtest::quote(dir / "nope.yaml"), dir);
   EXPECT_EQ(missing.code, 2);
   EXPECT_NE(missing.err.find("nope.yaml"), std::string::npos);
+  write(dir / "good.yaml", kScenario);
+  const auto badOption = acdtest::runTool(PLANNER_BIN, acdtest::quote(dir / "good.yaml") + " --no-such-option", dir);
+  EXPECT_EQ(badOption.code, 1);
+  // The output folder cannot be a file: refused before any trial runs.
+  write(dir / "afile", "x");
+  const auto badOut = acdtest::runTool(PLANNER_BIN, acdtest::quote(dir / "good.yaml") + " -o " + acdtest::quote(dir / "afile"), dir);
+  EXPECT_EQ(badOut.code, 3);
+  EXPECT_NE(badOut.err.find("output folder"), std::string::npos) << badOut.err;
 }
 
 }  // namespace
