@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Skeletons under deformation (paper, Section 7, Figure 21): three corpus models, each with an
-# ARAP limb bend and a rigid motion with non-uniform scaling; ACD skeleton and CGAL's
+# ARAP limb bend, a rigid motion with non-uniform scaling, and a rigid motion alone (a control:
+# the ACD skeleton should not change at all); ACD skeleton and CGAL's
 # mean-curvature-flow skeleton (three runs per mesh, since its size varies run to run).
 # Writes OUT/<model>/ (skeletons, deformed meshes, report.json) and OUT/table.md.
 #
@@ -24,9 +25,10 @@ run() {
     cat "$OUT/$model.txt"
 }
 
-run elephant --deform bend:+x:z:-40 --deform affine:20,35,-10:1.3,1,0.8:0.2,0,0
-run camel --deform bend:+y:x:35 --deform affine:-15,0,30:1,1.25,0.85:0,0.1,0
-run armadillo --deform bend:+x:z:40 --deform affine:0,60,10:0.8,1.2,1:5,0,0
+RIGID=affine:30,-20,45:1,1,1:0.1,0.2,0
+run elephant --deform bend:+x:z:-40 --deform affine:20,35,-10:1.3,1,0.8:0.2,0,0 --deform $RIGID
+run camel --deform bend:+y:x:35 --deform affine:-15,0,30:1,1.25,0.85:0,0.1,0 --deform $RIGID
+run armadillo --deform bend:+x:z:40 --deform affine:0,60,10:0.8,1.2,1:5,0,0 --deform $RIGID
 
 /usr/bin/python3 - "$OUT" elephant camel armadillo >"$OUT/table.md" <<'PYEOF'
 import json, sys

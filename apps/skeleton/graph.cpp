@@ -63,7 +63,9 @@ int connectedComponents(const Graph& g) {
   return count;
 }
 
-Graph contractDegreeTwo(const Graph& g) {
+Graph contractDegreeTwo(const Graph& g) { return contractWithChains(g).graph; }
+
+Contraction contractWithChains(const Graph& g) {
   const int n = g.nodeCount();
   std::vector<std::set<int>> adj(n);
   for (const auto& [a, b] : g.edges) adj[a].insert(b), adj[b].insert(a);
@@ -84,15 +86,38 @@ Graph contractDegreeTwo(const Graph& g) {
       changed = true;
     }
   }
-  Graph out;
+  Contraction c;
+  Graph& out = c.graph;
   std::vector<int> index(n, -1);
   for (int v = 0; v < n; ++v)
-    if (!removed[v]) index[v] = out.addNode(g.nodes[v].position, g.nodes[v].kind, g.nodes[v].source);
+    if (!removed[v]) {
+      index[v] = out.addNode(g.nodes[v].position, g.nodes[v].kind, g.nodes[v].source);
+      c.kept.push_back(v);
+    }
   for (int v = 0; v < n; ++v)
     for (int w : adj[v])
       if (v < w) out.addEdge(index[v], index[w]);
   std::sort(out.edges.begin(), out.edges.end());
-  return out;
+  // Chains: from each kept node, walk the input through removed nodes to the next kept one.
+  std::vector<std::vector<int>> nbr(n);
+  for (const auto& [a, b] : g.edges) nbr[a].push_back(b), nbr[b].push_back(a);
+  c.chains.assign(out.edges.size(), {});
+  for (int p : c.kept)
+    for (int t : nbr[p]) {
+      std::vector<int> chain;
+      int prev = p, cur = t;
+      while (removed[cur]) {
+        chain.push_back(cur);
+        const int next = nbr[cur][0] == prev ? nbr[cur][1] : nbr[cur][0];
+        prev = cur;
+        cur = next;
+      }
+      const int a = index[p], b = index[cur];
+      if (a >= b) continue;  // each chain once, walked from its lower end
+      const auto it = std::lower_bound(out.edges.begin(), out.edges.end(), std::make_pair(a, b));
+      if (it != out.edges.end() && *it == std::make_pair(a, b)) c.chains[it - out.edges.begin()] = chain;
+    }
+  return c;
 }
 
 }  // namespace skeleton

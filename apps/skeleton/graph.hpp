@@ -55,4 +55,12 @@ int connectedComponents(const Graph& g);
 /// The result is unique up to isomorphism. Positions and kinds of kept nodes are kept.
 Graph contractDegreeTwo(const Graph& g);
 
+/// The contraction with its correspondence to the input.
+struct Contraction {
+  Graph graph;                          // as contractDegreeTwo returns it
+  std::vector<int> kept;                // node of `graph` -> node of the input
+  std::vector<std::vector<int>> chains; // per edge of `graph` (same order): the removed input nodes along it, from edge.first to edge.second
+};
+Contraction contractWithChains(const Graph& g);
+
 }  // namespace skeleton

@@ -105,3 +105,29 @@ TEST(Contract, InvariantsOnRandomGraphs) {
     EXPECT_EQ(contractDegreeTwo(c).nodeCount(), c.nodeCount());
   }
 }
+
+TEST(Contract, ChainsRebuildTheInput) {
+  std::mt19937 rng(8);
+  for (int trial = 0; trial < 100; ++trial) {
+    // Sparse graphs have long chains.
+    const int n = std::uniform_int_distribution<int>(2, 30)(rng);
+    Graph g = makeGraph(n, {});
+    for (int v = 1; v < n; ++v) g.addEdge(v, std::uniform_int_distribution<int>(0, v - 1)(rng));  // a tree
+    for (int k = 0; k < 3; ++k)
+      g.addEdge(std::uniform_int_distribution<int>(0, n - 1)(rng), std::uniform_int_distribution<int>(0, n - 1)(rng));
+    const Contraction c = contractWithChains(g);
+    ASSERT_EQ(c.kept.size(), static_cast<std::size_t>(c.graph.nodeCount()));
+    ASSERT_EQ(c.chains.size(), c.graph.edges.size());
+    const std::vector<char> adj = adjacency(g);
+    std::vector<int> seen(n, 0);
+    for (int k : c.kept) ++seen[k];
+    for (std::size_t e = 0; e < c.graph.edges.size(); ++e) {
+      std::vector<int> walk{c.kept[c.graph.edges[e].first]};
+      walk.insert(walk.end(), c.chains[e].begin(), c.chains[e].end());
+      walk.push_back(c.kept[c.graph.edges[e].second]);
+      for (std::size_t i = 0; i + 1 < walk.size(); ++i) EXPECT_TRUE(adj[walk[i] * n + walk[i + 1]]);
+      for (int v : c.chains[e]) ++seen[v];
+    }
+    for (int v = 0; v < n; ++v) EXPECT_EQ(seen[v], 1) << "node " << v << " trial " << trial;
+  }
+}

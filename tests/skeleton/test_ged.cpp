@@ -174,3 +174,32 @@ TEST(Ged, BudgetExhaustedIsReportedNotHidden) {
   EXPECT_LE(r.lowerBound, full.distance);
   EXPECT_GE(r.distance, full.distance);
 }
+
+TEST(Ged, BipartiteIsTightOnSkeletonLikeGraphs) {
+  // Long paths: the distance is the length difference (nodes plus edges).
+  GedResult r = bipartiteGed(path(40), path(37));
+  EXPECT_EQ(r.distance, 6);
+  EXPECT_EQ(r.lowerBound, 6);
+  // Spiders (a centre with arms) with arms of 9, 12, 20 against 9, 14, 17. An edit path of
+  // cost 4: the first 14 nodes of arm 20 onto arm 14, arm 12 onto the start of arm 17, the last
+  // 6 nodes of arm 20 onto the last 5 of arm 17 (one node and its edge deleted), one edge
+  // deleted and one inserted where the pieces join. Fewer than 2 is impossible (42 vs 41 nodes,
+  // 41 vs 40 edges).
+  auto spider = [](std::vector<int> arms) {
+    Graph g = makeGraph(1, {});
+    for (int len : arms) {
+      int prev = 0;
+      for (int i = 0; i < len; ++i) {
+        const int v = g.addNode(Vec3::Zero());
+        g.addEdge(prev, v);
+        prev = v;
+      }
+    }
+    return g;
+  };
+  r = bipartiteGed(spider({9, 12, 20}), spider({9, 14, 17}));
+  EXPECT_LE(r.distance, 4);
+  EXPECT_GE(r.distance, 2);
+  EXPECT_LE(r.lowerBound, r.distance);
+  EXPECT_GT(r.assignmentCost, r.distance);  // the plain assignment alone is far off here
+}
