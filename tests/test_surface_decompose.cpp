@@ -232,3 +232,23 @@ TEST(SurfaceDecompose, CommandLineWritesPatchesHullsAndReport) {
   EXPECT_EQ(acdtest::runTool(ACD_CLI, "decompose " + model + " --surface -t 0 -q -o " + out, dir).code, 3);
   EXPECT_EQ(acdtest::runTool(ACD_CLI, "decompose " + (dir / "none.off") + " --surface -q -o " + out, dir).code, 2);
 }
+
+TEST(SurfaceDecompose, SelfIntersectingInputIsSplitAndReported) {
+  if (!fs::exists(ACD_CLI)) GTEST_SKIP() << "CLI not built";
+  // Two boxes that overlap: each is a piece of its own and is one patch; the report says they cross.
+  TriMesh two = shapes::box(Vec3(0, 0, 0), Vec3(2, 1, 1));
+  const TriMesh other = shapes::box(Vec3(1, 0.5, 0.5), Vec3(3, 1.5, 1.5));
+  const int base = static_cast<int>(two.vertices.size());
+  two.vertices.insert(two.vertices.end(), other.vertices.begin(), other.vertices.end());
+  for (Face f : other.faces) two.faces.push_back({f[0] + base, f[1] + base, f[2] + base});
+  acdtest::TempDir dir("surface_self_intersecting");
+  const std::string model = dir / "two.off", out = dir / "out";
+  ASSERT_TRUE(writeMesh(model, two).ok());
+  const acdtest::ToolRun r = acdtest::runTool(ACD_CLI, "decompose " + model + " --surface -t 0.05 -q -o " + out, dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("intersects itself"), std::string::npos) << r.err;
+  std::ifstream in(out + "/report.json");
+  const json report = json::parse(in);
+  EXPECT_GT(report["input"]["self_intersecting_face_pairs"].get<int>(), 0);
+  EXPECT_EQ(report["totals"]["components"].get<int>(), 2);
+}

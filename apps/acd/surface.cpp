@@ -48,7 +48,7 @@ std::uintmax_t fileSize(const fs::path& p) {
 }
 
 json reportJson(const SurfaceArgs& a, const acd::SurfaceDecomposition& d, const acd::MeshDiagnosis& input,
-                std::uintmax_t bytes) {
+                int selfIntersections, std::uintmax_t bytes) {
   const auto& o = d.options;
   json j;
   j["model"] = a.model;
@@ -70,6 +70,7 @@ json reportJson(const SurfaceArgs& a, const acd::SurfaceDecomposition& d, const 
                 {"area", d.stats.inputArea},
                 {"genus", input.genus},
                 {"concave_hull_vertices", d.stats.concaveHullVertices},
+                {"self_intersecting_face_pairs", selfIntersections},
                 {"normalization", {{"center", {d.normalization.center.x(), d.normalization.center.y(), d.normalization.center.z()}},
                                    {"scale", d.normalization.scale}}},
                 {"repairs", d.repairs}};
@@ -160,6 +161,12 @@ int runSurfaceDecompose(SurfaceArgs& a) {
   const acd::SurfaceDecomposition d = acd::decomposeSurface(r.mesh, a.options);
   if (showProgress) std::fprintf(stderr, "\r%60s\r", "");
   if (!d.status.ok()) return fail(a.model, d.status);
+  // Splitting never cuts through the surface, so a surface that passes through itself is split
+  // like any other; the patches then pass through each other where the input did.
+  const int selfIntersections = acd::countSelfIntersections(r.mesh);
+  if (selfIntersections > 0)
+    std::fprintf(stderr, "acd: warning: %s intersects itself (%d face pairs); the patches intersect where it does\n",
+                 a.model.c_str(), selfIntersections);
 
   std::error_code ec;
   fs::create_directories(a.out, ec);
@@ -181,7 +188,7 @@ int runSurfaceDecompose(SurfaceArgs& a) {
   if (!acd::writeObjObjects(hullPath.string(), hulls, hullNames).ok()) return outputFailed(hullPath.string());
   const std::uintmax_t bytes = fileSize(patchPath);
   std::ofstream report(fs::path(a.out) / "report.json");
-  report << reportJson(a, d, diagnosis, bytes).dump(2) << "\n";
+  report << reportJson(a, d, diagnosis, selfIntersections, bytes).dump(2) << "\n";
   if (!report) return outputFailed((fs::path(a.out) / "report.json").string());
   if (!a.quiet) printSummary(a, d, bytes);
   const bool anyUnresolved = std::any_of(d.patches.begin(), d.patches.end(), [](const auto& p) { return p.unresolved; });
