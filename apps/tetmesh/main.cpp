@@ -175,13 +175,14 @@ int run(const Args& a) {
                 hullVerts, simpleVerts, a.options.simplify, r.simplifyMissed);
   else
     std::printf("  hulls          %d vertices\n", hullVerts);
-  std::printf("  containment    farthest component vertex outside its hull: %.3g\n", r.maxOutside);
+  std::printf("  containment    farthest component vertex outside its hull: %.3g, outside its meshed region: %.3g%s\n",
+              r.maxOutside, r.maxOutsideRegion,
+              a.options.simplify > 0 && !r.cutAtSeparators ? " (overlaps split at planes of the simplified hulls)" : "");
   std::printf("  complex        %d touching pairs (%d overlapping, deepest %.3g), %d contact planes, %d interface + %d boundary facets\n",
               r.complex.contactPairs, r.complex.overlappingPairs, r.complex.maxOverlapDepth, r.complex.contactPlanes,
               r.complex.interfaceFacets, r.complex.boundaryFacets);
   std::printf("  TetGen         -%s (complex snapped at %.0e of the half-diagonal", r.tetgen.switches.c_str(), r.toleranceUsed);
-  if (!r.refusedComplexes.empty())
-    std::printf("; %zu finer ones refused: %s", r.refusedComplexes.size(), r.refusedComplexes.front().c_str());
+  if (!r.refusedComplexes.empty()) std::printf("; %zu complexes refused before", r.refusedComplexes.size());
   std::printf(")\n");
   const bool two = a.compare;
   if (two) printColumns("", "hulls", "original model", true);
@@ -233,6 +234,8 @@ int run(const Args& a) {
                 {"interface_facets", r.complex.interfaceFacets},
                 {"boundary_facets", r.complex.boundaryFacets}}},
               {"max_outside", r.maxOutside},
+              {"max_outside_region", r.maxOutsideRegion},
+              {"cut_at_exact_hull_contacts", r.cutAtSeparators},
               {"hull_mesh", qualityJson(r.quality)},
               {"volume_error", volErr},
               {"seconds",
@@ -278,6 +281,8 @@ int main(int argc, char** argv) {
   app.add_option("--threads", a.options.threads, "Decomposition threads, 0 = all cores")->capture_default_str();
   app.add_option("--snap", a.options.tolerance,
                  "Features closer than this (relative to the half-diagonal) are one: welding, contacts")
+      ->capture_default_str();
+  app.add_option("--timeout", a.options.tetgen.timeoutSeconds, "Seconds TetGen may take per call before it is stopped")
       ->capture_default_str();
   app.add_option("--json", a.json, "Write the report as JSON to this file");
   app.add_option("--poly", a.poly, "Write the hull complex given to TetGen as a .poly file");

@@ -125,6 +125,43 @@ bool fitPlane(const std::vector<Vec3>& pts, const Vec3& hint, Vec3& normal) {
   return true;
 }
 
+/// Where two convex point sets are farthest apart along a facet normal of either: `gap` > 0 is
+/// a clearance, < 0 the depth of the overlap. For touching sets the plane is refitted to the
+/// points of both near it (their shared cut section). The plane lies halfway between them.
+struct Contact {
+  double gap = std::numeric_limits<double>::infinity();
+  Vec3 normal = Vec3::UnitZ();  // from the first set toward the second
+  double offset = 0.0;
+};
+
+Contact findContact(const std::vector<Vec3>& vi, const std::vector<Vec3>& vj, const std::vector<Vec3>& ni,
+                    const std::vector<Vec3>& nj, double tol) {
+  Contact ct;
+  ct.gap = -std::numeric_limits<double>::infinity();
+  auto consider = [&](const Vec3& nrm) {
+    const double gap = minAlong(vj, nrm) - maxAlong(vi, nrm);
+    if (gap > ct.gap) ct.gap = gap, ct.normal = nrm;
+  };
+  for (const Vec3& nrm : ni) consider(nrm);
+  for (const Vec3& nrm : nj) consider(-nrm);
+  if (ct.gap >= -tol && ct.gap <= tol) {
+    const double hi = maxAlong(vi, ct.normal), lo = minAlong(vj, ct.normal);
+    const double band = 1e3 * tol;
+    std::vector<Vec3> near;
+    for (const Vec3& p : vi)
+      if (std::abs(ct.normal.dot(p) - hi) <= band) near.push_back(p);
+    for (const Vec3& p : vj)
+      if (std::abs(ct.normal.dot(p) - lo) <= band) near.push_back(p);
+    Vec3 fitted = ct.normal;
+    if (fitPlane(near, ct.normal, fitted)) {
+      const double gap = minAlong(vj, fitted) - maxAlong(vi, fitted);
+      if (gap >= ct.gap) ct.gap = gap, ct.normal = fitted;
+    }
+  }
+  ct.offset = 0.5 * (maxAlong(vi, ct.normal) + minAlong(vj, ct.normal));
+  return ct;
+}
+
 /// Closest point to p on the intersection of the given planes (1 to 3 of them, independent).
 Vec3 projectOnto(const Vec3& p, const std::vector<const ContactPlane*>& planes) {
   std::vector<const ContactPlane*> use;
@@ -306,6 +343,12 @@ HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComple
   // 1. Contacts between pairs, on clustered planes.
   std::vector<std::vector<Vec3>> normals(n);
   for (int i = 0; i < n; ++i) normals[i] = uniqueFacetNormals(hulls[i]);
+  if (!options.separators.empty() && static_cast<int>(options.separators.size()) != n) {
+    out.status = acd::Status::error(acd::StatusCode::InvalidParameter, "one separator per hull is needed");
+    return out;
+  }
+  std::vector<std::vector<Vec3>> separatorNormals(options.separators.size());
+  for (std::size_t i = 0; i < options.separators.size(); ++i) separatorNormals[i] = uniqueFacetNormals(options.separators[i]);
   std::vector<ContactPlane> planes;
   std::vector<std::vector<SideConstraint>> constraints(n);
   for (int i = 0; i < n; ++i)
@@ -313,37 +356,25 @@ HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComple
       const bool apart = ((boxes[i].lo.array() - tol > boxes[j].hi.array()) ||
                           (boxes[j].lo.array() - tol > boxes[i].hi.array())).any();
       if (apart) continue;
-      const auto& vi = hulls[i].vertices;
-      const auto& vj = hulls[j].vertices;
-      double bestGap = -std::numeric_limits<double>::infinity();
-      Vec3 best = Vec3::UnitZ();
-      auto consider = [&](const Vec3& nrm) {
-        const double gap = minAlong(vj, nrm) - maxAlong(vi, nrm);
-        if (gap > bestGap) bestGap = gap, best = nrm;
-      };
-      for (const Vec3& nrm : normals[i]) consider(nrm);
-      for (const Vec3& nrm : normals[j]) consider(-nrm);
-      if (bestGap > tol) continue;
-      ++out.contactPairs;
-      if (bestGap < -tol) {
-        ++out.overlappingPairs;
-        out.maxOverlapDepth = std::max(out.maxOverlapDepth, -bestGap);
-      } else {
-        // Touching: refit the plane to the vertices of both near it (the shared cut section).
-        const double hi = maxAlong(vi, best), lo = minAlong(vj, best);
-        const double band = 1e3 * tol;
-        std::vector<Vec3> near;
-        for (const Vec3& p : vi)
-          if (std::abs(best.dot(p) - hi) <= band) near.push_back(p);
-        for (const Vec3& p : vj)
-          if (std::abs(best.dot(p) - lo) <= band) near.push_back(p);
-        Vec3 fitted;
-        if (fitPlane(near, best, fitted)) {
-          const double gap = minAlong(vj, fitted) - maxAlong(vi, fitted);
-          if (gap >= bestGap) bestGap = gap, best = fitted;
-        }
+      // With separators (e.g. the exact hulls of simplified ones), a pair whose separators touch
+      // is split where they touch: at the cut plane, which keeps each component on its side.
+      bool fromSeparators = false;
+      Contact ct;
+      if (!options.separators.empty()) {
+        ct = findContact(options.separators[i].vertices, options.separators[j].vertices, separatorNormals[i],
+                         separatorNormals[j], tol);
+        fromSeparators = ct.gap >= -tol && ct.gap <= tol;
       }
-      ContactPlane pl{best, 0.5 * (maxAlong(vi, best) + minAlong(vj, best))};
+      if (!fromSeparators) ct = findContact(hulls[i].vertices, hulls[j].vertices, normals[i], normals[j], tol);
+      if (ct.gap > tol) continue;
+      const Vec3 best = ct.normal;
+      const double depth = maxAlong(hulls[i].vertices, best) - minAlong(hulls[j].vertices, best);
+      ++out.contactPairs;
+      if (depth > tol) {
+        ++out.overlappingPairs;
+        out.maxOverlapDepth = std::max(out.maxOverlapDepth, depth);
+      }
+      ContactPlane pl{best, ct.offset};
       // The same plane as an earlier contact (possibly facing the other way)?
       int id = -1;
       double sideI = 1.0;

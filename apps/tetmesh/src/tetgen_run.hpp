@@ -18,7 +18,7 @@ struct TetGenOptions {
   double maxVolume = 0.0;    // TetGen `a`; <= 0: no bound
   bool regions = true;       // `A`: label tets by the region seeds of the PLC
   bool checkIntersections = false;  // `d` only: report intersecting facets and stop
-  int timeoutSeconds = 900;  // the child is stopped after this
+  int timeoutSeconds = 120;  // the child is stopped after this (TetGen can loop on near-degenerate input)
 };
 
 struct TetGenResult {
