@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 #include <ompl/util/Console.h>
+#include <ompl/util/RandomNumbers.h>
 
 #include <chrono>
 #include <filesystem>
@@ -74,6 +75,9 @@ int main(int argc, char** argv) {
         scenario.samplers.push_back(name);
       }
     }
+    // Every random stream of a trial has its own local seed (seeding.hpp); the global seed
+    // covers anything else OMPL draws, and must be set before OMPL's first generator exists.
+    ompl::RNG::setSeed(scenario.seed);
     if (!outputDir.empty()) scenario.outputDir = outputDir;
     if (scenario.outputDir.empty()) scenario.outputDir = "out/planner/" + scenario.name;
     pre = planner::preprocess(scenario);

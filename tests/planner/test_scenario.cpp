@@ -63,7 +63,7 @@ TEST(Scenario, ValidFileGivesItsValues) {
 }
 
 TEST(Scenario, ShippedScenariosParse) {
-  for (const char* name : {"narrow.yaml", "maze.yaml", "bugtrap.yaml"}) {
+  for (const char* name : {"narrow.yaml", "narrow_wide.yaml", "maze.yaml", "bugtrap.yaml"}) {
     SCOPED_TRACE(name);
     const planner::Scenario s = planner::loadScenario(std::string(PLANNER_SCENARIO_DIR) + "/" + name);
     EXPECT_FALSE(s.obstacles.empty());
