@@ -106,6 +106,27 @@ void expectValid(const TriMesh& input, const SurfaceDecomposition& d, double tau
   EXPECT_NEAR(area, surfaceArea(d.surface) * scale * scale, 1e-9 * area);
 }
 
+/// Reflex (concave) edges of the surface whose two faces lie in the same patch, and all reflex edges.
+std::pair<int, int> reflexEdgesInsidePatches(const SurfaceDecomposition& d) {
+  std::vector<int> owner(d.surface.faces.size(), -1);
+  for (std::size_t i = 0; i < d.patches.size(); ++i)
+    for (int f : d.patches[i].faces) owner[f] = static_cast<int>(i);
+  const SurfaceGraph graph(d.surface);
+  int inside = 0, reflex = 0;
+  for (int f = 0; f < graph.faceCount(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int g = graph.faceAcross(f, k);
+      if (g < f) continue;
+      const Vec3& a = d.surface.vertices[d.surface.faces[f][k]];
+      const Vec3& b = d.surface.vertices[d.surface.faces[f][(k + 1) % 3]];
+      const Vec3 turn = faceNormal(d.surface, f).normalized().cross(faceNormal(d.surface, g).normalized());
+      if (turn.dot(b - a) >= -1e-9) continue;  // convex or flat
+      ++reflex;
+      inside += owner[f] == owner[g];
+    }
+  return {inside, reflex};
+}
+
 }  // namespace
 
 TEST(SurfaceDecompose, BoxIsOnePatch) {
@@ -137,6 +158,10 @@ TEST(SurfaceDecompose, LShapeIsSplitAtTheNotch) {
     EXPECT_GE(d.patches.size(), 2u);
     EXPECT_GE(d.stats.splits, 1);
     EXPECT_GT(d.stats.inputNotches, 0);
+    // Split at the notch: the reflex edge separates two patches.
+    const auto [inside, reflex] = reflexEdgesInsidePatches(d);
+    EXPECT_EQ(reflex, 1);
+    EXPECT_EQ(inside, 0);
   }
 }
 
@@ -146,6 +171,10 @@ TEST(SurfaceDecompose, UShapeIsSplitAtTheNotches) {
   expectValid(u, d, 0.05);
   EXPECT_GT(patchConcavity(applyNormalization(u, d.normalization), 0.025), 0.05);
   EXPECT_GE(d.patches.size(), 2u);
+  // Both reflex edges at the slot's floor separate patches.
+  const auto [inside, reflex] = reflexEdgesInsidePatches(d);
+  EXPECT_EQ(reflex, 2);
+  EXPECT_EQ(inside, 0);
 }
 
 TEST(SurfaceDecompose, TorusOfGenusOne) {
