@@ -31,7 +31,7 @@ std::vector<std::string> splitList(const std::string& s) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   CLI::App app{"PRM with samples biased toward the openings between the ACD components of the free space"};
   std::string scenarioPath, samplerList, outputDir;
   int samples = 0, trials = 0, sweepTrials = 0;
@@ -134,4 +134,17 @@ int main(int argc, char** argv) {
             << (bestFrom.empty() ? "" : ", " + (dir / "best_path.txt").string() + " (from " + bestFrom + ")")
             << (sweepResults.empty() ? "" : ", " + (dir / "sweep.csv").string()) << "\n";
   return 0;
+}
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const planner::ScenarioError& e) {
+    std::cerr << "planner: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    // OMPL, FCL or the standard library refusing something we did not foresee: a bug to report.
+    std::cerr << "planner: internal error: " << e.what() << "\n";
+    return 4;
+  }
 }
