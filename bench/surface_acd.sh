@@ -13,7 +13,9 @@
 #   --acd PATH     the CLI (default: build/bin/acd)
 #
 # Each run is `ACD decompose data/meshes/MODEL.off --surface -t TAU -q -o DIR`; the row comes from
-# DIR/report.json. Progress goes to stderr, the table to stdout. Exit 1 if a run failed.
+# DIR/report.json. The baseline, run once per model in the same run, is the exact convex surface
+# decomposition (`--exact --surface`). Progress goes to stderr, the table to stdout. Exit 1 if a
+# run failed.
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -26,7 +28,7 @@ REPEAT=1
 OUTROOT="out/bench-surface"
 ACD="build/bin/acd"
 
-usage() { sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; }
 while [[ $# -gt 0 ]]; do
     case "$1" in
         --taus) TAUS="$2"; shift 2 ;;
@@ -48,11 +50,16 @@ VARIANTS=(on)
 (( BOTH )) && VARIANTS=(on off)
 median() { sort -g | awk '{a[NR]=$1} END {if (NR==0) exit; if (NR%2) print a[(NR+1)/2]; else print (a[NR/2]+a[NR/2+1])/2}'; }
 
-echo "| model | faces | boundary edges | concave hull vertices | τ | grouping | patches | max concavity | splits (global cut / plane / geodesic) | merges | patches.obj bytes | time s |"
-echo "|---|---:|---:|---:|---:|---|---:|---:|---|---:|---:|---:|"
+echo "| model | faces | boundary edges | concave hull vertices | τ | grouping | patches | % of surface ECD patches | max concavity | splits (global cut / plane / geodesic) | merges | patches.obj bytes | time s |"
+echo "|---|---:|---:|---:|---:|---|---:|---:|---:|---|---:|---:|---:|"
 failed=0
 for model in $MODELS; do
     mesh="data/meshes/$model.off"
+    # The baseline, in the same run: the exact convex surface decomposition (--exact --surface).
+    ecd=0
+    if "$ACD" decompose "$mesh" --exact --surface -q -o "$OUTROOT/$model-ecd" 2>"$OUTROOT/$model-ecd.log"; then
+        ecd=$(jq '.totals.components' "$OUTROOT/$model-ecd/report.json")
+    fi
     for tau in $TAUS; do
         for grouping in "${VARIANTS[@]}"; do
             dir="$OUTROOT/$model-$tau-$grouping"
@@ -69,13 +76,13 @@ for model in $MODELS; do
                 times+=("$(jq '.timing.total_seconds' "$dir/report.json")")
             done
             if [[ $code -ne 0 && $code -ne 4 ]]; then
-                echo "| $model | | | | $tau | $grouping | FAILED (exit $code: $(tail -1 "$dir.log")) | | | | | |"
+                echo "| $model | | | | $tau | $grouping | FAILED (exit $code: $(tail -1 "$dir.log")) | | | | | | |"
                 failed=1
                 continue
             fi
             t=$(printf '%s\n' "${times[@]}" | median)
-            jq -r --arg model "$model" --arg tau "$tau" --arg g "$grouping" --arg t "$t" \
-                '"| \($model) | \(.input.faces) | \(.input.boundary_edges) | \(.input.concave_hull_vertices) | \($tau) | \($g) | \(.totals.components)\(if .totals.unresolved > 0 then " (\(.totals.unresolved) unresolved)" else "" end) | \(.totals.max_concavity * 1000 | round / 1000) | \(.totals.splits) (\(.totals.global_cut_splits) / \(.totals.plane_splits) / \(.totals.geodesic_splits)) | \(.totals.merges) | \(.totals.output_bytes) | \($t | tonumber * 100 | round / 100) |"' \
+            jq -r --arg model "$model" --arg tau "$tau" --arg g "$grouping" --arg t "$t" --argjson ecd "$ecd" \
+                '"| \($model) | \(.input.faces) | \(.input.boundary_edges) | \(.input.concave_hull_vertices) | \($tau) | \($g) | \(.totals.components)\(if .totals.unresolved > 0 then " (\(.totals.unresolved) unresolved)" else "" end) | \(if $ecd > 0 then (.totals.components * 10000 / $ecd | round / 100 | tostring) + " % of \($ecd)" else "n/a" end) | \(.totals.max_concavity * 1000 | round / 1000) | \(.totals.splits) (\(.totals.global_cut_splits) / \(.totals.plane_splits) / \(.totals.geodesic_splits)) | \(.totals.merges) | \(.totals.output_bytes) | \($t | tonumber * 100 | round / 100) |"' \
                 "$dir/report.json"
         done
     done
