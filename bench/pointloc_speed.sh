@@ -64,26 +64,31 @@ print(f"Model {j0['model']}, τ = {j0['tau']}, {j0['samples']:,} points, {j0['th
       f"{len(runs)} run(s) x {j0['repeat']} passes (medians, min–max in brackets); exact methods timed on "
       f"the first {j0['compare']['samples']:,} points of the same stream. Load average at the end: "
       f"{load[0]:.1f}, {load[1]:.1f}, {load[2]:.1f}.\n")
-print("| method | threads | preparation s | points timed | points/s | time for all points s | total s (Figure 20) | answers differing from acd::InsideTest |")
-print("|---|---:|---:|---:|---:|---:|---:|---:|")
+print("| method | threads | preparation s | points timed | points/s (wall) | points per CPU second | time for all points s | total s (Figure 20) | answers differing from acd::InsideTest |")
+print("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
 def key(m): return (m["method"], m.get("threads"))
 keys = [key(m) for m in j0["compare"]["methods"]]
 rate_of = {}
+cpu_rate_of = {}
 for k in keys:
     ms = [m for j in runs for m in j["compare"]["methods"] if key(m) == k and m["available"]]
     if not ms:
         note = next(m for m in j0["compare"]["methods"] if key(m) == k).get("note", "not available")
-        print(f"| {k[0]} | | {note} | | | | | |")
+        print(f"| {k[0]} | | {note} | | | | | | |")
         continue
     pts = ms[0]["points"]
     secs = [s for m in ms for s in m["seconds_runs"]]
     rates = [pts / s for s in secs]
     rate_of[k] = med(rates)
+    cpus = [c for m in ms for c in m["cpu_seconds_runs"]]
+    per_cpu = pts / med(cpus) if med(cpus) > 0 else 0.0
+    cpu_rate_of[k] = per_cpu
     forN = med(secs) * j0["samples"] / pts
     prep = med([m["prepare_seconds"] for m in ms])
     star = "*" if ms[0]["extrapolated"] else ""
     diff = ms[0]["disagreements_with_exact"]
     print(f"| {k[0]} | {ms[0]['threads']} | {prep:.2f} | {pts:,} | {med(rates) / 1e6:.3g} M [{min(rates) / 1e6:.3g}–{max(rates) / 1e6:.3g}] "
+          f"| {per_cpu / 1e6:.3g} M "
           f"| {forN:.2f}{star} | {prep + forN:.1f}{star} | {'-' if diff is None else diff} |")
 loc = [s for j in runs for s in j["location_seconds_runs"]]
 cpu = [s for j in runs for s in j["location_cpu_seconds_runs"]]
@@ -95,8 +100,14 @@ hull = rate_of.get(("ACD hulls (grid)", j0["threads"]))
 c1 = rate_of.get(("model: CGAL Side_of_triangle_mesh", 1))
 cn = rate_of.get(("model: CGAL Side_of_triangle_mesh", j0["threads"]))
 if hull and c1:
-    print(f"- hull rate / CGAL Side_of_triangle_mesh rate on 1 thread: {hull / c1:.1f}x; "
+    print(f"- hull rate / CGAL Side_of_triangle_mesh rate on 1 thread, wall clock, as measured: {hull / c1:.1f}x; "
           f"against CGAL on {j0['threads']} threads: {hull / cn:.1f}x")
+    hc = cpu_rate_of[("ACD hulls (grid)", j0["threads"])]
+    cc = cpu_rate_of[("model: CGAL Side_of_triangle_mesh", 1)]
+    n = j0["threads"]
+    print(f"- per CPU second (independent of the share of the machine the run got): hulls {hc / 1e6:.3g} M, "
+          f"CGAL {cc / 1e6:.3g} M points, {hc / cc:.1f}x; on {n} otherwise idle cores the hulls would locate "
+          f"{j0['samples']:,} points in about {j0['samples'] / hc / n:.2f} s wall, {n * hc / cc:.0f}x CGAL on one thread")
 e = j0["exact"]
 print(f"- error (first {e['samples']:,} points, acd::InsideTest): false inside {e['false_inside']}, "
       f"false outside {e['false_outside']}, error rate {100 * e['error_rate']:.3f} % "

@@ -271,6 +271,19 @@ TEST_F(PointLoc, SameSeedSameCountsForAnyThreads) {
   EXPECT_EQ(one["exact"]["false_outside"], two["exact"]["false_outside"]);
   const json other = report(quote(model) + " --samples 1e5 --exact-samples 50000 --seed 8 --threads 2");
   EXPECT_NE(other["points_inside"], one["points_inside"]);  // the seed matters
+
+  // A real model, whose grid has many boundary cells and overlapping hulls.
+  const std::string eight = corpus("eight");
+  ASSERT_TRUE(fs::exists(eight)) << "corpus missing: scripts/fetch_corpus.sh";
+  const std::string realArgs = quote(eight) + " --tau 0.2 --samples 3e5 --exact-samples 1e5 --seed 3";
+  const json a = report(realArgs + " --threads 1");
+  const json b = report(realArgs + " --threads 2");
+  ASSERT_FALSE(a.empty());
+  ASSERT_FALSE(b.empty());
+  EXPECT_EQ(a["points_inside"], b["points_inside"]);
+  EXPECT_EQ(a["exact"]["false_inside"], b["exact"]["false_inside"]);
+  EXPECT_EQ(a["exact"]["top_false_inside"], b["exact"]["top_false_inside"]);
+  EXPECT_GT(a["index"]["boundary_cells"].get<int>(), 100);
 }
 
 TEST_F(PointLoc, GridGivesTheSameCountsAsTestingEveryHull) {

@@ -80,6 +80,15 @@ std::uint64_t overBlocks(tbb::task_arena& arena, std::uint64_t n, const char* pr
   return std::accumulate(counts.begin(), counts.end(), std::uint64_t{0});
 }
 
+/// CPU seconds of the process (all threads), or of the calling thread only: a pass on a
+/// one-thread arena runs in the calling thread, and idle spinning of the other threads'
+/// workers must not count against it.
+double cpuNow(bool callingThreadOnly) {
+  timespec t{};
+  clock_gettime(callingThreadOnly ? CLOCK_THREAD_CPUTIME_ID : CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 double median(std::vector<double> v) {
   if (v.empty()) return 0.0;
   std::sort(v.begin(), v.end());
@@ -122,6 +131,9 @@ struct Method {
   std::optional<std::uint64_t> disagreements;  // with acd::InsideTest on the compare subsample
   std::string note;             // why the row has no figures
   std::vector<double> runs;     // seconds of each repetition; `seconds` is their median
+  std::vector<double> cpuRuns;  // CPU seconds (all threads) of each repetition
+
+  double cpuSeconds() const { return median(cpuRuns); }
 
   bool measured() const { return points > 0 && note.empty(); }
   double rate() const { return seconds > 0 ? static_cast<double>(points) / seconds : 0.0; }
@@ -289,13 +301,13 @@ int main(int argc, char** argv) {
   std::vector<double> locateRuns, locateCpuRuns;
   for (int r = 0; r < repeat; ++r) {
     const auto tLoc = Clock::now();
-    const std::clock_t cpuLoc = std::clock();
+    const double cpuLoc = cpuNow(usedThreads == 1);
     const std::uint64_t in =
         overBlocks(arena, samples, progress ? "locating" : nullptr,
                    [&](std::uint64_t i0, std::uint64_t i1) { return hulls.countInside(points, i0, i1); });
     locateRuns.push_back(since(tLoc));
     // CPU seconds of all threads: on a busy machine the better guide to what location costs.
-    locateCpuRuns.push_back(static_cast<double>(std::clock() - cpuLoc) / CLOCKS_PER_SEC);
+    locateCpuRuns.push_back(cpuNow(usedThreads == 1) - cpuLoc);
     if (r > 0 && in != inside) {
       std::fprintf(stderr, "pointloc: internal error: repeated location counted %llu, then %llu\n",
                    static_cast<unsigned long long>(inside), static_cast<unsigned long long>(in));
@@ -384,6 +396,8 @@ int main(int argc, char** argv) {
     const auto timeOn = [&](Method m, tbb::task_arena& a, const auto& test) {
       for (int r = 0; r < repeat; ++r) {
         const auto t = Clock::now();
+        const bool alone = a.max_concurrency() == 1;
+        const double cpu = cpuNow(alone);
         m.inside = overBlocks(a, k, nullptr, [&](std::uint64_t i0, std::uint64_t i1) {
           std::uint64_t in = 0;
           for (std::uint64_t i = i0; i < i1; ++i) {
@@ -393,6 +407,7 @@ int main(int argc, char** argv) {
           return in;
         });
         m.runs.push_back(since(t));
+        m.cpuRuns.push_back(cpuNow(alone) - cpu);
       }
       m.seconds = median(m.runs);
       m.points = k;
@@ -405,6 +420,7 @@ int main(int argc, char** argv) {
     Method acdAll{"ACD hulls (grid)", false, decomposeSeconds + indexSeconds, usedThreads, samples, locateSeconds,
                   inside};
     acdAll.runs = locateRuns;
+    acdAll.cpuRuns = locateCpuRuns;
     methods.push_back(acdAll);
     methods.push_back(timeOn({"ACD hulls (grid)", false, decomposeSeconds + indexSeconds}, single, hullInside));
 
@@ -437,10 +453,12 @@ int main(int argc, char** argv) {
       Method all{ecdName, true, ecd.seconds + ecdIndexSeconds, usedThreads, samples};
       for (int r = 0; r < repeat; ++r) {
         const auto t = Clock::now();
+        const double cpu = cpuNow(false);
         all.inside =
             overBlocks(arena, samples, progress ? "locating in the ECD" : nullptr,
                        [&](std::uint64_t i0, std::uint64_t i1) { return ecdLocator->countInside(points, i0, i1); });
         all.runs.push_back(since(t));
+        all.cpuRuns.push_back(cpuNow(false) - cpu);
       }
       all.seconds = median(all.runs);
       methods.push_back(all);
@@ -506,13 +524,13 @@ int main(int argc, char** argv) {
   std::printf("  total time             %.3f s%s\n", mainSeconds, compare ? " (without --compare)" : "");
 
   json compareJson = json::array();
-  double vsCgal1 = 0.0, vsCgalAll = 0.0;
+  double vsCgal1 = 0.0, vsCgalAll = 0.0, cgalPerCpu = 0.0;
   if (compare) {
     std::printf("\ncompare (same points; %llu for the exact methods; time for N extrapolated where fewer were timed;"
                 " median of %d runs)\n",
                 static_cast<unsigned long long>(compareSamples), repeat);
-    std::printf("  %-36s %7s %9s %7s %11s %12s %11s %10s %10s\n", "method", "threads", "prepare s", "points",
-                "points/s", "N points s", "total s", "inside", "wrong");
+    std::printf("  %-36s %7s %9s %7s %11s %11s %12s %11s %10s %10s\n", "method", "threads", "prepare s", "points",
+                "points/s", "per CPU s", "N points s", "total s", "inside", "wrong");
     for (const Method& r : methods) {
       if (!r.measured()) {
         std::printf("  %-36s %s\n", r.name.c_str(), r.note.c_str());
@@ -520,8 +538,10 @@ int main(int argc, char** argv) {
         continue;
       }
       const double forN = r.secondsFor(samples);
-      std::printf("  %-36s %7d %9.3f %7s %11s %11.3f%s %11.3f %10llu %10s\n", r.name.c_str(), r.threads,
-                  r.prepareSeconds, human(static_cast<double>(r.points)).c_str(), human(r.rate()).c_str(), forN,
+      const double perCpu = r.cpuSeconds() > 0 ? static_cast<double>(r.points) / r.cpuSeconds() : 0.0;
+      std::printf("  %-36s %7d %9.3f %7s %11s %11s %11.3f%s %11.3f %10llu %10s\n", r.name.c_str(), r.threads,
+                  r.prepareSeconds, human(static_cast<double>(r.points)).c_str(), human(r.rate()).c_str(),
+                  human(perCpu).c_str(), forN,
                   r.points < samples ? "*" : " ", r.prepareSeconds + forN, static_cast<unsigned long long>(r.inside),
                   r.disagreements ? std::to_string(*r.disagreements).c_str() : "-");
       compareJson.push_back({{"method", r.name},
@@ -532,13 +552,19 @@ int main(int argc, char** argv) {
                              {"points", r.points},
                              {"seconds", r.seconds},
                              {"seconds_runs", r.runs},
+                             {"cpu_seconds", r.cpuSeconds()},
+                             {"cpu_seconds_runs", r.cpuRuns},
+                             {"points_per_cpu_second", r.cpuSeconds() > 0 ? r.points / r.cpuSeconds() : 0.0},
                              {"points_per_second", r.rate()},
                              {"seconds_for_all_points", forN},
                              {"extrapolated", r.points < samples},
                              {"total_seconds", r.prepareSeconds + forN},
                              {"points_inside", r.inside},
                              {"disagreements_with_exact", r.disagreements ? json(*r.disagreements) : json(nullptr)}});
-      if (r.name.rfind("model: CGAL", 0) == 0) (r.threads == 1 ? vsCgal1 : vsCgalAll) = pps / r.rate();
+      if (r.name.rfind("model: CGAL", 0) == 0) {
+        (r.threads == 1 ? vsCgal1 : vsCgalAll) = pps / r.rate();
+        if (r.threads == 1 && perCpu > 0) cgalPerCpu = perCpu;
+      }
     }
     std::printf("  (* extrapolated from the points timed; 'wrong' = answers that differ from acd::InsideTest on the\n"
                 "   first %llu points; 'prepare' = decomposition or AABB tree, and the grid)\n",
@@ -546,6 +572,11 @@ int main(int argc, char** argv) {
     if (vsCgal1 > 0)
       std::printf("  ACD hulls, %d threads, are %.1fx the rate of CGAL on 1 thread and %.1fx CGAL on %d threads\n",
                   usedThreads, vsCgal1, vsCgalAll, usedThreads);
+    // Per CPU second the ratio does not depend on how much of the machine this process got.
+    if (cgalPerCpu > 0 && locateCpuSeconds > 0)
+      std::printf("  per CPU second: ACD hulls %s points, CGAL %s points (%.1fx)\n",
+                  human(static_cast<double>(samples) / locateCpuSeconds).c_str(), human(cgalPerCpu).c_str(),
+                  static_cast<double>(samples) / locateCpuSeconds / cgalPerCpu);
     if (ecd.available)
       std::printf("  exact convex decomposition: %zu pieces, %.3f s, %s%s%s\n", ecd.pieceCount, ecd.seconds,
                   ecd.refused ? "refused" : ecd.finished ? "finished" : "unfinished", ecd.note.empty() ? "" : ": ",
@@ -601,6 +632,10 @@ int main(int argc, char** argv) {
                       {"methods", compareJson},
                       {"speedup_vs_cgal_1_thread", vsCgal1},
                       {"speedup_vs_cgal_same_threads", vsCgalAll},
+                      {"speedup_vs_cgal_per_cpu_second",
+                       cgalPerCpu > 0 && locateCpuSeconds > 0
+                           ? static_cast<double>(samples) / locateCpuSeconds / cgalPerCpu
+                           : 0.0},
                       {"ecd",
                        {{"available", ecd.available},
                         {"refused", ecd.refused},
