@@ -15,11 +15,14 @@ TMP="$(mktemp -d)"
 trap 'rm -rf "$TMP"' EXIT
 
 for model in elephant camel armadillo; do
+    # The camel's length runs along z: turn it a quarter about y so that it is seen from the side.
+    turn=0
+    [[ $model == camel ]] && turn=1
     for kind in acd mcf; do
-        /usr/bin/python3 - "$ROOT/data/meshes/$model.off" "$IN/$model" "$kind" "$TMP/scene.obj" <<'PYEOF'
+        /usr/bin/python3 - "$ROOT/data/meshes/$model.off" "$IN/$model" "$kind" "$TMP/scene.obj" "$turn" <<'PYEOF'
 import glob, os, sys
 
-original, folder, kind, dst = sys.argv[1:5]
+original, folder, kind, dst, turn = sys.argv[1:6]
 
 def read_off(path):
     toks = [l.split() for l in open(path) if l.strip() and not l.startswith('#')]
@@ -28,6 +31,8 @@ def read_off(path):
     nv, nf = int(toks[1][0]), int(toks[1][1])
     verts = [[float(x) for x in t[:3]] for t in toks[2:2 + nv]]
     faces = [[int(x) for x in t[1:1 + int(t[0])]] for t in toks[2 + nv:2 + nv + nf]]
+    if turn == '1':
+        verts = [[v[2], v[1], -v[0]] for v in verts]
     return verts, faces
 
 names = ['original'] + sorted(os.path.basename(p)[:-4] for p in glob.glob(folder + '/deformed_*.off')
@@ -45,14 +50,14 @@ for name in names:
         out.extend('f ' + ' '.join(str(i + 1 + base) for i in f) + '\n' for f in faces)
         base += len(verts)
     shift += (hi - lo) * 1.1
-mtl = ('newmtl skin\nKa 0.2 0.15 0.1\nKd 0.80 0.62 0.42\nd 0.22\n\n'
+mtl = ('newmtl skin\nKa 0.2 0.15 0.1\nKd 0.80 0.62 0.42\nd 0.3\n\n'
        'newmtl bone\nKa 0.02 0.04 0.15\nKd 0.10 0.25 0.85\nd 1\n')
 open(dst, 'w').writelines(out)
 for name in (dst + '.mtl', os.path.join(os.path.dirname(dst), 'scene.mtl')):
     open(name, 'w').write(mtl)
 PYEOF
         xvfb-run -a -s "-screen 0 1920x1080x24" f3d "$TMP/scene.obj" --output="$IMAGES/skeleton-$model-$kind.png" \
-            --resolution=1500,520 --up=+Y --camera-azimuth-angle=0 --camera-elevation-angle=10 \
+            --resolution=1800,520 --up=+Y --camera-azimuth-angle=0 --camera-elevation-angle=10 --camera-view-angle=13 \
             --bg-color=1,1,1 --depth-peeling >/dev/null 2>&1
         echo "wrote $IMAGES/skeleton-$model-$kind.png"
     done

@@ -58,5 +58,8 @@ for m in models:
             counts(mcf) if "nodes" in mcf else "-",
             "%d–%d" % (min(runs), max(runs)) if runs else "-",
             dist(mcf.get("D")), dist(mcf.get("D2"))))
+        if "run2_vs_run1_D" in mcf:  # the CGAL skeleton against itself: its noise floor
+            print("| %s | CGAL run 2 vs run 1, same mesh | | | | | | | %s | %s |" % (
+                m, dist(mcf["run2_vs_run1_D"]), dist(mcf["run2_vs_run1_D2"])))
 PYEOF
 cat "$OUT/table.md"

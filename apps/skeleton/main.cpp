@@ -98,6 +98,9 @@ struct Model {
   std::vector<int> mcfRunNodes;  // node counts of repeated MCF runs
   double decomposeSeconds = 0, mcfSeconds = 0;
   GedResult d, d2, mcfD, mcfD2;
+  Graph mcfSecond;               // second CGAL run of the same mesh, for the run-to-run distance
+  bool hasSecond = false;
+  GedResult runD, runD2;         // CGAL skeleton, run 1 against run 2 of the same mesh
 };
 
 json graphSummary(const Graph& g, const Graph& contracted) {
@@ -238,6 +241,9 @@ int main(int argc, char** argv) {
           m.mcfOk = true;
           m.mcf = std::move(s.graph);
           m.mcfContracted = contractDegreeTwo(m.mcf);
+        } else if (run == 1 && &m == &models[0]) {
+          m.mcfSecond = std::move(s.graph);
+          m.hasSecond = true;
         }
       }
     }
@@ -246,6 +252,13 @@ int main(int argc, char** argv) {
   GedOptions ged;
   ged.exactMaxNodes = exactMaxNodes;
   ged.maxExpansions = maxExpansions;
+  Model& first = models[0];
+  if (first.hasSecond) {
+    // The noise floor of the CGAL skeleton: the same mesh, skeletonized twice.
+    progress("original: CGAL skeleton run 1 against run 2");
+    first.runD = graphEditDistance(first.mcfSecond, first.mcf, ged);
+    first.runD2 = graphEditDistance(contractDegreeTwo(first.mcfSecond), first.mcfContracted, ged);
+  }
   const Model& original = models[0];
   for (std::size_t i = 1; i < models.size(); ++i) {
     Model& m = models[i];
@@ -301,6 +314,10 @@ int main(int argc, char** argv) {
         entry["mcf"] = graphSummary(m.mcf, m.mcfContracted);
         entry["mcf"]["seconds_per_run"] = m.mcfSeconds / std::max<std::size_t>(1, m.mcfRunNodes.size());
         entry["mcf"]["run_node_counts"] = m.mcfRunNodes;
+        if (m.hasSecond) {
+          entry["mcf"]["run2_vs_run1_D"] = toJson(m.runD);
+          entry["mcf"]["run2_vs_run1_D2"] = toJson(m.runD2);
+        }
       } else {
         entry["mcf"] = {{"error", m.mcfError}};
       }
@@ -334,6 +351,10 @@ int main(int argc, char** argv) {
                   m.mcfOk ? std::to_string(m.mcfContracted.nodeCount()).c_str() : "-",
                   i && mcf ? distanceCell(m.mcfD).c_str() : "-", i && mcf ? distanceCell(m.mcfD2).c_str() : "-");
     }
+    if (original.hasSecond)
+      std::printf("%-12s %5s %9s %9s %14s %14s %9d %9s %14s %14s\n", "orig. run 2", "", "", "", "", "",
+                  original.mcfSecond.nodeCount(), "", distanceCell(original.runD).c_str(),
+                  distanceCell(original.runD2).c_str());
     std::printf("D: graph edit distance to the original's skeleton (unit costs); D2: degree-2 nodes contracted.\n"
                 "A value with [>=L] is the bipartite upper bound with lower bound L; others are exact.\n");
   }

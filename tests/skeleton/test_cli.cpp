@@ -21,7 +21,7 @@ TEST(SkeletonCli, DumbbellWithTwoDeformations) {
   const std::string out = dir / "out";
   const auto r = runTool(SKELETON_CLI,
                          acdtest::quote(model) + " --tau 0.1 --deform affine:30,0,60:1,1,1:5,0,0 --deform affine:0,0,0:1,1,1.5"
-                         " --deform bend:+z:x:40 -o " + acdtest::quote(out),
+                         " --deform bend:+z:x:40 --mcf-runs 2 --tubes 0.004 -o " + acdtest::quote(out),
                          dir);
   ASSERT_EQ(r.code, 0) << r.err;
   for (const char* f : {"report.json", "original.acd_skeleton.json", "original.acd_skeleton.obj",
@@ -33,6 +33,10 @@ TEST(SkeletonCli, DumbbellWithTwoDeformations) {
   EXPECT_EQ(original["name"], "original");
   EXPECT_GE(original["acd"]["nodes"].get<int>(), 3);
   EXPECT_FALSE(original["acd"].contains("D"));
+  EXPECT_EQ(original["mcf"]["run_node_counts"].size(), 2u);
+  EXPECT_LE(original["mcf"]["run2_vs_run1_D"]["lower_bound"].get<int>(),
+            original["mcf"]["run2_vs_run1_D"]["distance"].get<int>());
+  EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(out) / "deformed_3.mcf_skeleton_tubes.off"));
   // A rigid motion leaves the decomposition, hence the skeleton, unchanged.
   const json& rigid = report["models"][1];
   EXPECT_EQ(rigid["acd"]["nodes"], original["acd"]["nodes"]);
