@@ -347,7 +347,8 @@ TEST_F(PointLoc, BadInputsAreRefusedWithAMessage) {
       {quote(model) + " --grid-cells 0", 3, "--grid-cells"},
       {quote(garbage), 2, "garbage.off"},
       {quote(open), 2, "open.off"},
-      {quote(model) + " --json " + quote(path("no/such/dir/r.json")), 5, "r.json"},
+      {quote(model) + " --json " + quote(path("no/such/dir/r.json")), 5, "r.json"},  // before any work
+      {quote(model) + " --dump " + quote(path("no/such/dir/d.csv")), 5, "d.csv"},
   };
   for (const Case& c : cases) {
     const acdtest::ToolRun r = run(c.args);

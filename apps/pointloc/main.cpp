@@ -234,6 +234,15 @@ int main(int argc, char** argv) {
     return kBadParameter;
   }
 
+  // Output files are checked before the work, not after a long run.
+  for (const std::string* out : {&jsonPath, &dumpPath}) {
+    if (out->empty()) continue;
+    if (!std::ofstream(*out, std::ios::app)) {
+      std::fprintf(stderr, "pointloc: cannot write %s\n", out->c_str());
+      return kOutputFailed;
+    }
+  }
+
   // ---- model
   std::string modelPath = model;
   if (model == "data/meshes/elephant.off" && !fs::exists(model)) modelPath = POINTLOC_DEFAULT_MODEL;
