@@ -175,9 +175,8 @@ int run(const Args& a) {
                 hullVerts, simpleVerts, a.options.simplify, r.simplifyMissed);
   else
     std::printf("  hulls          %d vertices\n", hullVerts);
-  std::printf("  containment    farthest component vertex outside its hull: %.3g, outside its meshed region: %.3g%s\n",
-              r.maxOutside, r.maxOutsideRegion,
-              a.options.simplify > 0 && !r.cutAtSeparators ? " (overlaps split at planes of the simplified hulls)" : "");
+  std::printf("  containment    farthest component vertex outside its hull: %.3g, outside its meshed region: %.3g\n",
+              r.maxOutside, r.maxOutsideRegion);
   std::printf("  complex        %d touching pairs (%d overlapping, deepest %.3g), %d contact planes, %d interface + %d boundary facets\n",
               r.complex.contactPairs, r.complex.overlappingPairs, r.complex.maxOverlapDepth, r.complex.contactPlanes,
               r.complex.interfaceFacets, r.complex.boundaryFacets);
@@ -235,7 +234,6 @@ int run(const Args& a) {
                 {"boundary_facets", r.complex.boundaryFacets}}},
               {"max_outside", r.maxOutside},
               {"max_outside_region", r.maxOutsideRegion},
-              {"cut_at_exact_hull_contacts", r.cutAtSeparators},
               {"hull_mesh", qualityJson(r.quality)},
               {"volume_error", volErr},
               {"seconds",

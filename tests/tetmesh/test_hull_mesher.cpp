@@ -154,3 +154,17 @@ TEST(DirectMesher, MeshesAClosedModel) {
   EXPECT_NEAR(r.quality.volume, 6.0, 1e-12);
   EXPECT_EQ(r.quality.nonPositiveTets, 0);
 }
+
+TEST(HullMesher, SimplifiedHullsMeetTheBudgetAndTheRegionsAreMeshedWatertight) {
+  HullMeshOptions o = fastOptions(0.2);
+  o.simplify = 12;
+  const HullMeshResult r = meshHulls(acd::shapes::torus(2.0, 0.6, 32, 12), o);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  ASSERT_GE(r.hulls.size(), 2u);
+  EXPECT_EQ(r.simplifyMissed, 0);
+  for (const acd::TriMesh& h : r.hulls) EXPECT_LE(h.vertices.size(), 12u);
+  EXPECT_LE(r.maxOutside, 1e-9);  // each simplified hull contains its component
+  EXPECT_NEAR(r.quality.volume, r.hullsVolume, 1e-6 * r.hullsVolume);
+  EXPECT_EQ(r.quality.nonPositiveTets, 0);
+  expectConforming(r.tetgen.mesh);
+}

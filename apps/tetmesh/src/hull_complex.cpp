@@ -343,12 +343,6 @@ HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComple
   // 1. Contacts between pairs, on clustered planes.
   std::vector<std::vector<Vec3>> normals(n);
   for (int i = 0; i < n; ++i) normals[i] = uniqueFacetNormals(hulls[i]);
-  if (!options.separators.empty() && static_cast<int>(options.separators.size()) != n) {
-    out.status = acd::Status::error(acd::StatusCode::InvalidParameter, "one separator per hull is needed");
-    return out;
-  }
-  std::vector<std::vector<Vec3>> separatorNormals(options.separators.size());
-  for (std::size_t i = 0; i < options.separators.size(); ++i) separatorNormals[i] = uniqueFacetNormals(options.separators[i]);
   std::vector<ContactPlane> planes;
   std::vector<std::vector<SideConstraint>> constraints(n);
   for (int i = 0; i < n; ++i)
@@ -356,16 +350,7 @@ HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComple
       const bool apart = ((boxes[i].lo.array() - tol > boxes[j].hi.array()) ||
                           (boxes[j].lo.array() - tol > boxes[i].hi.array())).any();
       if (apart) continue;
-      // With separators (e.g. the exact hulls of simplified ones), a pair whose separators touch
-      // is split where they touch: at the cut plane, which keeps each component on its side.
-      bool fromSeparators = false;
-      Contact ct;
-      if (!options.separators.empty()) {
-        ct = findContact(options.separators[i].vertices, options.separators[j].vertices, separatorNormals[i],
-                         separatorNormals[j], tol);
-        fromSeparators = ct.gap >= -tol && ct.gap <= tol;
-      }
-      if (!fromSeparators) ct = findContact(hulls[i].vertices, hulls[j].vertices, normals[i], normals[j], tol);
+      const Contact ct = findContact(hulls[i].vertices, hulls[j].vertices, normals[i], normals[j], tol);
       if (ct.gap > tol) continue;
       const Vec3 best = ct.normal;
       const double depth = maxAlong(hulls[i].vertices, best) - minAlong(hulls[j].vertices, best);

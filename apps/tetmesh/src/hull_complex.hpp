@@ -9,9 +9,6 @@
 //     a decomposition without the merge pass touch only along their cut planes (each lies on
 //     one side of every plane that cut its ancestors), so the planes found are the cut planes,
 //     refitted to the vertices near them. Contact planes within the tolerance are one plane.
-//     With separators (the exact hulls of simplified ones), pairs whose separators touch use
-//     the separators' contact plane instead, so each simplified hull is cut back to its side
-//     of the cut plane and still contains its component.
 //  2. Overlaps. Hulls that overlap (simplified hulls, or hulls of merged components) are both
 //     clipped by that plane, each keeping its own side: the overlap is split at the plane of
 //     least penetration. Vertices within the tolerance of a contact plane are projected onto
@@ -33,10 +30,6 @@ namespace tetmesh {
 
 struct HullComplexOptions {
   double tolerance = 1e-8;  // snapping distance, relative to the half-diagonal of all hulls' box
-  /// Empty, or one convex mesh inside each hull (e.g. its exact hull before simplification):
-  /// a pair whose separators touch is split at the plane where they touch (the cut plane),
-  /// not at a plane found from the hulls, so each region keeps all of its separator.
-  std::vector<acd::TriMesh> separators;
 };
 
 struct HullComplex {

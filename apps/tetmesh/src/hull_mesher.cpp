@@ -41,10 +41,8 @@ HullMeshResult meshHulls(const acd::TriMesh& model, const HullMeshOptions& optio
   for (const acd::Component& c : r.decomposition.components) r.modelVolume += acd::signedVolume(c.mesh);
 
   t0 = std::chrono::steady_clock::now();
-  std::vector<acd::TriMesh> exactHulls;
   for (const acd::Component& c : r.decomposition.components) {
     acd::TriMesh hull = c.hull.empty() ? acd::hullMesh(c.mesh.vertices) : c.hull;
-    if (options.simplify > 0) exactHulls.push_back(hull);
     r.hullVertices.push_back(static_cast<int>(hull.vertices.size()));
     if (options.simplify > 0) {
       SimplifiedHull s = simplifyHull(hull, options.simplify);
@@ -58,21 +56,16 @@ HullMeshResult meshHulls(const acd::TriMesh& model, const HullMeshOptions& optio
 
   // TetGen merges points closer than its own tolerance and then trips over the complex; when it
   // refuses one, the complex is rebuilt with a 10 times larger snapping distance (twice at most).
-  // Simplified hulls are first cut back at the planes where their exact hulls touch (so each
-  // region still contains its component); if TetGen refuses all those complexes, overlaps are
-  // split at planes found from the simplified hulls themselves, and the report says so.
-  for (int attempt = 0; attempt < 6 && !r.tetgen.ok; ++attempt) {
-    const bool useSeparators = options.simplify > 0 && attempt < 3;
-    if (attempt >= 3 && options.simplify <= 0) break;
-    const double tolerance = options.tolerance * std::pow(10.0, attempt % 3);
+  // TetGen merges points closer than its own tolerance and then trips over the complex; when it
+  // refuses one, the complex is rebuilt with a 10 times larger snapping distance (twice at most).
+  for (int attempt = 0; attempt < 3 && !r.tetgen.ok; ++attempt) {
+    const double tolerance = options.tolerance * std::pow(10.0, attempt);
     t0 = std::chrono::steady_clock::now();
     HullComplexOptions copt;
     copt.tolerance = tolerance;
-    if (useSeparators) copt.separators = exactHulls;
     r.complex = buildHullComplex(r.hulls, copt);
     r.times.complex += since(t0);
     r.toleranceUsed = tolerance;
-    r.cutAtSeparators = useSeparators;
     if (!r.complex.status.ok()) continue;
     r.tetgen = runTetGen(r.complex.plc, options.tetgen);
     r.times.tetgen += r.tetgen.seconds;

@@ -41,7 +41,6 @@ struct HullMeshResult {
   double maxOutside = 0.0;               // largest distance of a component vertex outside its hull
   HullComplex complex;
   double maxOutsideRegion = 0.0;               // same, against the meshed region (after clipping)
-  bool cutAtSeparators = false;                // simplified hulls were cut back at the exact hulls' contacts
   double toleranceUsed = 0.0;                  // snapping tolerance of the complex TetGen meshed
   std::vector<std::string> refusedComplexes;   // TetGen's errors on complexes with smaller tolerances
   TetGenResult tetgen;
