@@ -68,7 +68,12 @@ def plot_table(table, path):
     rows = table.get("models", [])
     if not rows:
         return False
-    keys = list(rows[0]["runs"].keys())
+    def order(key):  # solid before surface, coarse tau before fine, the exact one last
+        kind, method = key.split("_")[0], key.split("_")[1]
+        tau = float(key.split("_")[2]) if method == "acd" else 0.0
+        return (kind != "solid", method == "ecd", -tau)
+
+    keys = sorted(rows[0]["runs"].keys(), key=order)
     fig, ax = plt.subplots(figsize=(max(7, 1.1 * len(rows) + 3), 4.5))
     width = 0.8 / len(keys)
     for k, key in enumerate(keys):
