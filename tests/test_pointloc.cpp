@@ -343,6 +343,8 @@ TEST_F(PointLoc, BadInputsAreRefusedWithAMessage) {
       {quote(model) + " --threads -2", 3, "--threads"},
       {quote(model) + " --exact-samples -1", 3, "--exact-samples"},
       {quote(model) + " --compare-samples 0", 3, "--compare-samples"},
+      {quote(model) + " --compare-samples 1e9", 3, "--compare-samples"},
+      {quote(model) + " --repeat 0", 3, "--repeat"},
       {quote(model) + " --ecd-time-limit 0", 3, "--ecd-time-limit"},
       {quote(model) + " --grid-cells 0", 3, "--grid-cells"},
       {quote(garbage), 2, "garbage.off"},

@@ -168,7 +168,8 @@ int main(int argc, char** argv) {
   app.add_flag("--compare", compare,
                "also time the same points against the original model (CGAL Side_of_triangle_mesh, 1 and all\n"
                "threads; acd::InsideTest) and against the solid exact convex decomposition when libacd has one");
-  app.add_option("--compare-samples", compareText, "points (the first K) timed by the exact methods; default min(N, 1e6)");
+  app.add_option("--compare-samples", compareText,
+                 "points (the first K) timed by the exact methods; default min(N, 1e6), at most 1e8");
   app.add_option("--ecd-time-limit", ecdTimeLimit, "seconds allowed for the exact convex decomposition")
       ->capture_default_str();
   app.add_option("--repeat", repeat, "time every location pass R times and report the median (1..100)")
@@ -215,8 +216,8 @@ int main(int argc, char** argv) {
   }
   if (compareText.empty()) {
     compareSamples = std::min<std::uint64_t>(samples, 1000000);
-  } else if (!parseCount(compareText, 1e10, false, compareSamples)) {
-    std::fprintf(stderr, "pointloc: --compare-samples '%s' is not a positive integer\n", compareText.c_str());
+  } else if (!parseCount(compareText, 1e8, false, compareSamples)) {  // two bytes of answers per point are kept
+    std::fprintf(stderr, "pointloc: --compare-samples '%s' is not a positive integer <= 1e8\n", compareText.c_str());
     return kBadParameter;
   } else {
     compareSamples = std::min(compareSamples, samples);
