@@ -321,10 +321,8 @@ int kicksFor(const Graph& a, const Graph& b) {
   return std::clamp(20000 / std::max(1, std::max(a.nodeCount(), b.nodeCount())), 30, 300);
 }
 
-}  // namespace
-
-GedResult bipartiteGed(const Graph& a, const Graph& b) {
-  const auto start = std::chrono::steady_clock::now();
+/// The bipartite method from a to b only (the heuristic is not symmetric).
+GedResult bipartiteOneWay(const Graph& a, const Graph& b) {
   EditSearch search(a, b);
   GedResult r;
   r.method = "bipartite";
@@ -336,7 +334,9 @@ GedResult bipartiteGed(const Graph& a, const Graph& b) {
   const Contraction ca = contractWithChains(a), cb = contractWithChains(b);
   if (r.distance > r.lowerBound &&
       (ca.graph.nodeCount() < a.nodeCount() || cb.graph.nodeCount() < b.nodeCount())) {
-    const GedResult small = graphEditDistance(ca.graph, cb.graph);
+    GedOptions inner;
+    inner.maxExpansions = 200000;  // a start only: no need to prove the small map optimal
+    const GedResult small = graphEditDistance(ca.graph, cb.graph, inner);
     std::vector<int> lifted = liftThroughChains(ca, cb, small.mapping, a.nodeCount());
     const int cost = improveMapping(a, b, lifted, kicksFor(a, b));
     if (cost < r.distance) {
@@ -344,6 +344,24 @@ GedResult bipartiteGed(const Graph& a, const Graph& b) {
       r.mapping = std::move(lifted);
     }
   }
+  return r;
+}
+
+}  // namespace
+
+GedResult bipartiteGed(const Graph& a, const Graph& b) {
+  const auto start = std::chrono::steady_clock::now();
+  // Both directions, the better path kept: the reported distance is symmetric.
+  GedResult r = bipartiteOneWay(a, b);
+  const GedResult back = bipartiteOneWay(b, a);
+  r.lowerBound = std::max(r.lowerBound, back.lowerBound);  // both are lower bounds of the same distance
+  if (back.distance < r.distance) {
+    r.distance = back.distance;
+    r.mapping.assign(a.nodeCount(), -1);
+    for (int v = 0; v < b.nodeCount(); ++v)
+      if (back.mapping[v] >= 0) r.mapping[back.mapping[v]] = v;
+  }
+  r.assignmentCost = std::min(r.assignmentCost, back.assignmentCost);
   r.seconds = secondsSince(start);
   return r;
 }

@@ -111,10 +111,12 @@ TEST(Ged, BipartiteBracketsTheExactDistance) {
     EXPECT_GE(approx.distance, exact.distance) << "trial " << trial;
     EXPECT_LE(approx.lowerBound, exact.distance) << "trial " << trial;
     EXPECT_EQ(editPathCost(a, b, approx.mapping), approx.distance);
-    strictlyAbove += approx.distance > exact.distance;
+    EXPECT_GE(approx.assignmentCost, exact.distance);  // the plain Riesen-Bunke path is an edit path too
+    strictlyAbove += approx.assignmentCost > exact.distance;
   }
-  // The approximation is not trivially exact on these graphs (otherwise the test above proves little).
-  EXPECT_GT(strictlyAbove, 0);
+  // The plain assignment is often above the distance on these graphs, so the bound is tested
+  // on values that differ (local search usually closes the gap on graphs this small).
+  EXPECT_GT(strictlyAbove, 30);
 }
 
 TEST(Ged, TriangleInequalityOnRandomGraphs) {
@@ -202,4 +204,16 @@ TEST(Ged, BipartiteIsTightOnSkeletonLikeGraphs) {
   EXPECT_GE(r.distance, 2);
   EXPECT_LE(r.lowerBound, r.distance);
   EXPECT_GT(r.assignmentCost, r.distance);  // the plain assignment alone is far off here
+}
+
+TEST(Ged, BipartiteIsSymmetric) {
+  std::mt19937 rng(31);
+  for (int trial = 0; trial < 30; ++trial) {
+    const Graph a = randomGraph(rng, 30, 0.1), b = randomGraph(rng, 30, 0.1);
+    const GedResult ab = bipartiteGed(a, b), ba = bipartiteGed(b, a);
+    EXPECT_EQ(ab.distance, ba.distance);
+    EXPECT_EQ(ab.lowerBound, ba.lowerBound);
+    EXPECT_EQ(editPathCost(a, b, ab.mapping), ab.distance);
+    EXPECT_EQ(editPathCost(b, a, ba.mapping), ba.distance);
+  }
 }
