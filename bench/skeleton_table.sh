@@ -37,7 +37,7 @@ out, models = sys.argv[1], sys.argv[2:]
 def dist(d):
     if d is None:
         return "-"
-    if d["exact"]:
+    if d["exact"] or d["lower_bound"] == d["distance"]:
         return "%d" % d["distance"]
     return "%d–%d" % (d["lower_bound"], d["distance"])
 

@@ -362,6 +362,7 @@ GedResult bipartiteGed(const Graph& a, const Graph& b) {
       if (back.mapping[v] >= 0) r.mapping[back.mapping[v]] = v;
   }
   r.assignmentCost = std::min(r.assignmentCost, back.assignmentCost);
+  r.exact = r.distance == r.lowerBound;  // the bounds met: proven
   r.seconds = secondsSince(start);
   return r;
 }

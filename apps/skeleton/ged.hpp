@@ -34,7 +34,7 @@ struct GedOptions {
 struct GedResult {
   int distance = 0;         // cost of the best edit path found (the distance when `exact`)
   int lowerBound = 0;       // proven lower bound (== distance when `exact`)
-  bool exact = false;       // distance proven optimal
+  bool exact = false;       // distance proven optimal (exact search finished, or the bounds met)
   std::string method;       // "exact" or "bipartite"
   int assignmentCost = 0;   // bipartite: cost of the Riesen-Bunke path before local search
   std::vector<int> mapping; // node of the first graph -> node of the second, -1 = deleted

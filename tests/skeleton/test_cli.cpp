@@ -48,7 +48,7 @@ TEST(SkeletonCli, DumbbellWithTwoDeformations) {
         const json& g = m[which][d];
         EXPECT_LE(g["lower_bound"].get<int>(), g["distance"].get<int>());
         EXPECT_TRUE(g["method"] == "exact" || g["method"] == "bipartite");
-        EXPECT_EQ(g["exact"].get<bool>(), g["lower_bound"] == g["distance"] && g["method"] == "exact");
+        EXPECT_EQ(g["exact"].get<bool>(), g["lower_bound"] == g["distance"]);
       }
     }
   }
