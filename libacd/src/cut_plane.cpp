@@ -65,7 +65,7 @@ Plane fitCutPlane(const TriMesh& mesh, const GlobalCut& cut, const Vec3& bridgeN
 Plane bisectorPlane(const TriMesh& mesh, const SurfaceGraph& graph, int notch, const Vec3& bridgeNormal) {
   int bestOther = -1;
   double best = 0.0;
-  Vec3 nl, nr, bestL, bestR;
+  Vec3 nl = Vec3::Zero(), nr = Vec3::Zero(), bestL = Vec3::Zero(), bestR = Vec3::Zero();  // unset on a boundary edge
   for (int slot = graph.begin(notch); slot < graph.end(notch); ++slot) {
     const int other = graph.neighbour(slot);
     const double turn = signedDihedral(mesh, graph, notch, other, &nl, &nr);
