@@ -140,16 +140,23 @@ void pocketCuts(const TriMesh& mesh, const SurfaceGraph& graph, const SharedPock
   }
 }
 
-}  // namespace
-
-std::vector<HandleCut> findHandleCuts(const TriMesh& mesh, const SurfaceGraph& graph,
-                                      const std::vector<SharedPocket>& pockets,
-                                      const std::vector<std::uint64_t>& existing) {
+/// Every pocket's candidate curves, shortest first.
+std::vector<HandleCut> candidatesOf(const TriMesh& mesh, const SurfaceGraph& graph,
+                                    const std::vector<SharedPocket>& pockets) {
   std::vector<HandleCut> candidates;
   for (const auto& pocket : pockets)
     if (pocket.loops.size() >= 2) pocketCuts(mesh, graph, pocket, candidates);
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const HandleCut& a, const HandleCut& b) { return a.length < b.length; });
+  return candidates;
+}
+
+}  // namespace
+
+std::vector<HandleCut> findHandleCuts(const TriMesh& mesh, const SurfaceGraph& graph,
+                                      const std::vector<SharedPocket>& pockets,
+                                      const std::vector<std::uint64_t>& existing) {
+  std::vector<HandleCut> candidates = candidatesOf(mesh, graph, pockets);
 
   std::unordered_set<std::uint64_t> blocked(existing.begin(), existing.end());
   const int baseline = faceComponents(mesh, graph, blocked);
@@ -171,11 +178,7 @@ std::vector<HandleCut> findHandleCuts(const TriMesh& mesh, const SurfaceGraph& g
 std::vector<HandleCut> findPocketDivides(const TriMesh& mesh, const SurfaceGraph& graph,
                                          const std::vector<SharedPocket>& pockets,
                                          const std::vector<std::uint64_t>& existing) {
-  std::vector<HandleCut> candidates;
-  for (const auto& pocket : pockets)
-    if (pocket.loops.size() >= 2) pocketCuts(mesh, graph, pocket, candidates);
-  std::stable_sort(candidates.begin(), candidates.end(),
-                   [](const HandleCut& a, const HandleCut& b) { return a.length < b.length; });
+  std::vector<HandleCut> candidates = candidatesOf(mesh, graph, pockets);
   std::unordered_set<std::uint64_t> blocked(existing.begin(), existing.end());
   std::vector<HandleCut> kept;
   for (auto& cut : candidates) {
