@@ -1,6 +1,7 @@
 // acd decompose --exact: the exact baselines of the paper's Table 1.
 //   --exact            solid ECD (CGAL convex_decomposition_3, capped): pieces.obj, report.json
 //   --exact --surface  surface ECD (flood-and-retract convex patches): patches.obj, report.json
+#include "exit_codes.hpp"
 #include "exact.hpp"
 
 #include <acd/decompose.hpp>
@@ -28,7 +29,6 @@ namespace acdcli {
 namespace {
 
 // Same exit codes as the other subcommands (see exitCodes() in main.cpp).
-enum Exit : int { kOk = 0, kBadInput = 2, kBadParameter = 3, kUnfinished = 4, kOutputFailed = 5, kInternal = 6 };
 
 struct ExactFlags {
   bool exact = false;
@@ -39,23 +39,6 @@ struct ExactFlags {
 };
 ExactFlags flags;
 bool ownSurfaceFlag = false;  // --surface was added here: no surface ACD in this build
-
-int report(const std::string& where, const acd::Status& s) {
-  if (s.message.rfind(where, 0) == 0)
-    std::fprintf(stderr, "acd: %s\n", s.message.c_str());
-  else
-    std::fprintf(stderr, "acd: %s: %s\n", where.c_str(), s.message.c_str());
-  switch (s.code) {
-    case acd::StatusCode::InvalidParameter: return kBadParameter;
-    case acd::StatusCode::InternalError: return kInternal;
-    default: return kBadInput;
-  }
-}
-
-int outputFailed(const std::string& what) {
-  std::fprintf(stderr, "acd: output: cannot write %s\n", what.c_str());
-  return kOutputFailed;
-}
 
 bool surfaceRequested(const CLI::App& decompose) {
   const CLI::Option* surface = decompose.get_option_no_throw("--surface");
@@ -83,7 +66,7 @@ std::uintmax_t fileSize(const fs::path& p) {
 // ---------------------------------------------------------------- solid ECD
 int runSolid(const std::string& model, const std::string& out, bool quiet) {
   acd::ReadResult r = acd::readMesh(model);
-  if (!r.status.ok()) return report(model, r.status);
+  if (!r.status.ok()) return fail(model, r.status);
   acd::ExactOptions options;
   options.timeLimitSeconds = flags.timeLimit;
   options.memoryLimitBytes = static_cast<std::size_t>(flags.memoryGiB * double(std::size_t(1) << 30));
@@ -96,7 +79,7 @@ int runSolid(const std::string& model, const std::string& out, bool quiet) {
     };
   const acd::ExactDecomposition d = acd::exactSolidDecomposition(r.mesh, options);
   if (showProgress) std::fprintf(stderr, "\r%78s\r", "");
-  if (!d.status.ok()) return report(model, d.status);
+  if (!d.status.ok()) return fail(model, d.status);
 
   std::error_code ec;
   fs::create_directories(out, ec);
@@ -173,11 +156,11 @@ int runSolid(const std::string& model, const std::string& out, bool quiet) {
 // ---------------------------------------------------------------- surface ECD
 int runSurface(const std::string& model, const std::string& out, bool quiet) {
   acd::ReadResult r = acd::readMesh(model);
-  if (!r.status.ok()) return report(model, r.status);
+  if (!r.status.ok()) return fail(model, r.status);
   acd::SurfaceExactOptions options;
   options.tolerance = flags.tolerance;
   const acd::SurfaceExactDecomposition d = acd::exactSurfaceDecomposition(r.mesh, options);
-  if (!d.status.ok()) return report(d.status.code == acd::StatusCode::InvalidParameter ? "invalid parameter" : model, d.status);
+  if (!d.status.ok()) return fail(d.status.code == acd::StatusCode::InvalidParameter ? "invalid parameter" : model, d.status);
 
   std::error_code ec;
   fs::create_directories(out, ec);
@@ -268,7 +251,7 @@ int runExact(const CLI::App& decompose, const std::string& model, const std::str
     return 1;
   }
   if (!(flags.timeLimit >= 0) || !(flags.memoryGiB >= 0) || !std::isfinite(flags.memoryGiB))
-    return report("invalid parameter", acd::Status::error(acd::StatusCode::InvalidParameter,
+    return fail("invalid parameter", acd::Status::error(acd::StatusCode::InvalidParameter,
                                                          "--exact-time-limit and --exact-memory must be >= 0"));
   const CLI::Option* noFill = decompose.get_option_no_throw("--no-fill-holes");
   flags.fillHoles = noFill == nullptr || noFill->count() == 0;

@@ -12,6 +12,7 @@
 #include <acd/io.hpp>
 
 #include <CLI/CLI.hpp>
+#include "exit_codes.hpp"
 #include "exact.hpp"
 #include "surface.hpp"
 #include "table.hpp"
@@ -27,39 +28,13 @@
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
+using namespace acdcli;  // exit codes and fail(), shared with the other subcommands
 
 namespace {
-
-enum Exit : int {
-  kOk = 0,
-  kUsage = 1,           // bad command line (CLI11 prints the reason)
-  kBadInput = 2,        // the model cannot be read or is not a valid solid
-  kBadParameter = 3,    // tau, epsilon, delta, threads out of range
-  kUnresolved = 4,      // finished, but some component still exceeds tau (see report)
-  kOutputFailed = 5,    // could not write results
-  kInternal = 6,        // a bug: please report
-};
 
 const char* exitCodes() {
   return "Exit codes: 0 success; 1 bad command line; 2 unreadable or invalid model; 3 invalid parameter;\n"
          "4 some component still exceeds tau (--exact: a cap stopped it); 5 cannot write output; 6 internal error.";
-}
-
-int exitFor(const acd::Status& s) {
-  switch (s.code) {
-    case acd::StatusCode::Ok: return kOk;
-    case acd::StatusCode::InvalidParameter: return kBadParameter;
-    case acd::StatusCode::InternalError: return kInternal;
-    default: return kBadInput;
-  }
-}
-
-int fail(const std::string& what, const acd::Status& s) {
-  if (s.message.rfind(what, 0) == 0)  // the reader's messages already start with the path
-    std::fprintf(stderr, "acd: %s\n", s.message.c_str());
-  else
-    std::fprintf(stderr, "acd: %s: %s\n", what.c_str(), s.message.c_str());
-  return exitFor(s);
 }
 
 acd::ReadResult load(const std::string& path) {

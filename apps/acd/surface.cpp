@@ -1,5 +1,6 @@
 // acd decompose --surface: the surface split along global cuts into patches whose concavity is
 // at most tau (Section 4.3). Writes patches.obj, hulls.obj and report.json.
+#include "exit_codes.hpp"
 #include "surface.hpp"
 
 #include <acd/diagnosis.hpp>
@@ -20,26 +21,6 @@ using json = nlohmann::json;
 namespace acdcli {
 
 namespace {
-
-// Same exit codes as the other subcommands (see exitCodes() in main.cpp).
-enum Exit : int { kOk = 0, kBadInput = 2, kBadParameter = 3, kUnresolved = 4, kOutputFailed = 5, kInternal = 6 };
-
-int fail(const std::string& where, const acd::Status& s) {
-  if (s.message.rfind(where, 0) == 0)
-    std::fprintf(stderr, "acd: %s\n", s.message.c_str());
-  else
-    std::fprintf(stderr, "acd: %s: %s\n", where.c_str(), s.message.c_str());
-  switch (s.code) {
-    case acd::StatusCode::InvalidParameter: return kBadParameter;
-    case acd::StatusCode::InternalError: return kInternal;
-    default: return kBadInput;
-  }
-}
-
-int outputFailed(const std::string& what) {
-  std::fprintf(stderr, "acd: output: cannot write %s\n", what.c_str());
-  return kOutputFailed;
-}
 
 std::uintmax_t fileSize(const fs::path& p) {
   std::error_code ec;

@@ -2,6 +2,7 @@
 // measures exactly what a user gets, and methods that are not built in (surface ACD) show "n/a"
 // until they are. Components and times come from each run's report.json; sizes are those of
 // the pieces written as one OBJ file (one object per piece), the same writer for every method.
+#include "exit_codes.hpp"
 #include "table.hpp"
 
 #include <acd/decompose.hpp>
@@ -33,8 +34,6 @@ using json = nlohmann::json;
 namespace acdcli {
 
 namespace {
-
-enum Exit : int { kOk = 0, kBadInput = 2, kBadParameter = 3, kOutputFailed = 5 };
 
 struct TableArgs {
   std::vector<std::string> models{"elephant", "knot", "eight", "handle", "mushroom", "pipe", "u", "joint"};
