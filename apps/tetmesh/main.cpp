@@ -2,6 +2,7 @@
 // (Lien & Amato 2007, Section 7, "Mesh generation", Figure 4).
 //   tetmesh MODEL [--tau 0.2] [--simplify K] [--quality Q] [--max-volume V] [-o OUT]
 //           [--format vtk|mesh|tetgen] [--compare] [--json FILE]
+#include "deformation_demo.hpp"
 #include "hull_mesher.hpp"
 #include "tet_files.hpp"
 
@@ -14,6 +15,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -36,6 +38,110 @@ const char* exitCodes() {
          "5 cannot write output; 6 meshing failed (TetGen refused or crashed on the hull complex).";
 }
 
+// ---- Deformation demo (--deform): the model's surface embedded in the hull mesh and carried
+// along by an as-rigid-as-possible deformation that moves one component (docs/TETMESH.md).
+struct DeformArgs {
+  std::string dir;              // empty: no deformation
+  int handle = 0, anchor = 0;   // component labels; 0: automatic
+  std::vector<double> move;     // dx, dy, dz
+  double angle = NAN;           // degrees
+  int iterations = ArapOptions{}.maxIterations;
+};
+
+void addDeformOptions(CLI::App& app, DeformArgs& d) {
+  auto* dir = app.add_option("--deform", d.dir,
+                             "Deform: write DIR/surface_before.off, surface_after.off, tets_before.vtk, tets_after.vtk");
+  app.add_option("--deform-handle", d.handle, "Component moved (label; default: farthest from the centroid)")->needs(dir);
+  app.add_option("--deform-anchor", d.anchor, "Component held (label; default: farthest from the handle)")->needs(dir);
+  app.add_option("--deform-move", d.move, "Handle translation dx,dy,dz (default: 0.2 x half-diagonal across)")
+      ->expected(3)->delimiter(',')->needs(dir);
+  app.add_option("--deform-angle", d.angle, "Instead: turn the handle by DEG about an axis through the anchor")->needs(dir);
+  app.add_option("--deform-iterations", d.iterations, "Most ARAP iterations")->capture_default_str()->needs(dir);
+}
+
+/// Options as given; exit code kBadParameter with a message when they cannot work.
+int deformOptions(const DeformArgs& d, DeformationOptions& o) {
+  auto bad = [](const std::string& message) {
+    std::fprintf(stderr, "tetmesh: %s\n", message.c_str());
+    return kBadParameter;
+  };
+  o.handle = d.handle, o.anchor = d.anchor;
+  o.arap.maxIterations = d.iterations;
+  o.translate = !d.move.empty();
+  if (o.translate) o.move = Vec3(d.move[0], d.move[1], d.move[2]);
+  o.rotate = !std::isnan(d.angle);
+  o.angleDegrees = d.angle;
+  if (d.handle < 0 || d.anchor < 0) return bad("--deform-handle and --deform-anchor are component labels (1, 2, ...)");
+  if (d.handle != 0 && d.handle == d.anchor)
+    return bad("--deform-handle and --deform-anchor are the same component (" + std::to_string(d.handle) + ")");
+  if (o.translate && o.rotate) return bad("--deform-move and --deform-angle cannot be used together");
+  if ((o.translate && !o.move.allFinite()) || (o.rotate && !std::isfinite(d.angle)))
+    return bad("--deform-move and --deform-angle must be finite numbers");
+  if (d.iterations < 0) return bad("--deform-iterations must not be negative, got " + std::to_string(d.iterations));
+  return kOk;
+}
+
+/// Runs the deformation and writes its four files; the report lines and JSON come from the result.
+int runDeformation(const DeformArgs& d, const DeformationOptions& o, const TetMesh& tets, const acd::TriMesh& surface,
+                   DeformationResult& r) {
+  r = deformSurface(tets, surface, o);
+  if (!r.status.ok()) {
+    std::fprintf(stderr, "tetmesh: %s\n", r.status.message.c_str());
+    return r.status.code == acd::StatusCode::InvalidParameter ? kBadParameter : kMeshFailed;
+  }
+  std::error_code ec;
+  std::filesystem::create_directories(d.dir, ec);
+  TetMesh after = tets;
+  after.points = r.tetPositionsAfter;
+  const std::string base = (std::filesystem::path(d.dir) / "").string();
+  for (const acd::Status& s : {acd::writeMesh(base + "surface_before.off", surface), acd::writeMesh(base + "surface_after.off", r.surfaceAfter),
+                               writeVtk(base + "tets_before.vtk", tets), writeVtk(base + "tets_after.vtk", after)})
+    if (!s.ok()) {
+      std::fprintf(stderr, "tetmesh: %s\n", s.message.c_str());
+      return kOutputFailed;
+    }
+  return kOk;
+}
+
+json deformationJson(const DeformArgs& d, const DeformationResult& r) {
+  const ArapResult& a = r.arap;
+  return {{"directory", d.dir},
+          {"handle", r.handle},
+          {"anchor", r.anchor},
+          {"motion", r.motion},
+          {"translation", {r.translation.x(), r.translation.y(), r.translation.z()}},
+          {"angle_deg", r.angleDegrees},
+          {"axis", {r.axis.x(), r.axis.y(), r.axis.z()}},
+          {"pivot", {r.pivot.x(), r.pivot.y(), r.pivot.z()}},
+          {"handle_vertices", r.handleVertices},
+          {"anchor_vertices", r.anchorVertices},
+          {"shared_vertices", r.sharedVertices},
+          {"embedding",
+           {{"vertices", r.embedding.tet.size()},
+            {"outside", r.embedding.outside},
+            {"max_outside_distance", r.embedding.maxOutsideDistance},
+            {"seconds", r.embedding.seconds}}},
+          {"arap",
+           {{"iterations", a.iterations},
+            {"converged", a.converged},
+            {"energy", a.energy},
+            {"free_vertices", a.freeVertices},
+            {"pinned_vertices", a.pinnedVertices},
+            {"inverted_tets", a.invertedTets},
+            {"linear_inverted_tets", a.linearInvertedTets},
+            {"inverted_rest_volume", a.invertedRestVolume},
+            {"surface_vertices_in_inverted_tets", r.surfaceInInverted},
+            {"max_constraint_error", a.maxConstraintError},
+            {"factor_seconds", a.factorSeconds},
+            {"solve_seconds", a.solveSeconds}}},
+          {"inverted_tets", a.invertedTets},
+          {"tet_volume", {{"rest", a.restVolume}, {"after", a.volume}, {"linear", a.linearVolume}}},
+          {"surface_volume", {{"rest", r.surfaceVolumeBefore}, {"after", r.surfaceVolumeAfter}, {"linear", r.surfaceVolumeLinear}}},
+          {"max_surface_displacement", r.maxSurfaceDisplacement},
+          {"seconds", r.seconds}};
+}
+// ---- end of the deformation demo
+
 struct Args {
   std::string model;
   HullMeshOptions options;
@@ -45,6 +151,7 @@ struct Args {
   std::string poly;
   bool compare = false;
   bool quiet = false;
+  DeformArgs deform;
 };
 
 json qualityJson(const MeshQuality& q) {
@@ -120,6 +227,10 @@ int run(const Args& a) {
     return kBadParameter;
   }
 
+  DeformationOptions deformOpts;
+  if (!a.deform.dir.empty())
+    if (const int code = deformOptions(a.deform, deformOpts); code != kOk) return code;
+
   const acd::ReadResult read = acd::readMesh(a.model);
   if (!read.status.ok()) {
     std::fprintf(stderr, "tetmesh: %s\n", read.status.message.c_str());
@@ -147,6 +258,12 @@ int run(const Args& a) {
   if (a.compare) {
     if (progress) std::fprintf(stderr, "tetmesh: TetGen on the model itself ...\n");
     direct = meshModelDirectly(read.mesh, a.options.tetgen);
+  }
+
+  DeformationResult deformed;
+  if (!a.deform.dir.empty()) {
+    if (progress) std::fprintf(stderr, "tetmesh: deformation ...\n");
+    if (const int code = runDeformation(a.deform, deformOpts, r.tetgen.mesh, read.mesh, deformed); code != kOk) return code;
   }
 
   if (!a.out.empty()) {
@@ -206,6 +323,8 @@ int run(const Args& a) {
     for (const std::string& f : tetOutputFiles(a.out, format)) std::printf(" %s", f.c_str());
     std::printf("\n");
   }
+  if (!a.deform.dir.empty())
+    for (const std::string& line : deformationSummary(deformed)) std::printf("%s\n", line.c_str());
 
   if (!a.json.empty()) {
     json comps = json::array();
@@ -249,6 +368,7 @@ int run(const Args& a) {
       else
         j["original_mesh"] = {{"error", direct.status.message}};
     }
+    if (!a.deform.dir.empty()) j["deformation"] = deformationJson(a.deform, deformed);
     std::ofstream out(a.json);
     out << j.dump(2) << "\n";
     if (!out) {
@@ -285,6 +405,7 @@ int main(int argc, char** argv) {
   app.add_option("--json", a.json, "Write the report as JSON to this file");
   app.add_option("--poly", a.poly, "Write the hull complex given to TetGen as a .poly file");
   app.add_flag("-q,--quiet", a.quiet, "No progress on stderr");
+  addDeformOptions(app, a.deform);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

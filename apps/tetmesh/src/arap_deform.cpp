@@ -1,0 +1,242 @@
+#include "arap_deform.hpp"
+
+#include <Eigen/Dense>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+
+#include <chrono>
+#include <cmath>
+#include <numeric>
+#include <string>
+
+namespace tetmesh {
+
+namespace {
+
+using Mat3 = Eigen::Matrix3d;
+using Mat43 = Eigen::Matrix<double, 4, 3>;
+
+double seconds(std::chrono::steady_clock::time_point since) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+/// Rotation closest to F in the Frobenius norm (polar decomposition); a reflection is turned
+/// into a rotation by flipping the axis of the smallest singular value, which costs least.
+Mat3 closestRotation(const Mat3& f) {
+  Eigen::JacobiSVD<Mat3> svd(f, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Mat3 u = svd.matrixU();
+  const Mat3& v = svd.matrixV();
+  Mat3 r = u * v.transpose();
+  if (r.determinant() < 0) {
+    u.col(2) *= -1;  // Eigen sorts singular values in decreasing order
+    r = u * v.transpose();
+  }
+  return r;
+}
+
+int findRoot(std::vector<int>& parent, int v) {
+  while (parent[v] != v) v = parent[v] = parent[parent[v]];
+  return v;
+}
+
+/// The per-tet constants: F_t = [x_a x_b x_c x_d] * B_t, and the rest volume.
+struct TetOperator {
+  std::vector<Mat43> b;
+  std::vector<double> volume;  // rest volume; 0 for a degenerate tet, which then carries no energy
+};
+
+TetOperator tetOperators(const TetMesh& mesh) {
+  TetOperator op;
+  op.b.resize(mesh.tets.size(), Mat43::Zero());
+  op.volume.resize(mesh.tets.size(), 0.0);
+  Mat43 e;  // edge vectors from corner a: [x_b - x_a, x_c - x_a, x_d - x_a] = X * e
+  e << -1, -1, -1, 1, 0, 0, 0, 1, 0, 0, 0, 1;
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    const auto& v = mesh.tets[t];
+    Mat3 dm;
+    dm.col(0) = mesh.points[v[1]] - mesh.points[v[0]];
+    dm.col(1) = mesh.points[v[2]] - mesh.points[v[0]];
+    dm.col(2) = mesh.points[v[3]] - mesh.points[v[0]];
+    const double vol = dm.determinant() / 6.0;
+    if (!(vol > 0)) continue;
+    op.b[t] = e * dm.inverse();
+    op.volume[t] = vol;
+  }
+  return op;
+}
+
+Mat3 gradient(const TetMesh& mesh, const TetOperator& op, const std::vector<Vec3>& x, std::size_t t) {
+  Eigen::Matrix<double, 3, 4> xs;
+  for (int k = 0; k < 4; ++k) xs.col(k) = x[mesh.tets[t][k]];
+  return xs * op.b[t];
+}
+
+/// Local step: best rotations for x, and the energy with them.
+double localStep(const TetMesh& mesh, const TetOperator& op, const std::vector<Vec3>& x, std::vector<Mat3>& rotations) {
+  double energy = 0.0;
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    if (op.volume[t] == 0) continue;
+    const Mat3 f = gradient(mesh, op, x, t);
+    rotations[t] = closestRotation(f);
+    energy += op.volume[t] * (f - rotations[t]).squaredNorm();
+  }
+  return energy;
+}
+
+}  // namespace
+
+double meshVolume(const TetMesh& mesh, const std::vector<Vec3>& positions) {
+  double sum = 0.0;
+  for (const auto& v : mesh.tets)
+    sum += (positions[v[1]] - positions[v[0]]).cross(positions[v[2]] - positions[v[0]]).dot(positions[v[3]] - positions[v[0]]);
+  return sum / 6.0;
+}
+
+int countInverted(const TetMesh& mesh, const std::vector<Vec3>& positions) {
+  int n = 0;
+  for (const auto& v : mesh.tets)
+    n += (positions[v[1]] - positions[v[0]]).cross(positions[v[2]] - positions[v[0]]).dot(positions[v[3]] - positions[v[0]]) <= 0 ? 1 : 0;
+  return n;
+}
+
+ArapResult arapDeform(const TetMesh& mesh, const std::vector<int>& constrained, const std::vector<Vec3>& targets,
+                      const ArapOptions& options) {
+  ArapResult r;
+  const int n = static_cast<int>(mesh.points.size());
+  auto fail = [&](acd::StatusCode code, const std::string& message) {
+    r.status = acd::Status::error(code, message);
+    return r;
+  };
+  if (constrained.size() != targets.size())
+    return fail(acd::StatusCode::InvalidParameter, "deformation: one target per constrained vertex is needed");
+  if (options.maxIterations < 0 || !(options.tolerance >= 0))
+    return fail(acd::StatusCode::InvalidParameter, "deformation: iterations and tolerance must not be negative");
+
+  // Roles: kFixed vertices keep a given position (constraint, rest); others are solved for.
+  constexpr int kFixed = -1;
+  std::vector<Vec3> x = mesh.points;
+  std::vector<bool> isConstrained(n, false), used(n, false);
+  for (std::size_t i = 0; i < constrained.size(); ++i) {
+    const int v = constrained[i];
+    if (v < 0 || v >= n) return fail(acd::StatusCode::InvalidParameter, "deformation: constrained vertex " + std::to_string(v) + " does not exist");
+    if (!targets[i].allFinite())
+      return fail(acd::StatusCode::InvalidParameter, "deformation: target of vertex " + std::to_string(v) + " is not finite");
+    if (isConstrained[v] && x[v] != targets[i])
+      return fail(acd::StatusCode::InvalidParameter, "deformation: vertex " + std::to_string(v) + " has two different targets");
+    isConstrained[v] = true;
+    x[v] = targets[i];
+  }
+  // Parts of the mesh (tets joined at vertices) that no constraint reaches stay at rest.
+  std::vector<int> parent(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  for (const auto& t : mesh.tets)
+    for (int k = 0; k < 4; ++k) {
+      used[t[k]] = true;
+      parent[findRoot(parent, t[k])] = findRoot(parent, t[0]);
+    }
+  std::vector<bool> reached(n, false);
+  for (int v = 0; v < n; ++v)
+    if (isConstrained[v]) reached[findRoot(parent, v)] = true;
+  std::vector<int> unknown(n, kFixed);
+  for (int v = 0; v < n; ++v) {
+    if (!used[v] || isConstrained[v]) continue;
+    if (!reached[findRoot(parent, v)]) {
+      ++r.pinnedVertices;
+      continue;
+    }
+    unknown[v] = r.freeVertices++;
+  }
+
+  const TetOperator op = tetOperators(mesh);
+  r.restVolume = meshVolume(mesh, mesh.points);
+
+  // Stiffness over the free vertices, and the constant right-hand side from the fixed ones.
+  const auto factorStart = std::chrono::steady_clock::now();
+  const int f = r.freeVertices;
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(mesh.tets.size() * 16);
+  Eigen::MatrixXd fixedRhs = Eigen::MatrixXd::Zero(f, 3);
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    if (op.volume[t] == 0) continue;
+    const Eigen::Matrix4d k = op.volume[t] * op.b[t] * op.b[t].transpose();
+    for (int i = 0; i < 4; ++i) {
+      const int row = unknown[mesh.tets[t][i]];
+      if (row == kFixed) continue;
+      for (int j = 0; j < 4; ++j) {
+        const int vj = mesh.tets[t][j];
+        if (unknown[vj] != kFixed)
+          entries.emplace_back(row, unknown[vj], k(i, j));
+        else
+          fixedRhs.row(row) -= k(i, j) * x[vj].transpose();
+      }
+    }
+  }
+  Eigen::SparseMatrix<double> stiffness(f, f);
+  stiffness.setFromTriplets(entries.begin(), entries.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
+  if (f > 0) {
+    solver.compute(stiffness);
+    if (solver.info() != Eigen::Success)
+      return fail(acd::StatusCode::InternalError, "deformation: the stiffness matrix could not be factored (degenerate tets?)");
+  }
+  r.factorSeconds = seconds(factorStart);
+
+  // Global step: positions minimising E for fixed rotations.
+  const auto solveStart = std::chrono::steady_clock::now();
+  auto globalStep = [&](const std::vector<Mat3>& rotations) {
+    if (f == 0) return true;
+    Eigen::MatrixXd rhs = fixedRhs;
+    for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+      if (op.volume[t] == 0) continue;
+      const Eigen::Matrix<double, 3, 4> g = op.volume[t] * rotations[t] * op.b[t].transpose();
+      for (int i = 0; i < 4; ++i) {
+        const int row = unknown[mesh.tets[t][i]];
+        if (row != kFixed) rhs.row(row) += g.col(i).transpose();
+      }
+    }
+    const Eigen::MatrixXd solution = solver.solve(rhs);
+    if (solver.info() != Eigen::Success || !solution.allFinite()) return false;
+    for (int v = 0; v < n; ++v)
+      if (unknown[v] != kFixed) x[v] = solution.row(unknown[v]).transpose();
+    return true;
+  };
+
+  std::vector<Mat3> rotations(mesh.tets.size(), Mat3::Identity());
+  const std::vector<Vec3> restStart = x;
+  if (!globalStep(rotations)) return fail(acd::StatusCode::InternalError, "deformation: the linear solve failed");
+  r.linearPositions = x;
+  if (!options.linearStart) x = restStart;
+  const double scale = r.restVolume > 0 ? 1.0 / r.restVolume : 1.0;
+  r.energy.push_back(scale * localStep(mesh, op, x, rotations));
+  while (r.iterations < options.maxIterations) {
+    const double previous = r.energy.back();
+    if (previous <= 1e-28) {  // already a rigid motion up to rounding
+      r.converged = true;
+      break;
+    }
+    if (!globalStep(rotations)) return fail(acd::StatusCode::InternalError, "deformation: a solve failed");
+    ++r.iterations;
+    r.energy.push_back(scale * localStep(mesh, op, x, rotations));
+    if (previous - r.energy.back() <= options.tolerance * previous) {
+      r.converged = true;
+      break;
+    }
+  }
+  r.solveSeconds = seconds(solveStart);
+
+  r.positions = std::move(x);
+  r.volume = meshVolume(mesh, r.positions);
+  r.linearVolume = meshVolume(mesh, r.linearPositions);
+  r.invertedTets = countInverted(mesh, r.positions);
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    const auto& v = mesh.tets[t];
+    const Vec3& a = r.positions[v[0]];
+    if ((r.positions[v[1]] - a).cross(r.positions[v[2]] - a).dot(r.positions[v[3]] - a) <= 0) r.invertedRestVolume += tetVolume(mesh, static_cast<int>(t));
+  }
+  r.linearInvertedTets = countInverted(mesh, r.linearPositions);
+  for (std::size_t i = 0; i < constrained.size(); ++i)
+    r.maxConstraintError = std::max(r.maxConstraintError, (r.positions[constrained[i]] - targets[i]).norm());
+  return r;
+}
+
+}  // namespace tetmesh

@@ -1,0 +1,211 @@
+#include "deformation_demo.hpp"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+namespace tetmesh {
+
+namespace {
+
+template <typename... Args>
+std::string format(const char* f, Args... args) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, f, args...);
+  return buf;
+}
+
+struct LabelStats {
+  double volume = 0.0;
+  Vec3 moment = Vec3::Zero();  // sum of volume x tet centroid
+  Vec3 centroid() const { return volume > 0 ? Vec3(moment / volume) : moment; }
+};
+
+/// Handle and anchor vertex sets of the one-component fallback: first and last fifth of the
+/// longest side of the bounding box.
+void splitByPosition(const TetMesh& tets, std::vector<bool>& handle, std::vector<bool>& anchor) {
+  Vec3 lo = Vec3::Constant(INFINITY), hi = -lo;
+  for (const auto& t : tets.tets)
+    for (int v : t) lo = lo.cwiseMin(tets.points[v]), hi = hi.cwiseMax(tets.points[v]);
+  int axis = 0;
+  (hi - lo).maxCoeff(&axis);
+  const double fifth = (hi[axis] - lo[axis]) / 5.0;
+  for (const auto& t : tets.tets)
+    for (int v : t) {
+      const double c = tets.points[v][axis];
+      if (c >= hi[axis] - fifth) handle[v] = true;
+      if (c <= lo[axis] + fifth) anchor[v] = true;
+    }
+}
+
+}  // namespace
+
+DeformationResult deformSurface(const TetMesh& tets, const acd::TriMesh& surface, const DeformationOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  DeformationResult r;
+  auto fail = [&](const std::string& message) {
+    r.status = acd::Status::error(acd::StatusCode::InvalidParameter, "deformation: " + message);
+    return r;
+  };
+  if (tets.tets.empty()) return fail("the tet mesh is empty");
+  if (options.rotate && options.translate) return fail("give either a translation or an angle, not both");
+  if ((options.rotate && !std::isfinite(options.angleDegrees)) || (options.translate && !options.move.allFinite()))
+    return fail("the motion of the handle must be finite");
+
+  // Per label: volume and centroid; the whole mesh's too.
+  std::map<int, LabelStats> labels;
+  LabelStats all;
+  Vec3 lo = Vec3::Constant(INFINITY), hi = -lo;
+  for (std::size_t t = 0; t < tets.tets.size(); ++t) {
+    const auto& v = tets.tets[t];
+    const double vol = tetVolume(tets, static_cast<int>(t));
+    const Vec3 c = (tets.points[v[0]] + tets.points[v[1]] + tets.points[v[2]] + tets.points[v[3]]) / 4.0;
+    LabelStats& s = labels[tets.labels.empty() ? 0 : tets.labels[t]];
+    s.volume += vol, s.moment += vol * c;
+    all.volume += vol, all.moment += vol * c;
+    for (int k : v) lo = lo.cwiseMin(tets.points[k]), hi = hi.cwiseMax(tets.points[k]);
+  }
+  r.halfDiagonal = 0.5 * (hi - lo).norm();
+  auto known = [&](int label) { return labels.count(label) > 0 && label > 0; };
+  std::string names;
+  for (const auto& [label, s] : labels) names += (names.empty() ? "" : ", ") + std::to_string(label);
+  if (options.handle != 0 && !known(options.handle))
+    return fail("there is no component " + std::to_string(options.handle) + " (labels: " + names + ")");
+  if (options.anchor != 0 && !known(options.anchor))
+    return fail("there is no component " + std::to_string(options.anchor) + " (labels: " + names + ")");
+  if (options.handle != 0 && options.handle == options.anchor)
+    return fail("the handle and the anchor are the same component (" + std::to_string(options.handle) + ")");
+
+  // Choose: handle farthest from the centroid, anchor farthest from the handle.
+  const std::size_t components = labels.size();
+  const Vec3 centre = all.centroid();
+  r.handle = options.handle, r.anchor = options.anchor;
+  if (components >= 2) {
+    if (r.handle == 0) {
+      double best = -1;
+      for (const auto& [label, s] : labels)
+        if (label != r.anchor && (s.centroid() - centre).norm() > best) best = (s.centroid() - centre).norm(), r.handle = label;
+    }
+    if (r.anchor == 0) {
+      double best = -1;
+      const Vec3 h = labels[r.handle].centroid();
+      for (const auto& [label, s] : labels)
+        if (label != r.handle && (s.centroid() - h).norm() > best) best = (s.centroid() - h).norm(), r.anchor = label;
+    }
+  } else if (options.handle != 0 || options.anchor != 0) {
+    return fail("the mesh has one component only: leave the handle and the anchor to the default split");
+  }
+
+  // Vertex sets.
+  const int n = static_cast<int>(tets.points.size());
+  std::vector<bool> inHandle(n, false), inAnchor(n, false);
+  if (components >= 2) {
+    for (std::size_t t = 0; t < tets.tets.size(); ++t)
+      for (int v : tets.tets[t]) {
+        if (tets.labels[t] == r.handle) inHandle[v] = true;
+        if (tets.labels[t] == r.anchor) inAnchor[v] = true;
+      }
+  } else {
+    splitByPosition(tets, inHandle, inAnchor);
+  }
+  std::vector<int> handleVertices, anchorVertices;
+  for (int v = 0; v < n; ++v) {
+    if (inAnchor[v]) anchorVertices.push_back(v);
+    if (inHandle[v] && inAnchor[v]) ++r.sharedVertices;
+    if (inHandle[v] && !inAnchor[v]) handleVertices.push_back(v);
+  }
+  r.handleVertices = static_cast<int>(handleVertices.size());
+  r.anchorVertices = static_cast<int>(anchorVertices.size());
+  if (handleVertices.empty()) return fail("the handle has no vertex that is not also in the anchor");
+
+  // The motion.
+  Vec3 handleCentre = Vec3::Zero(), anchorCentre = Vec3::Zero();
+  for (int v : handleVertices) handleCentre += tets.points[v] / handleVertices.size();
+  for (int v : anchorVertices) anchorCentre += tets.points[v] / anchorVertices.size();
+  if (components >= 2) handleCentre = labels[r.handle].centroid(), anchorCentre = labels[r.anchor].centroid();
+  Vec3 d = handleCentre - anchorCentre;
+  d = d.norm() > 0 ? Vec3(d.normalized()) : Vec3::UnitX();
+  int leastAligned = 0;
+  d.cwiseAbs().minCoeff(&leastAligned);
+  const Vec3 e = Vec3::Unit(leastAligned);
+  const Vec3 u = (e - e.dot(d) * d).normalized();
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  if (options.rotate) {
+    r.angleDegrees = options.angleDegrees;
+    r.axis = d.cross(u).normalized();
+    r.pivot = anchorCentre;
+    rotation = Eigen::AngleAxisd(r.angleDegrees * M_PI / 180.0, r.axis).toRotationMatrix();
+    r.motion = format("turned by %g deg about the axis (%.3g, %.3g, %.3g)", r.angleDegrees, r.axis.x(), r.axis.y(), r.axis.z()) +
+               format(" through the anchor's centroid (%.4g, %.4g, %.4g)", r.pivot.x(), r.pivot.y(), r.pivot.z());
+  } else {
+    r.translation = options.translate ? options.move : Vec3(0.2 * r.halfDiagonal * u);
+    r.motion = format("translated by (%.4g, %.4g, %.4g)", r.translation.x(), r.translation.y(), r.translation.z()) +
+               (options.translate ? "" : format(", 0.2 x half-diagonal %.4g", r.halfDiagonal));
+  }
+  std::vector<int> constrained;
+  std::vector<Vec3> targets;
+  for (int v : handleVertices) {
+    constrained.push_back(v);
+    targets.push_back(options.rotate ? Vec3(r.pivot + rotation * (tets.points[v] - r.pivot)) : Vec3(tets.points[v] + r.translation));
+  }
+  for (int v : anchorVertices) constrained.push_back(v), targets.push_back(tets.points[v]);
+
+  // Embed, solve, carry the surface along.
+  r.embedding = embedPoints(tets, surface.vertices);
+  r.arap = arapDeform(tets, constrained, targets, options.arap);
+  if (!r.arap.status.ok()) {
+    r.status = r.arap.status;
+    return r;
+  }
+  r.tetPositionsAfter = r.arap.positions;
+  r.surfaceAfter = r.surfaceLinear = surface;
+  r.surfaceAfter.vertices = interpolate(r.embedding, tets, r.arap.positions);
+  r.surfaceLinear.vertices = interpolate(r.embedding, tets, r.arap.linearPositions);
+  r.surfaceVolumeBefore = acd::signedVolume(surface);
+  r.surfaceVolumeAfter = acd::signedVolume(r.surfaceAfter);
+  r.surfaceVolumeLinear = acd::signedVolume(r.surfaceLinear);
+  for (std::size_t i = 0; i < surface.vertices.size(); ++i)
+    r.maxSurfaceDisplacement = std::max(r.maxSurfaceDisplacement, (r.surfaceAfter.vertices[i] - surface.vertices[i]).norm());
+  for (int t : r.embedding.tet) {
+    const auto& v = tets.tets[t];
+    const auto& x = r.arap.positions;
+    if ((x[v[1]] - x[v[0]]).cross(x[v[2]] - x[v[0]]).dot(x[v[3]] - x[v[0]]) <= 0) ++r.surfaceInInverted;
+  }
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+std::vector<std::string> deformationSummary(const DeformationResult& r) {
+  const ArapResult& a = r.arap;
+  auto change = [](double after, double before) { return before != 0 ? 100.0 * (after - before) / before : 0.0; };
+  std::vector<std::string> lines;
+  lines.push_back(r.handle > 0 ? format("  deformation    handle component %d (%d vertices), anchor component %d (%d vertices)",
+                                        r.handle, r.handleVertices, r.anchor, r.anchorVertices)
+                               : format("  deformation    one component: handle = last fifth (%d vertices), anchor = first fifth (%d vertices)",
+                                        r.handleVertices, r.anchorVertices));
+  if (r.sharedVertices > 0) lines.back() += format(", %d shared kept with the anchor", r.sharedVertices);
+  lines.push_back("                 handle " + r.motion);
+  lines.push_back(format("  embedding      %zu surface vertices located, %d outside every tet (farthest %.3g), %.3f s",
+                         r.embedding.tet.size(), r.embedding.outside, r.embedding.maxOutsideDistance,
+                         r.embedding.seconds));
+  lines.push_back(format("  ARAP           %d iterations (%s), energy %.4g -> %.4g (mean ||F - R||^2 over the volume)",
+                         a.iterations, a.converged ? "converged" : "stopped at the limit",
+                         a.energy.empty() ? 0.0 : a.energy.front(), a.energy.empty() ? 0.0 : a.energy.back()));
+  lines.push_back(format("                 inverted tets %d (linear start %d; %.2g of the volume at rest, %d surface vertices in them)",
+                         a.invertedTets, a.linearInvertedTets, a.restVolume > 0 ? a.invertedRestVolume / a.restVolume : 0.0,
+                         r.surfaceInInverted));
+  lines.push_back(format("                 constraint error %.3g, %d vertices solved, %d kept at rest (no constraint reaches them)",
+                         a.maxConstraintError, a.freeVertices, a.pinnedVertices));
+  lines.push_back(format("  volume change  tets %+.2f%% (linear start %+.2f%%), surface %+.2f%% (linear start %+.2f%%)",
+                         change(a.volume, a.restVolume), change(a.linearVolume, a.restVolume),
+                         change(r.surfaceVolumeAfter, r.surfaceVolumeBefore), change(r.surfaceVolumeLinear, r.surfaceVolumeBefore)));
+  lines.push_back(format("  time (s)       factor %.3f, iterations %.3f, all %.3f; surface moved up to %.4g", a.factorSeconds,
+                         a.solveSeconds, r.seconds, r.maxSurfaceDisplacement));
+  return lines;
+}
+
+}  // namespace tetmesh

@@ -1,0 +1,355 @@
+// The deformation demo: embedding a surface in a tet mesh, the ARAP solve, and the command.
+#include "arap_deform.hpp"
+#include "deformation_demo.hpp"
+#include "helpers.hpp"
+#include "hull_mesher.hpp"
+#include "surface_embedding.hpp"
+#include "tet_checks.hpp"
+#include "tetgen_run.hpp"
+
+#include <acd/io.hpp>
+#include <acd/shapes.hpp>
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+using namespace tetmesh;
+
+namespace {
+
+/// The box [0, length] x [0, 1] x [0, 1] meshed by TetGen with quality and a volume bound.
+TetMesh barMesh(double length, double maxVolume) {
+  const acd::TriMesh box = acd::shapes::box(Vec3(0, 0, 0), Vec3(length, 1, 1));
+  Plc plc;
+  plc.points = box.vertices;
+  for (const acd::Face& f : box.faces) plc.facets.push_back({{f[0], f[1], f[2]}, kBoundaryFacet});
+  TetGenOptions o;
+  o.radiusEdge = 1.5;
+  o.maxVolume = maxVolume;
+  o.regions = false;
+  const TetGenResult r = runTetGen(plc, o);
+  EXPECT_TRUE(r.ok) << r.error;
+  return r.mesh;
+}
+
+/// Pure bending of the bar about the y axis into a quarter circle whose centre line (z = 0.5)
+/// keeps its length: the point at arc length s and height h above the centre line goes to
+/// radius (radius - h) at angle s / radius. Rigid on each cross-section.
+Vec3 bend(const Vec3& p, double radius) {
+  const double phi = p.x() / radius, h = p.z() - 0.5;
+  return Vec3((radius - h) * std::sin(phi), p.y(), 0.5 + radius - (radius - h) * std::cos(phi));
+}
+
+struct BarSetup {
+  TetMesh mesh;
+  std::vector<int> constrained;
+  std::vector<Vec3> targets;
+  int handle = 0;  // the first `handle` constraints are the moved end, the rest the fixed end
+};
+
+/// The bar with the end x = length moved by `motion` and the end x = 0 by `fixedEnd`.
+template <typename Motion, typename FixedEnd>
+BarSetup barWithEnds(double length, double maxVolume, Motion motion, FixedEnd fixedEnd) {
+  BarSetup s;
+  s.mesh = barMesh(length, maxVolume);
+  for (int v = 0; v < static_cast<int>(s.mesh.points.size()); ++v)
+    if (s.mesh.points[v].x() == length) s.constrained.push_back(v), s.targets.push_back(motion(s.mesh.points[v]));
+  s.handle = static_cast<int>(s.constrained.size());
+  for (int v = 0; v < static_cast<int>(s.mesh.points.size()); ++v)
+    if (s.mesh.points[v].x() == 0) s.constrained.push_back(v), s.targets.push_back(fixedEnd(s.mesh.points[v]));
+  return s;
+}
+
+/// The bar with the end x = 0 at rest and the end x = length moved by `motion`.
+template <typename Motion>
+BarSetup barWithEnds(double length, double maxVolume, Motion motion) {
+  return barWithEnds(length, maxVolume, motion, [](const Vec3& p) { return p; });
+}
+
+double polylineLength(const std::vector<Vec3>& p) {
+  double sum = 0;
+  for (std::size_t i = 1; i < p.size(); ++i) sum += (p[i] - p[i - 1]).norm();
+  return sum;
+}
+
+HullMeshResult elephantMesh() {
+  const acd::ReadResult read = acd::readMesh(std::string(ACD_DATA_DIR) + "/meshes/elephant.off");
+  EXPECT_TRUE(read.status.ok()) << read.status.message;
+  HullMeshOptions o;
+  o.tau = 0.2;
+  o.threads = 1;
+  HullMeshResult r = meshHulls(read.mesh, o);
+  EXPECT_TRUE(r.status.ok()) << r.status.message;
+  return r;
+}
+
+}  // namespace
+
+TEST(SurfaceEmbed, ElephantSurfaceIsRecoveredAndFollowsAffineMaps) {
+  const acd::ReadResult read = acd::readMesh(std::string(ACD_DATA_DIR) + "/meshes/elephant.off");
+  ASSERT_TRUE(read.status.ok()) << read.status.message;
+  const HullMeshResult r = elephantMesh();
+  ASSERT_TRUE(r.status.ok());
+  const TetMesh& m = r.tetgen.mesh;
+  const acd::Box3 box = acd::boundingBox(read.mesh);
+  const double size = (box.hi - box.lo).norm();
+  const SurfaceEmbedding e = embedPoints(m, read.mesh.vertices);
+  ASSERT_EQ(e.tet.size(), read.mesh.vertices.size());
+  // The hulls contain the model: a vertex lies at most a rounding distance outside.
+  EXPECT_LE(e.maxOutsideDistance, 1e-9 * size);
+  EXPECT_LT(e.outside, static_cast<int>(read.mesh.vertices.size()));
+  // Interpolating the rest positions gives every vertex back.
+  const std::vector<Vec3> back = interpolate(e, m, m.points);
+  double worst = 0;
+  for (std::size_t i = 0; i < back.size(); ++i) {
+    ASSERT_GE(e.tet[i], 0);
+    double sum = 0;
+    for (double w : e.weights[i]) sum += w;
+    EXPECT_NEAR(sum, 1.0, 1e-12);
+    worst = std::max(worst, (back[i] - read.mesh.vertices[i]).norm());
+  }
+  EXPECT_LE(worst, 1e-9 * size) << "largest error " << worst;
+  // Linear interpolation is exact for an affine map of the mesh.
+  Eigen::Matrix3d a;
+  a << 1.2, 0.3, -0.1, 0.05, 0.8, 0.4, -0.2, 0.1, 1.5;
+  const Vec3 shift(0.3, -2.0, 1.0);
+  std::vector<Vec3> moved(m.points.size());
+  for (std::size_t v = 0; v < m.points.size(); ++v) moved[v] = a * m.points[v] + shift;
+  const std::vector<Vec3> carried = interpolate(e, m, moved);
+  worst = 0;
+  for (std::size_t i = 0; i < carried.size(); ++i) worst = std::max(worst, (carried[i] - (a * read.mesh.vertices[i] + shift)).norm());
+  EXPECT_LE(worst, 1e-9 * size) << "largest error " << worst;
+}
+
+TEST(SurfaceEmbed, PointsOutsideGetTheClosestTetAndTheirDistance) {
+  const TetMesh bar = barMesh(4.0, 0.05);
+  ASSERT_FALSE(bar.tets.empty());
+  const std::vector<Vec3> points = {
+      Vec3(5.0, 0.5, 0.5),     // 1 beyond the end face: closest (4, 0.5, 0.5)
+      Vec3(-0.5, -0.5, 0.3),   // beside the edge x = 0, y = 0: closest (0, 0, 0.3)
+      Vec3(100, 100, 100),     // far away: closest the corner (4, 1, 1)
+      Vec3(1.25, 0.5, 0.75),   // inside
+      Vec3(4.0, 1.0, 1.0),     // a corner
+      Vec3(2.0, 0.0, 0.5),     // on a side
+  };
+  const SurfaceEmbedding e = embedPoints(bar, points);
+  EXPECT_EQ(e.outside, 3);
+  EXPECT_NEAR(e.maxOutsideDistance, (Vec3(100, 100, 100) - Vec3(4, 1, 1)).norm(), 1e-9);
+  const std::vector<Vec3> at = interpolate(e, bar, bar.points);
+  const std::vector<Vec3> expected = {Vec3(4, 0.5, 0.5), Vec3(0, 0, 0.3), Vec3(4, 1, 1), points[3], points[4], points[5]};
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    for (double w : e.weights[i]) EXPECT_GE(w, -kInsideTolerance) << "point " << i;
+    EXPECT_LE((at[i] - expected[i]).norm(), 1e-12) << "point " << i << ": " << at[i].transpose();
+  }
+}
+
+TEST(ArapDeform, ConstraintsMovedRigidlyMoveEverythingRigidly) {
+  const Eigen::Matrix3d q = Eigen::AngleAxisd(2.0 * M_PI / 3.0, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  const Vec3 t(1.0, -0.5, 2.0);
+  const auto rigid = [&](const Vec3& p) { return Vec3(q * p + t); };
+  const BarSetup s = barWithEnds(3.0, 0.05, rigid, rigid);
+  for (bool linearStart : {true, false}) {
+    ArapOptions o;
+    o.linearStart = linearStart;
+    o.tolerance = 0;
+    o.maxIterations = 500;
+    const ArapResult r = arapDeform(s.mesh, s.constrained, s.targets, o);
+    ASSERT_TRUE(r.status.ok()) << r.status.message;
+    double worst = 0;
+    for (std::size_t v = 0; v < s.mesh.points.size(); ++v) worst = std::max(worst, (r.positions[v] - (q * s.mesh.points[v] + t)).norm());
+    EXPECT_LE(worst, 1e-6) << (linearStart ? "linear start" : "rest start") << ", " << r.iterations << " iterations";
+    EXPECT_LE(r.energy.back(), 1e-12);
+    EXPECT_EQ(r.invertedTets, 0);
+    EXPECT_NEAR(r.volume, r.restVolume, 1e-9 * r.restVolume);
+    if (!linearStart) {
+      EXPECT_GT(r.energy.front(), 1e-3);  // the rest start is far from rigid
+    }
+  }
+}
+
+TEST(ArapDeform, EnergyNeverIncreases) {
+  const double length = 4.0, radius = 2.0 * length / M_PI;
+  const BarSetup s = barWithEnds(length, 0.02, [&](const Vec3& p) { return bend(p, radius); });
+  for (bool linearStart : {true, false}) {
+    ArapOptions o;
+    o.linearStart = linearStart;
+    o.tolerance = 0;
+    o.maxIterations = 60;
+    const ArapResult r = arapDeform(s.mesh, s.constrained, s.targets, o);
+    ASSERT_TRUE(r.status.ok()) << r.status.message;
+    ASSERT_EQ(r.energy.size(), 61u);
+    for (std::size_t i = 1; i < r.energy.size(); ++i)
+      EXPECT_LE(r.energy[i], r.energy[i - 1] * (1 + 1e-12)) << "iteration " << i;
+    EXPECT_LT(r.energy.back(), 0.5 * r.energy.front());
+  }
+}
+
+TEST(ArapDeform, BentBarKeepsItsLengthAndVolumeBetterThanTheLinearSolve) {
+  // Bar 4 x 1 x 1; one end fixed, the other turned by 90 degrees and placed where a quarter
+  // circle of the bar's length would put it.
+  const double length = 4.0, radius = 2.0 * length / M_PI;
+  const BarSetup s = barWithEnds(length, 0.02, [&](const Vec3& p) { return bend(p, radius); });
+  ASSERT_GT(s.handle, 3);
+  ASSERT_GT(static_cast<int>(s.constrained.size()), s.handle + 3);
+  const ArapResult r = arapDeform(s.mesh, s.constrained, s.targets);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  EXPECT_TRUE(r.converged);
+  // Constraints hold exactly: they are eliminated from the system, not penalised.
+  for (std::size_t i = 0; i < s.constrained.size(); ++i) EXPECT_EQ(r.positions[s.constrained[i]], s.targets[i]);
+  EXPECT_EQ(r.maxConstraintError, 0.0);
+  EXPECT_EQ(r.invertedTets, 0);
+  // Volume: pure bending keeps the volume exactly; ARAP stays close, the linear solve shrinks
+  // the bent middle (it interpolates the end positions without turning the cross-sections).
+  const double arapChange = std::abs(r.volume - r.restVolume) / r.restVolume;
+  const double linearChange = std::abs(r.linearVolume - r.restVolume) / r.restVolume;
+  EXPECT_LT(arapChange, 0.02);
+  EXPECT_GT(linearChange, 3 * arapChange);
+  // Length of the centre line, carried by the embedding: ARAP keeps it, the linear solve cuts
+  // the corner. The middle of the line lies near the quarter circle's middle.
+  std::vector<Vec3> line;
+  for (int i = 0; i <= 40; ++i) line.emplace_back(length * i / 40.0, 0.5, 0.5);
+  const SurfaceEmbedding e = embedPoints(s.mesh, line);
+  EXPECT_EQ(e.outside, 0);
+  const std::vector<Vec3> arapLine = interpolate(e, s.mesh, r.positions);
+  const std::vector<Vec3> linearLine = interpolate(e, s.mesh, r.linearPositions);
+  const double arapLength = polylineLength(arapLine), linearLength = polylineLength(linearLine);
+  EXPECT_NEAR(arapLength, length, 0.03 * length);
+  EXPECT_LT(linearLength, length - 3 * std::abs(arapLength - length));
+  EXPECT_LT((arapLine[20] - bend(line[20], radius)).norm(), 0.05 * length);
+  std::printf("[ bar      ] volume change ARAP %.4f%%, linear %.4f%%; centre line ARAP %.4f, linear %.4f (rest %.1f); "
+              "middle off the arc by %.4f; %d iterations, energy %.4g -> %.4g\n",
+              100 * (r.volume - r.restVolume) / r.restVolume, 100 * (r.linearVolume - r.restVolume) / r.restVolume,
+              arapLength, linearLength, length, (arapLine[20] - bend(line[20], radius)).norm(), r.iterations,
+              r.energy.front(), r.energy.back());
+}
+
+TEST(ArapDeform, UnreachedPartsStayAtRestAndBadConstraintsAreRefused) {
+  // Two bars side by side in one mesh, constraints on the first only.
+  TetMesh m = barMesh(2.0, 0.1);
+  const int base = static_cast<int>(m.points.size()), tets = static_cast<int>(m.tets.size());
+  for (int v = 0; v < base; ++v) m.points.push_back(m.points[v] + Vec3(0, 3, 0));
+  for (int t = 0; t < tets; ++t) m.tets.push_back({m.tets[t][0] + base, m.tets[t][1] + base, m.tets[t][2] + base, m.tets[t][3] + base});
+  std::vector<int> constrained;
+  std::vector<Vec3> targets;
+  for (int v = 0; v < base; ++v)
+    if (m.points[v].x() == 0 || m.points[v].x() == 2.0) constrained.push_back(v), targets.push_back(m.points[v] + Vec3(0, 0, 1));
+  const ArapResult r = arapDeform(m, constrained, targets);
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  EXPECT_EQ(r.pinnedVertices, base);
+  for (int v = 0; v < base; ++v) {
+    EXPECT_LE((r.positions[v] - (m.points[v] + Vec3(0, 0, 1))).norm(), 1e-9);  // translated as one
+    EXPECT_EQ(r.positions[v + base], m.points[v + base]);
+  }
+  EXPECT_FALSE(arapDeform(m, {0, 99999}, {Vec3::Zero(), Vec3::Zero()}).status.ok());
+  EXPECT_FALSE(arapDeform(m, {0}, {Vec3(NAN, 0, 0)}).status.ok());
+  EXPECT_FALSE(arapDeform(m, {0, 0}, {Vec3(0, 0, 0), Vec3(1, 0, 0)}).status.ok());
+  EXPECT_FALSE(arapDeform(m, {0}, {}).status.ok());
+}
+
+TEST(DeformDemo, DefaultsPickDistantComponentsAndLabelsAreChecked) {
+  // U: base and two arms. The handle is the component farthest from the centroid (an arm),
+  // the anchor the one farthest from it (the other arm).
+  const acd::TriMesh u = acd::shapes::uShape();
+  HullMeshOptions ho;
+  ho.tau = 0.05;
+  ho.threads = 1;
+  ho.tetgen.radiusEdge = 2.0;
+  const HullMeshResult mesh = meshHulls(u, ho);
+  ASSERT_TRUE(mesh.status.ok()) << mesh.status.message;
+  ASSERT_EQ(mesh.decomposition.components.size(), 3u);
+  const DeformationResult r = deformSurface(mesh.tetgen.mesh, u, {});
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  auto centroid = [&](int label) { return acd::boundingBox(mesh.decomposition.components[label - 1].mesh); };
+  const acd::Box3 h = centroid(r.handle), a = centroid(r.anchor);
+  EXPECT_NE(r.handle, r.anchor);
+  EXPECT_GT(std::abs((h.lo + h.hi).x() - (a.lo + a.hi).x()) / 2, 1.5) << "handle and anchor should be the two arms";
+  EXPECT_EQ(r.embedding.outside, 0);
+  EXPECT_EQ(r.arap.invertedTets, 0);
+  EXPECT_EQ(r.surfaceAfter.faces, u.faces);
+  EXPECT_NEAR(r.translation.norm(), 0.2 * r.halfDiagonal, 1e-12);
+  EXPECT_NEAR(r.translation.dot(h.lo + h.hi - a.lo - a.hi), 0.0, 1e-9);  // perpendicular to the handle-anchor direction
+  // The surface vertices of the handle arm's far end moved with it.
+  int moved = 0;
+  for (std::size_t i = 0; i < u.vertices.size(); ++i)
+    if (u.vertices[i].y() >= 2.999 && u.vertices[i].x() >= h.lo.x() - 1e-9 && u.vertices[i].x() <= h.hi.x() + 1e-9) {
+      EXPECT_LE((r.surfaceAfter.vertices[i] - (u.vertices[i] + r.translation)).norm(), 1e-9);
+      ++moved;
+    }
+  EXPECT_GT(moved, 0);
+  // Bad choices.
+  DeformationOptions o;
+  o.handle = 7;
+  EXPECT_NE(deformSurface(mesh.tetgen.mesh, u, o).status.message.find("no component 7"), std::string::npos);
+  o.handle = o.anchor = 2;
+  EXPECT_NE(deformSurface(mesh.tetgen.mesh, u, o).status.message.find("same component"), std::string::npos);
+  o = {};
+  o.rotate = o.translate = true;
+  EXPECT_FALSE(deformSurface(mesh.tetgen.mesh, u, o).status.ok());
+}
+
+TEST(DeformCli, ElephantWritesFourFilesThatParseBack) {
+  acdtest::TempDir dir("tetmesh_deform_cli");
+  const std::string model = std::string(ACD_DATA_DIR) + "/meshes/elephant.off";
+  const acd::ReadResult input = acd::readMesh(model);
+  ASSERT_TRUE(input.status.ok());
+  auto r = acdtest::runTool(TETMESH_CLI,
+                            acdtest::quote(model) + " --tau 0.2 --threads 1 --deform " + acdtest::quote(dir / "out") +
+                                " --deform-angle 20 --json " + acdtest::quote(dir / "report.json"),
+                            dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("embedding"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("ARAP"), std::string::npos) << r.out;
+  for (const char* name : {"surface_before.off", "surface_after.off"}) {
+    const acd::ReadResult back = acd::readMesh(dir / (std::string("out/") + name));
+    ASSERT_TRUE(back.status.ok()) << name << ": " << back.status.message;
+    EXPECT_EQ(back.mesh.vertices.size(), input.mesh.vertices.size()) << name;
+    EXPECT_EQ(back.mesh.faces, input.mesh.faces) << name;
+  }
+  const acd::ReadResult after = acd::readMesh(dir / "out/surface_after.off");
+  double moved = 0;
+  for (std::size_t i = 0; i < input.mesh.vertices.size(); ++i) moved = std::max(moved, (after.mesh.vertices[i] - input.mesh.vertices[i]).norm());
+  EXPECT_GT(moved, 0.01);  // something moved
+  for (const char* name : {"tets_before.vtk", "tets_after.vtk"}) {
+    std::ifstream in(dir / (std::string("out/") + name));
+    std::string line, word;
+    int points = -1, cells = -1;
+    while (in >> word) {
+      if (word == "POINTS") in >> points;
+      if (word == "CELLS") in >> cells;
+    }
+    EXPECT_GT(points, 0) << name;
+    EXPECT_GT(cells, 0) << name;
+  }
+  const std::string json = acdtest::slurp(dir / "report.json");
+  EXPECT_NE(json.find("\"deformation\""), std::string::npos);
+  EXPECT_NE(json.find("\"inverted_tets\""), std::string::npos);
+}
+
+TEST(DeformCli, BadDeformOptionsExitThree) {
+  acdtest::TempDir dir("tetmesh_deform_bad");
+  ASSERT_TRUE(acd::writeMesh(dir / "u.off", acd::shapes::uShape()).ok());
+  const std::string base = acdtest::quote(dir / "u.off") + " --tau 0.05 --deform " + acdtest::quote(dir / "out");
+  auto r = acdtest::runTool(TETMESH_CLI, base + " --deform-handle 9", dir);
+  EXPECT_EQ(r.code, 3) << r.err;
+  EXPECT_NE(r.err.find("no component 9"), std::string::npos) << r.err;
+  r = acdtest::runTool(TETMESH_CLI, base + " --deform-handle 1 --deform-anchor 1", dir);
+  EXPECT_EQ(r.code, 3) << r.err;
+  EXPECT_NE(r.err.find("same component"), std::string::npos) << r.err;
+  r = acdtest::runTool(TETMESH_CLI, base + " --deform-move 1,0,0 --deform-angle 30", dir);
+  EXPECT_EQ(r.code, 3) << r.err;
+  r = acdtest::runTool(TETMESH_CLI, base + " --deform-move 1,nan,0", dir);
+  EXPECT_EQ(r.code, 3) << r.err;
+  r = acdtest::runTool(TETMESH_CLI, base + " --deform-iterations -1", dir);
+  EXPECT_EQ(r.code, 3) << r.err;
+  r = acdtest::runTool(TETMESH_CLI, acdtest::quote(dir / "u.off") + " --deform-handle 1", dir);
+  EXPECT_NE(r.code, 0) << "--deform-handle without --deform";
+  // And a good run on the U: the default handle and anchor, counts kept.
+  r = acdtest::runTool(TETMESH_CLI, base, dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const acd::ReadResult after = acd::readMesh(dir / "out/surface_after.off");
+  ASSERT_TRUE(after.status.ok()) << after.status.message;
+  EXPECT_EQ(after.mesh.faces, acd::shapes::uShape().faces);
+}
