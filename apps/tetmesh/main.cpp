@@ -50,9 +50,9 @@ struct DeformArgs {
 
 void addDeformOptions(CLI::App& app, DeformArgs& d) {
   auto* dir = app.add_option("--deform", d.dir,
-                             "Deform: write DIR/surface_before.off, surface_after.off, tets_before.vtk, tets_after.vtk");
+                             "Deform: write DIR/surface_before.off, surface_after.off, tets_before.vtk, tets_after.vtk, parts_before.obj, parts_after.obj");
   app.add_option("--deform-handle", d.handle, "Component moved (label; default: farthest from the centroid)")->needs(dir);
-  app.add_option("--deform-anchor", d.anchor, "Component held (label; default: farthest from the handle)")->needs(dir);
+  app.add_option("--deform-anchor", d.anchor, "Component held (label; default: the largest other one)")->needs(dir);
   app.add_option("--deform-move", d.move, "Handle translation dx,dy,dz (default: 0.2 x half-diagonal across)")
       ->expected(3)->delimiter(',')->needs(dir);
   app.add_option("--deform-angle", d.angle, "Instead: turn the handle by DEG about an axis through the anchor")->needs(dir);
@@ -94,8 +94,14 @@ int runDeformation(const DeformArgs& d, const DeformationOptions& o, const TetMe
   TetMesh after = tets;
   after.points = r.tetPositionsAfter;
   const std::string base = (std::filesystem::path(d.dir) / "").string();
+  std::vector<acd::TriMesh> before, moved;
+  std::vector<std::string> names;
+  splitByPart(surface, r.facePart, before, names);
+  splitByPart(r.surfaceAfter, r.facePart, moved, names);
   for (const acd::Status& s : {acd::writeMesh(base + "surface_before.off", surface), acd::writeMesh(base + "surface_after.off", r.surfaceAfter),
-                               writeVtk(base + "tets_before.vtk", tets), writeVtk(base + "tets_after.vtk", after)})
+                               writeVtk(base + "tets_before.vtk", tets), writeVtk(base + "tets_after.vtk", after),
+                               acd::writeObjObjects(base + "parts_before.obj", before, names),
+                               acd::writeObjObjects(base + "parts_after.obj", moved, names)})
     if (!s.ok()) {
       std::fprintf(stderr, "tetmesh: %s\n", s.message.c_str());
       return kOutputFailed;
@@ -230,6 +236,7 @@ int run(const Args& a) {
   DeformationOptions deformOpts;
   if (!a.deform.dir.empty())
     if (const int code = deformOptions(a.deform, deformOpts); code != kOk) return code;
+  deformOpts.arap.threads = a.options.threads;
 
   const acd::ReadResult read = acd::readMesh(a.model);
   if (!read.status.ok()) {

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <set>
 
 using namespace tetmesh;
@@ -219,6 +220,10 @@ TEST(ArapDeform, BentBarKeepsItsLengthAndVolumeBetterThanTheLinearSolve) {
   EXPECT_NEAR(arapLength, length, 0.03 * length);
   EXPECT_LT(linearLength, length - 3 * std::abs(arapLength - length));
   EXPECT_LT((arapLine[20] - bend(line[20], radius)).norm(), 0.05 * length);
+  // The local step's threads share out the tets; the result is the same bit for bit.
+  ArapOptions threaded;
+  threaded.threads = 3;
+  EXPECT_EQ(arapDeform(s.mesh, s.constrained, s.targets, threaded).positions, r.positions);
   std::printf("[ bar      ] volume change ARAP %.4f%%, linear %.4f%%; centre line ARAP %.4f, linear %.4f (rest %.1f); "
               "middle off the arc by %.4f; %d iterations, energy %.4g -> %.4g\n",
               100 * (r.volume - r.restVolume) / r.restVolume, 100 * (r.linearVolume - r.restVolume) / r.restVolume,
@@ -249,9 +254,9 @@ TEST(ArapDeform, UnreachedPartsStayAtRestAndBadConstraintsAreRefused) {
   EXPECT_FALSE(arapDeform(m, {0}, {}).status.ok());
 }
 
-TEST(DeformDemo, DefaultsPickDistantComponentsAndLabelsAreChecked) {
-  // U: base and two arms. The handle is the component farthest from the centroid (an arm),
-  // the anchor the one farthest from it (the other arm).
+TEST(DeformDemo, DefaultsPickTheFarthestAndTheLargestComponentsAndLabelsAreChecked) {
+  // U: base and two arms, three components. Handle: the component whose centroid is farthest
+  // from the whole's; anchor: the largest other one.
   const acd::TriMesh u = acd::shapes::uShape();
   HullMeshOptions ho;
   ho.tau = 0.05;
@@ -260,21 +265,39 @@ TEST(DeformDemo, DefaultsPickDistantComponentsAndLabelsAreChecked) {
   const HullMeshResult mesh = meshHulls(u, ho);
   ASSERT_TRUE(mesh.status.ok()) << mesh.status.message;
   ASSERT_EQ(mesh.decomposition.components.size(), 3u);
-  const DeformationResult r = deformSurface(mesh.tetgen.mesh, u, {});
+  const TetMesh& m = mesh.tetgen.mesh;
+  std::map<int, double> volume;
+  std::map<int, Vec3> moment;
+  Vec3 all = Vec3::Zero();
+  double total = 0;
+  for (int t = 0; t < static_cast<int>(m.tets.size()); ++t) {
+    Vec3 c = Vec3::Zero();
+    for (int v : m.tets[t]) c += m.points[v] / 4.0;
+    const double vol = tetVolume(m, t);
+    volume[m.labels[t]] += vol, total += vol;
+    moment.emplace(m.labels[t], Vec3::Zero()).first->second += vol * c;
+    all += vol * c;
+  }
+  auto centroid = [&](int label) { return Vec3(moment[label] / volume[label]); };
+  const DeformationResult r = deformSurface(m, u, {});
   ASSERT_TRUE(r.status.ok()) << r.status.message;
-  auto centroid = [&](int label) { return acd::boundingBox(mesh.decomposition.components[label - 1].mesh); };
-  const acd::Box3 h = centroid(r.handle), a = centroid(r.anchor);
   EXPECT_NE(r.handle, r.anchor);
-  EXPECT_GT(std::abs((h.lo + h.hi).x() - (a.lo + a.hi).x()) / 2, 1.5) << "handle and anchor should be the two arms";
+  for (const auto& [label, vol] : volume) {
+    EXPECT_LE((centroid(label) - all / total).norm(), (centroid(r.handle) - all / total).norm() + 1e-12) << label;
+    if (label != r.handle) {
+      EXPECT_LE(vol, volume[r.anchor] + 1e-12) << label;
+    }
+  }
+  const acd::Box3 h = acd::boundingBox(mesh.decomposition.components[r.handle - 1].mesh);
   EXPECT_EQ(r.embedding.outside, 0);
   EXPECT_EQ(r.arap.invertedTets, 0);
   EXPECT_EQ(r.surfaceAfter.faces, u.faces);
   EXPECT_NEAR(r.translation.norm(), 0.2 * r.halfDiagonal, 1e-12);
-  EXPECT_NEAR(r.translation.dot(h.lo + h.hi - a.lo - a.hi), 0.0, 1e-9);  // perpendicular to the handle-anchor direction
+  EXPECT_NEAR(r.translation.dot(centroid(r.handle) - centroid(r.anchor)), 0.0, 1e-9);  // across the handle-anchor direction
   // The surface vertices of the handle arm's far end moved with it.
   int moved = 0;
   for (std::size_t i = 0; i < u.vertices.size(); ++i)
-    if (u.vertices[i].y() >= 2.999 && u.vertices[i].x() >= h.lo.x() - 1e-9 && u.vertices[i].x() <= h.hi.x() + 1e-9) {
+    if (u.vertices[i].y() >= h.hi.y() - 1e-9 && u.vertices[i].x() >= h.lo.x() - 1e-9 && u.vertices[i].x() <= h.hi.x() + 1e-9) {
       EXPECT_LE((r.surfaceAfter.vertices[i] - (u.vertices[i] + r.translation)).norm(), 1e-9);
       ++moved;
     }
@@ -323,6 +346,13 @@ TEST(DeformCli, ElephantWritesFourFilesThatParseBack) {
     EXPECT_GT(points, 0) << name;
     EXPECT_GT(cells, 0) << name;
   }
+  // The parts: rest, handle and anchor, which together are the whole surface.
+  const acd::ObjObjects parts = acd::readObjObjects(dir / "out/parts_after.obj");
+  ASSERT_TRUE(parts.status.ok()) << parts.status.message;
+  EXPECT_EQ(parts.names, (std::vector<std::string>{"rest", "handle", "anchor"}));
+  std::size_t faces = 0;
+  for (const acd::TriMesh& p : parts.objects) faces += p.faces.size();
+  EXPECT_EQ(faces, input.mesh.faces.size());
   const std::string json = acdtest::slurp(dir / "report.json");
   EXPECT_NE(json.find("\"deformation\""), std::string::npos);
   EXPECT_NE(json.find("\"inverted_tets\""), std::string::npos);

@@ -4,10 +4,12 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numeric>
 #include <string>
+#include <thread>
 
 namespace tetmesh {
 
@@ -71,16 +73,26 @@ Mat3 gradient(const TetMesh& mesh, const TetOperator& op, const std::vector<Vec3
   return xs * op.b[t];
 }
 
-/// Local step: best rotations for x, and the energy with them.
-double localStep(const TetMesh& mesh, const TetOperator& op, const std::vector<Vec3>& x, std::vector<Mat3>& rotations) {
-  double energy = 0.0;
-  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
-    if (op.volume[t] == 0) continue;
-    const Mat3 f = gradient(mesh, op, x, t);
-    rotations[t] = closestRotation(f);
-    energy += op.volume[t] * (f - rotations[t]).squaredNorm();
-  }
-  return energy;
+/// Local step: best rotations for x, and the energy with them. The tets are split among
+/// `threads` threads; each writes its own slots and the energy is summed in tet order, so the
+/// result does not depend on the thread count.
+double localStep(const TetMesh& mesh, const TetOperator& op, const std::vector<Vec3>& x, std::vector<Mat3>& rotations,
+                 std::vector<double>& tetEnergy, int threads) {
+  const std::size_t n = mesh.tets.size();
+  auto work = [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t) {
+      if (op.volume[t] == 0) continue;
+      const Mat3 f = gradient(mesh, op, x, t);
+      rotations[t] = closestRotation(f);
+      tetEnergy[t] = op.volume[t] * (f - rotations[t]).squaredNorm();
+    }
+  };
+  const std::size_t chunks = std::min<std::size_t>(std::max(threads, 1), std::max<std::size_t>(n / 256, 1));
+  std::vector<std::thread> pool;
+  for (std::size_t c = 1; c < chunks; ++c) pool.emplace_back(work, n * c / chunks, n * (c + 1) / chunks);
+  work(0, n / chunks);
+  for (std::thread& th : pool) th.join();
+  return std::accumulate(tetEnergy.begin(), tetEnergy.end(), 0.0);
 }
 
 }  // namespace
@@ -202,12 +214,14 @@ ArapResult arapDeform(const TetMesh& mesh, const std::vector<int>& constrained, 
   };
 
   std::vector<Mat3> rotations(mesh.tets.size(), Mat3::Identity());
+  std::vector<double> tetEnergy(mesh.tets.size(), 0.0);
+  const int threads = options.threads > 0 ? options.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const std::vector<Vec3> restStart = x;
   if (!globalStep(rotations)) return fail(acd::StatusCode::InternalError, "deformation: the linear solve failed");
   r.linearPositions = x;
   if (!options.linearStart) x = restStart;
   const double scale = r.restVolume > 0 ? 1.0 / r.restVolume : 1.0;
-  r.energy.push_back(scale * localStep(mesh, op, x, rotations));
+  r.energy.push_back(scale * localStep(mesh, op, x, rotations, tetEnergy, threads));
   while (r.iterations < options.maxIterations) {
     const double previous = r.energy.back();
     if (previous <= 1e-28) {  // already a rigid motion up to rounding
@@ -216,7 +230,7 @@ ArapResult arapDeform(const TetMesh& mesh, const std::vector<int>& constrained, 
     }
     if (!globalStep(rotations)) return fail(acd::StatusCode::InternalError, "deformation: a solve failed");
     ++r.iterations;
-    r.energy.push_back(scale * localStep(mesh, op, x, rotations));
+    r.energy.push_back(scale * localStep(mesh, op, x, rotations, tetEnergy, threads));
     if (previous - r.energy.back() <= options.tolerance * previous) {
       r.converged = true;
       break;

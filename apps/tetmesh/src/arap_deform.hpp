@@ -28,6 +28,7 @@ namespace tetmesh {
 struct ArapOptions {
   int maxIterations = 200;       // local/global iterations after the linear start
   double tolerance = 1e-5;       // stop when an iteration lowers the energy by less than this fraction
+  int threads = 0;               // local step threads, 0 = all cores (the result is the same)
   bool linearStart = true;       // start from the linear solve; false: from rest with the constrained vertices moved
 };
 

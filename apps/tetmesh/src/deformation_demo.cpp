@@ -92,9 +92,8 @@ DeformationResult deformSurface(const TetMesh& tets, const acd::TriMesh& surface
     }
     if (r.anchor == 0) {
       double best = -1;
-      const Vec3 h = labels[r.handle].centroid();
       for (const auto& [label, s] : labels)
-        if (label != r.handle && (s.centroid() - h).norm() > best) best = (s.centroid() - h).norm(), r.anchor = label;
+        if (label != r.handle && s.volume > best) best = s.volume, r.anchor = label;
     }
   } else if (options.handle != 0 || options.anchor != 0) {
     return fail("the mesh has one component only: leave the handle and the anchor to the default split");
@@ -137,10 +136,14 @@ DeformationResult deformSurface(const TetMesh& tets, const acd::TriMesh& surface
   if (options.rotate) {
     r.angleDegrees = options.angleDegrees;
     r.axis = d.cross(u).normalized();
-    r.pivot = anchorCentre;
+    // The anchor's vertex nearest the handle: the handle swings about the side of the anchor
+    // that faces it, as a limb about its joint.
+    r.pivot = tets.points[anchorVertices.front()];
+    for (int v : anchorVertices)
+      if ((tets.points[v] - handleCentre).squaredNorm() < (r.pivot - handleCentre).squaredNorm()) r.pivot = tets.points[v];
     rotation = Eigen::AngleAxisd(r.angleDegrees * M_PI / 180.0, r.axis).toRotationMatrix();
     r.motion = format("turned by %g deg about the axis (%.3g, %.3g, %.3g)", r.angleDegrees, r.axis.x(), r.axis.y(), r.axis.z()) +
-               format(" through the anchor's centroid (%.4g, %.4g, %.4g)", r.pivot.x(), r.pivot.y(), r.pivot.z());
+               format(" through (%.4g, %.4g, %.4g), the anchor's point nearest the handle", r.pivot.x(), r.pivot.y(), r.pivot.z());
   } else {
     r.translation = options.translate ? options.move : Vec3(0.2 * r.halfDiagonal * u);
     r.motion = format("translated by (%.4g, %.4g, %.4g)", r.translation.x(), r.translation.y(), r.translation.z()) +
@@ -170,6 +173,22 @@ DeformationResult deformSurface(const TetMesh& tets, const acd::TriMesh& surface
   r.surfaceVolumeLinear = acd::signedVolume(r.surfaceLinear);
   for (std::size_t i = 0; i < surface.vertices.size(); ++i)
     r.maxSurfaceDisplacement = std::max(r.maxSurfaceDisplacement, (r.surfaceAfter.vertices[i] - surface.vertices[i]).norm());
+  // Parts for pictures: a face is the handle's (anchor's) when all three of its vertices lie in
+  // tets of the handle (anchor).
+  std::vector<int> tetPart(tets.tets.size(), kRest);
+  for (std::size_t t = 0; t < tets.tets.size(); ++t) {
+    if (components >= 2) {
+      tetPart[t] = tets.labels[t] == r.handle ? kHandle : tets.labels[t] == r.anchor ? kAnchor : kRest;
+    } else {
+      bool h = true, a = true;
+      for (int v : tets.tets[t]) h = h && inHandle[v], a = a && inAnchor[v];
+      tetPart[t] = h ? kHandle : a ? kAnchor : kRest;
+    }
+  }
+  for (const acd::Face& f : surface.faces) {
+    const int p0 = tetPart[r.embedding.tet[f[0]]];
+    r.facePart.push_back(p0 == tetPart[r.embedding.tet[f[1]]] && p0 == tetPart[r.embedding.tet[f[2]]] ? p0 : kRest);
+  }
   for (int t : r.embedding.tet) {
     const auto& v = tets.tets[t];
     const auto& x = r.arap.positions;
@@ -177,6 +196,29 @@ DeformationResult deformSurface(const TetMesh& tets, const acd::TriMesh& surface
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
+}
+
+void splitByPart(const acd::TriMesh& surface, const std::vector<int>& facePart, std::vector<acd::TriMesh>& parts,
+                 std::vector<std::string>& names) {
+  const char* partNames[] = {"rest", "handle", "anchor"};
+  parts.clear(), names.clear();
+  for (int part : {kRest, kHandle, kAnchor}) {
+    acd::TriMesh m;
+    std::vector<int> index(surface.vertices.size(), -1);
+    for (std::size_t f = 0; f < surface.faces.size(); ++f) {
+      if (facePart[f] != part) continue;
+      acd::Face g;
+      for (int k = 0; k < 3; ++k) {
+        int& i = index[surface.faces[f][k]];
+        if (i < 0) i = static_cast<int>(m.vertices.size()), m.vertices.push_back(surface.vertices[surface.faces[f][k]]);
+        g[k] = i;
+      }
+      m.faces.push_back(g);
+    }
+    if (m.faces.empty()) continue;
+    parts.push_back(std::move(m));
+    names.push_back(partNames[part]);
+  }
 }
 
 std::vector<std::string> deformationSummary(const DeformationResult& r) {

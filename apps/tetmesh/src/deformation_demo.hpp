@@ -6,11 +6,13 @@
 // Defaults, chosen from the mesh alone so that they work on any model:
 //  * handle: the component whose centroid (tet volumes) lies farthest from the mesh's centroid
 //    (a limb, a head, a tail);
-//  * anchor: the component whose centroid lies farthest from the handle's;
+//  * anchor: the largest other component (by volume; the body), so that the deformation shows
+//    between the two rather than as a rigid motion of everything but a held fingertip;
 //  * motion: the handle translated by 0.2 x the half-diagonal of the mesh's bounding box along u,
-//    the coordinate axis least aligned with the anchor-to-handle direction d, made
-//    perpendicular to d. With an angle instead, the handle turns about the axis d x u through
-//    the anchor's centroid, so it swings towards +u.
+//    the coordinate axis least aligned with the anchor-to-handle direction d (between the
+//    centroids), made perpendicular to d. With an angle instead, the handle turns about the
+//    axis d x u through the anchor's vertex nearest the handle's centroid, so it swings
+//    towards +u.
 // A mesh with one component has no second one to hold: its vertices in the first and the last
 // fifth of the longest side of the bounding box are the anchor and the handle.
 // Vertices shared by the handle and the anchor belong to the anchor.
@@ -53,12 +55,20 @@ struct DeformationResult {
   double surfaceVolumeBefore = 0.0, surfaceVolumeAfter = 0.0, surfaceVolumeLinear = 0.0;
   double maxSurfaceDisplacement = 0.0;
   int surfaceInInverted = 0;            // surface vertices embedded in a tet that inverted
+  std::vector<int> facePart;            // per surface face: kRest, kHandle or kAnchor (for pictures)
   double halfDiagonal = 0.0;
   double seconds = 0.0;                 // everything
 };
 
+enum SurfacePart : int { kRest = 0, kHandle = 1, kAnchor = 2 };
+
 /// Moves the handle of `tets` (a labelled mesh, the hull mesh) and carries `surface` along.
 DeformationResult deformSurface(const TetMesh& tets, const acd::TriMesh& surface, const DeformationOptions& options);
+
+/// The faces of `surface` (before or after) in three objects, rest, handle and anchor (empty
+/// ones left out), with their names: to see what was held and what was moved.
+void splitByPart(const acd::TriMesh& surface, const std::vector<int>& facePart, std::vector<acd::TriMesh>& parts,
+                 std::vector<std::string>& names);
 
 /// Summary lines for the command's report (no trailing newline).
 std::vector<std::string> deformationSummary(const DeformationResult& result);
