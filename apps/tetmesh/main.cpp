@@ -137,6 +137,8 @@ json deformationJson(const DeformArgs& d, const DeformationResult& r) {
             {"linear_inverted_tets", a.linearInvertedTets},
             {"inverted_rest_volume", a.invertedRestVolume},
             {"surface_vertices_in_inverted_tets", r.surfaceInInverted},
+            {"surface_vertices_on_handle", r.surfaceOnHandle},
+            {"surface_handle_error", r.surfaceHandleError},
             {"max_constraint_error", a.maxConstraintError},
             {"factor_seconds", a.factorSeconds},
             {"solve_seconds", a.solveSeconds}}},

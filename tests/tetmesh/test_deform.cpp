@@ -262,6 +262,7 @@ TEST(DeformDemo, DefaultsPickTheFarthestAndTheLargestComponentsAndLabelsAreCheck
   ho.tau = 0.05;
   ho.threads = 1;
   ho.tetgen.radiusEdge = 2.0;
+  ho.tetgen.maxVolume = 0.02;  // fine enough that the arms have tets away from the base
   const HullMeshResult mesh = meshHulls(u, ho);
   ASSERT_TRUE(mesh.status.ok()) << mesh.status.message;
   ASSERT_EQ(mesh.decomposition.components.size(), 3u);
@@ -292,6 +293,8 @@ TEST(DeformDemo, DefaultsPickTheFarthestAndTheLargestComponentsAndLabelsAreCheck
   EXPECT_EQ(r.embedding.outside, 0);
   EXPECT_EQ(r.arap.invertedTets, 0);
   EXPECT_EQ(r.surfaceAfter.faces, u.faces);
+  EXPECT_GT(r.surfaceOnHandle, 0);
+  EXPECT_LE(r.surfaceHandleError, 1e-12);
   EXPECT_NEAR(r.translation.norm(), 0.2 * r.halfDiagonal, 1e-12);
   EXPECT_NEAR(r.translation.dot(centroid(r.handle) - centroid(r.anchor)), 0.0, 1e-9);  // across the handle-anchor direction
   // The surface vertices of the handle arm's far end moved with it.
@@ -311,6 +314,32 @@ TEST(DeformDemo, DefaultsPickTheFarthestAndTheLargestComponentsAndLabelsAreCheck
   o = {};
   o.rotate = o.translate = true;
   EXPECT_FALSE(deformSurface(mesh.tetgen.mesh, u, o).status.ok());
+}
+
+TEST(DeformDemo, OneComponentIsSplitAlongItsLongestSide) {
+  // A convex bar is one component: its last fifth along x is moved, its first fifth held.
+  const acd::TriMesh bar = acd::shapes::box(Vec3(0, 0, 0), Vec3(5, 1, 1));
+  HullMeshOptions ho;
+  ho.threads = 1;
+  ho.tetgen.radiusEdge = 2.0;
+  ho.tetgen.maxVolume = 0.05;
+  const HullMeshResult mesh = meshHulls(bar, ho);
+  ASSERT_TRUE(mesh.status.ok()) << mesh.status.message;
+  const DeformationResult r = deformSurface(mesh.tetgen.mesh, bar, {});
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  EXPECT_EQ(r.handle, 0);
+  int expectedHandle = 0, expectedAnchor = 0;
+  for (const Vec3& p : mesh.tetgen.mesh.points) expectedHandle += p.x() >= 4.0 ? 1 : 0, expectedAnchor += p.x() <= 1.0 ? 1 : 0;
+  EXPECT_EQ(r.handleVertices, expectedHandle);
+  EXPECT_EQ(r.anchorVertices, expectedAnchor);
+  for (std::size_t i = 0; i < bar.vertices.size(); ++i) {
+    const Vec3 expected = bar.vertices[i].x() == 5 ? Vec3(bar.vertices[i] + r.translation) : bar.vertices[i];
+    EXPECT_LE((r.surfaceAfter.vertices[i] - expected).norm(), 1e-12) << bar.vertices[i].transpose();
+  }
+  EXPECT_EQ(r.arap.invertedTets, 0);
+  DeformationOptions o;
+  o.handle = 1;
+  EXPECT_NE(deformSurface(mesh.tetgen.mesh, bar, o).status.message.find("one component"), std::string::npos);
 }
 
 TEST(DeformCli, ElephantWritesFourFilesThatParseBack) {

@@ -149,11 +149,12 @@ DeformationResult deformSurface(const TetMesh& tets, const acd::TriMesh& surface
     r.motion = format("translated by (%.4g, %.4g, %.4g)", r.translation.x(), r.translation.y(), r.translation.z()) +
                (options.translate ? "" : format(", 0.2 x half-diagonal %.4g", r.halfDiagonal));
   }
+  auto motion = [&](const Vec3& p) { return options.rotate ? Vec3(r.pivot + rotation * (p - r.pivot)) : Vec3(p + r.translation); };
   std::vector<int> constrained;
   std::vector<Vec3> targets;
   for (int v : handleVertices) {
     constrained.push_back(v);
-    targets.push_back(options.rotate ? Vec3(r.pivot + rotation * (tets.points[v] - r.pivot)) : Vec3(tets.points[v] + r.translation));
+    targets.push_back(motion(tets.points[v]));
   }
   for (int v : anchorVertices) constrained.push_back(v), targets.push_back(tets.points[v]);
 
@@ -188,6 +189,16 @@ DeformationResult deformSurface(const TetMesh& tets, const acd::TriMesh& surface
   for (const acd::Face& f : surface.faces) {
     const int p0 = tetPart[r.embedding.tet[f[0]]];
     r.facePart.push_back(p0 == tetPart[r.embedding.tet[f[1]]] && p0 == tetPart[r.embedding.tet[f[2]]] ? p0 : kRest);
+  }
+  // End to end: a surface vertex in a tet whose corners all belong to the handle must have
+  // followed the handle's rigid motion exactly (up to rounding).
+  for (std::size_t i = 0; i < surface.vertices.size(); ++i) {
+    const auto& v = tets.tets[r.embedding.tet[i]];
+    bool all = true;
+    for (int k : v) all = all && inHandle[k] && !inAnchor[k];
+    if (!all) continue;
+    ++r.surfaceOnHandle;
+    r.surfaceHandleError = std::max(r.surfaceHandleError, (r.surfaceAfter.vertices[i] - motion(surface.vertices[i])).norm());
   }
   for (int t : r.embedding.tet) {
     const auto& v = tets.tets[t];
@@ -240,8 +251,10 @@ std::vector<std::string> deformationSummary(const DeformationResult& r) {
   lines.push_back(format("                 inverted tets %d (linear start %d; %.2g of the volume at rest, %d surface vertices in them)",
                          a.invertedTets, a.linearInvertedTets, a.restVolume > 0 ? a.invertedRestVolume / a.restVolume : 0.0,
                          r.surfaceInInverted));
-  lines.push_back(format("                 constraint error %.3g, %d vertices solved, %d kept at rest (no constraint reaches them)",
-                         a.maxConstraintError, a.freeVertices, a.pinnedVertices));
+  lines.push_back(format("                 constraint error %.3g (surface on the handle: %d vertices, off its motion by %.3g)",
+                         a.maxConstraintError, r.surfaceOnHandle, r.surfaceHandleError));
+  lines.push_back(format("                 %d vertices solved, %d kept at rest (no constraint reaches them)", a.freeVertices,
+                         a.pinnedVertices));
   lines.push_back(format("  volume change  tets %+.2f%% (linear start %+.2f%%), surface %+.2f%% (linear start %+.2f%%)",
                          change(a.volume, a.restVolume), change(a.linearVolume, a.restVolume),
                          change(r.surfaceVolumeAfter, r.surfaceVolumeBefore), change(r.surfaceVolumeLinear, r.surfaceVolumeBefore)));

@@ -54,6 +54,8 @@ struct DeformationResult {
   acd::TriMesh surfaceLinear;           // the same carried by the linear start
   double surfaceVolumeBefore = 0.0, surfaceVolumeAfter = 0.0, surfaceVolumeLinear = 0.0;
   double maxSurfaceDisplacement = 0.0;
+  int surfaceOnHandle = 0;              // surface vertices in tets whose corners all belong to the handle
+  double surfaceHandleError = 0.0;      // their largest distance from the handle's rigid motion
   int surfaceInInverted = 0;            // surface vertices embedded in a tet that inverted
   std::vector<int> facePart;            // per surface face: kRest, kHandle or kAnchor (for pictures)
   double halfDiagonal = 0.0;
