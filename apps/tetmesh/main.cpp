@@ -271,8 +271,15 @@ int run(const Args& a) {
 
   DeformationResult deformed;
   if (!a.deform.dir.empty()) {
-    if (progress) std::fprintf(stderr, "tetmesh: deformation ...\n");
-    if (const int code = runDeformation(a.deform, deformOpts, r.tetgen.mesh, read.mesh, deformed); code != kOk) return code;
+    if (progress) {
+      std::fprintf(stderr, "tetmesh: deformation ...\n");
+      deformOpts.arap.progress = [](int iteration, double energy) {
+        std::fprintf(stderr, "\r  ARAP iteration %d, energy %.6g   ", iteration, energy);
+      };
+    }
+    const int code = runDeformation(a.deform, deformOpts, r.tetgen.mesh, read.mesh, deformed);
+    if (progress) std::fprintf(stderr, "\n");
+    if (code != kOk) return code;
   }
 
   if (!a.out.empty()) {

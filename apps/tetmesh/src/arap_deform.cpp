@@ -231,6 +231,7 @@ ArapResult arapDeform(const TetMesh& mesh, const std::vector<int>& constrained, 
     if (!globalStep(rotations)) return fail(acd::StatusCode::InternalError, "deformation: a solve failed");
     ++r.iterations;
     r.energy.push_back(scale * localStep(mesh, op, x, rotations, tetEnergy, threads));
+    if (options.progress) options.progress(r.iterations, r.energy.back());
     if (previous - r.energy.back() <= options.tolerance * previous) {
       r.converged = true;
       break;

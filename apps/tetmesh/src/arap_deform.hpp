@@ -21,6 +21,7 @@
 
 #include <acd/status.hpp>
 
+#include <functional>
 #include <vector>
 
 namespace tetmesh {
@@ -30,6 +31,7 @@ struct ArapOptions {
   double tolerance = 1e-5;       // stop when an iteration lowers the energy by less than this fraction
   int threads = 0;               // local step threads, 0 = all cores (the result is the same)
   bool linearStart = true;       // start from the linear solve; false: from rest with the constrained vertices moved
+  std::function<void(int iteration, double energy)> progress;  // called after each iteration when set
 };
 
 struct ArapResult {
