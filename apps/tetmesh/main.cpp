@@ -146,6 +146,7 @@ json deformationJson(const DeformArgs& d, const DeformationResult& r) {
           {"tet_volume", {{"rest", a.restVolume}, {"after", a.volume}, {"linear", a.linearVolume}}},
           {"surface_volume", {{"rest", r.surfaceVolumeBefore}, {"after", r.surfaceVolumeAfter}, {"linear", r.surfaceVolumeLinear}}},
           {"max_surface_displacement", r.maxSurfaceDisplacement},
+          {"self_intersections", {{"before", r.selfIntersectionsBefore}, {"after", r.selfIntersectionsAfter}}},
           {"seconds", r.seconds}};
 }
 // ---- end of the deformation demo

@@ -319,7 +319,7 @@ TEST(DeformDemo, DefaultsPickTheFarthestAndTheLargestComponentsAndLabelsAreCheck
 
 TEST(DeformDemo, OneComponentIsSplitAlongItsLongestSide) {
   // A convex bar is one component: its last fifth along x is moved, its first fifth held.
-  const acd::TriMesh bar = acd::shapes::box(Vec3(0, 0, 0), Vec3(5, 1, 1));
+  const acd::TriMesh bar = acd::shapes::voxels({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}});  // 5 x 1 x 1
   HullMeshOptions ho;
   ho.threads = 1;
   ho.tetgen.radiusEdge = 2.0;
@@ -333,11 +333,24 @@ TEST(DeformDemo, OneComponentIsSplitAlongItsLongestSide) {
   for (const Vec3& p : mesh.tetgen.mesh.points) expectedHandle += p.x() >= 4.0 ? 1 : 0, expectedAnchor += p.x() <= 1.0 ? 1 : 0;
   EXPECT_EQ(r.handleVertices, expectedHandle);
   EXPECT_EQ(r.anchorVertices, expectedAnchor);
+  int ends = 0;
   for (std::size_t i = 0; i < bar.vertices.size(); ++i) {
+    if (bar.vertices[i].x() != 0 && bar.vertices[i].x() != 5) continue;  // the ends are corners of the mesh
     const Vec3 expected = bar.vertices[i].x() == 5 ? Vec3(bar.vertices[i] + r.translation) : bar.vertices[i];
     EXPECT_LE((r.surfaceAfter.vertices[i] - expected).norm(), 1e-12) << bar.vertices[i].transpose();
+    ++ends;
   }
+  EXPECT_EQ(ends, 8);
   EXPECT_EQ(r.arap.invertedTets, 0);
+  EXPECT_EQ(r.selfIntersectionsBefore, 0);
+  EXPECT_EQ(r.selfIntersectionsAfter, 0);
+  // Pushed far enough sideways, the far end runs through the held one: a bar bent into a U.
+  DeformationOptions fold;
+  fold.translate = true;
+  fold.move = Vec3(-4.5, 0, 0.5);
+  const DeformationResult folded = deformSurface(mesh.tetgen.mesh, bar, fold);
+  ASSERT_TRUE(folded.status.ok()) << folded.status.message;
+  EXPECT_GT(folded.selfIntersectionsAfter, 0);
   DeformationOptions o;
   o.handle = 1;
   EXPECT_NE(deformSurface(mesh.tetgen.mesh, bar, o).status.message.find("one component"), std::string::npos);

@@ -1,5 +1,7 @@
 #include "deformation_demo.hpp"
 
+#include <acd/diagnosis.hpp>
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -205,6 +207,10 @@ DeformationResult deformSurface(const TetMesh& tets, const acd::TriMesh& surface
     const auto& x = r.arap.positions;
     if ((x[v[1]] - x[v[0]]).cross(x[v[2]] - x[v[0]]).dot(x[v[3]] - x[v[0]]) <= 0) ++r.surfaceInInverted;
   }
+  // Nothing in the energy keeps parts of the surface apart: say whether it now passes through
+  // itself (and whether it did before).
+  r.selfIntersectionsBefore = acd::countSelfIntersections(surface);
+  r.selfIntersectionsAfter = acd::countSelfIntersections(r.surfaceAfter);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }
@@ -258,6 +264,8 @@ std::vector<std::string> deformationSummary(const DeformationResult& r) {
   lines.push_back(format("  volume change  tets %+.2f%% (linear start %+.2f%%), surface %+.2f%% (linear start %+.2f%%)",
                          change(a.volume, a.restVolume), change(a.linearVolume, a.restVolume),
                          change(r.surfaceVolumeAfter, r.surfaceVolumeBefore), change(r.surfaceVolumeLinear, r.surfaceVolumeBefore)));
+  lines.push_back(format("  surface        %d intersecting face pairs after (%d before)", r.selfIntersectionsAfter,
+                         r.selfIntersectionsBefore));
   lines.push_back(format("  time (s)       factor %.3f, iterations %.3f, all %.3f; surface moved up to %.4g", a.factorSeconds,
                          a.solveSeconds, r.seconds, r.maxSurfaceDisplacement));
   return lines;

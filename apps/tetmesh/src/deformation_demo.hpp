@@ -56,6 +56,8 @@ struct DeformationResult {
   double maxSurfaceDisplacement = 0.0;
   int surfaceOnHandle = 0;              // surface vertices in tets whose corners all belong to the handle
   double surfaceHandleError = 0.0;      // their largest distance from the handle's rigid motion
+  int selfIntersectionsBefore = 0;      // face pairs of the surface that cross (exact), as given
+  int selfIntersectionsAfter = 0;       // and after the deformation
   int surfaceInInverted = 0;            // surface vertices embedded in a tet that inverted
   std::vector<int> facePart;            // per surface face: kRest, kHandle or kAnchor (for pictures)
   double halfDiagonal = 0.0;
