@@ -46,6 +46,7 @@ struct DeformArgs {
   std::vector<double> move;     // dx, dy, dz
   double angle = NAN;           // degrees
   int iterations = ArapOptions{}.maxIterations;
+  double minWeight = ArapOptions{}.minWeight;
 };
 
 void addDeformOptions(CLI::App& app, DeformArgs& d) {
@@ -57,6 +58,8 @@ void addDeformOptions(CLI::App& app, DeformArgs& d) {
       ->expected(3)->delimiter(',')->needs(dir);
   app.add_option("--deform-angle", d.angle, "Instead: turn the handle by DEG about an axis through the anchor")->needs(dir);
   app.add_option("--deform-iterations", d.iterations, "Most ARAP iterations")->capture_default_str()->needs(dir);
+  app.add_option("--deform-min-weight", d.minWeight, "Floor on a tet's ARAP weight, fraction of the mean tet volume (0: none)")
+      ->capture_default_str()->needs(dir);
 }
 
 /// Options as given; exit code kBadParameter with a message when they cannot work.
@@ -67,6 +70,7 @@ int deformOptions(const DeformArgs& d, DeformationOptions& o) {
   };
   o.handle = d.handle, o.anchor = d.anchor;
   o.arap.maxIterations = d.iterations;
+  o.arap.minWeight = d.minWeight;
   o.translate = !d.move.empty();
   if (o.translate) o.move = Vec3(d.move[0], d.move[1], d.move[2]);
   o.rotate = !std::isnan(d.angle);
@@ -78,6 +82,7 @@ int deformOptions(const DeformArgs& d, DeformationOptions& o) {
   if ((o.translate && !o.move.allFinite()) || (o.rotate && !std::isfinite(d.angle)))
     return bad("--deform-move and --deform-angle must be finite numbers");
   if (d.iterations < 0) return bad("--deform-iterations must not be negative, got " + std::to_string(d.iterations));
+  if (!(d.minWeight >= 0) || !std::isfinite(d.minWeight)) return bad("--deform-min-weight must be a number >= 0");
   return kOk;
 }
 
@@ -129,6 +134,7 @@ json deformationJson(const DeformArgs& d, const DeformationResult& r) {
             {"seconds", r.embedding.seconds}}},
           {"arap",
            {{"iterations", a.iterations},
+            {"min_weight", d.minWeight},
             {"converged", a.converged},
             {"energy", a.energy},
             {"free_vertices", a.freeVertices},

@@ -41,16 +41,16 @@ int findRoot(std::vector<int>& parent, int v) {
   return v;
 }
 
-/// The per-tet constants: F_t = [x_a x_b x_c x_d] * B_t, and the rest volume.
+/// The per-tet constants: F_t = [x_a x_b x_c x_d] * B_t, and the weight of the tet in E.
 struct TetOperator {
   std::vector<Mat43> b;
-  std::vector<double> volume;  // rest volume; 0 for a degenerate tet, which then carries no energy
+  std::vector<double> weight;  // rest volume, at least the floor; 0 for a degenerate tet (no energy)
 };
 
-TetOperator tetOperators(const TetMesh& mesh) {
+TetOperator tetOperators(const TetMesh& mesh, double minWeight) {
   TetOperator op;
   op.b.resize(mesh.tets.size(), Mat43::Zero());
-  op.volume.resize(mesh.tets.size(), 0.0);
+  op.weight.resize(mesh.tets.size(), 0.0);
   Mat43 e;  // edge vectors from corner a: [x_b - x_a, x_c - x_a, x_d - x_a] = X * e
   e << -1, -1, -1, 1, 0, 0, 0, 1, 0, 0, 0, 1;
   for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
@@ -62,8 +62,14 @@ TetOperator tetOperators(const TetMesh& mesh) {
     const double vol = dm.determinant() / 6.0;
     if (!(vol > 0)) continue;
     op.b[t] = e * dm.inverse();
-    op.volume[t] = vol;
+    op.weight[t] = vol;
   }
+  // Slivers (dihedral angles near 0, common in the unrefined mesh) have almost no volume, hence
+  // almost no stiffness, and invert at no cost; a floor on the weight keeps them in shape.
+  double mean = 0.0;
+  for (double w : op.weight) mean += w / static_cast<double>(op.weight.size());
+  for (double& w : op.weight)
+    if (w > 0) w = std::max(w, minWeight * mean);
   return op;
 }
 
@@ -81,10 +87,10 @@ double localStep(const TetMesh& mesh, const TetOperator& op, const std::vector<V
   const std::size_t n = mesh.tets.size();
   auto work = [&](std::size_t begin, std::size_t end) {
     for (std::size_t t = begin; t < end; ++t) {
-      if (op.volume[t] == 0) continue;
+      if (op.weight[t] == 0) continue;
       const Mat3 f = gradient(mesh, op, x, t);
       rotations[t] = closestRotation(f);
-      tetEnergy[t] = op.volume[t] * (f - rotations[t]).squaredNorm();
+      tetEnergy[t] = op.weight[t] * (f - rotations[t]).squaredNorm();
     }
   };
   const std::size_t chunks = std::min<std::size_t>(std::max(threads, 1), std::max<std::size_t>(n / 256, 1));
@@ -121,8 +127,8 @@ ArapResult arapDeform(const TetMesh& mesh, const std::vector<int>& constrained, 
   };
   if (constrained.size() != targets.size())
     return fail(acd::StatusCode::InvalidParameter, "deformation: one target per constrained vertex is needed");
-  if (options.maxIterations < 0 || !(options.tolerance >= 0))
-    return fail(acd::StatusCode::InvalidParameter, "deformation: iterations and tolerance must not be negative");
+  if (options.maxIterations < 0 || !(options.tolerance >= 0) || !(options.minWeight >= 0) || !std::isfinite(options.minWeight))
+    return fail(acd::StatusCode::InvalidParameter, "deformation: iterations, tolerance and weight floor must not be negative");
 
   // Roles: kFixed vertices keep a given position (constraint, rest); others are solved for.
   constexpr int kFixed = -1;
@@ -159,7 +165,7 @@ ArapResult arapDeform(const TetMesh& mesh, const std::vector<int>& constrained, 
     unknown[v] = r.freeVertices++;
   }
 
-  const TetOperator op = tetOperators(mesh);
+  const TetOperator op = tetOperators(mesh, options.minWeight);
   r.restVolume = meshVolume(mesh, mesh.points);
 
   // Stiffness over the free vertices, and the constant right-hand side from the fixed ones.
@@ -169,8 +175,8 @@ ArapResult arapDeform(const TetMesh& mesh, const std::vector<int>& constrained, 
   entries.reserve(mesh.tets.size() * 16);
   Eigen::MatrixXd fixedRhs = Eigen::MatrixXd::Zero(f, 3);
   for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
-    if (op.volume[t] == 0) continue;
-    const Eigen::Matrix4d k = op.volume[t] * op.b[t] * op.b[t].transpose();
+    if (op.weight[t] == 0) continue;
+    const Eigen::Matrix4d k = op.weight[t] * op.b[t] * op.b[t].transpose();
     for (int i = 0; i < 4; ++i) {
       const int row = unknown[mesh.tets[t][i]];
       if (row == kFixed) continue;
@@ -199,8 +205,8 @@ ArapResult arapDeform(const TetMesh& mesh, const std::vector<int>& constrained, 
     if (f == 0) return true;
     Eigen::MatrixXd rhs = fixedRhs;
     for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
-      if (op.volume[t] == 0) continue;
-      const Eigen::Matrix<double, 3, 4> g = op.volume[t] * rotations[t] * op.b[t].transpose();
+      if (op.weight[t] == 0) continue;
+      const Eigen::Matrix<double, 3, 4> g = op.weight[t] * rotations[t] * op.b[t].transpose();
       for (int i = 0; i < 4; ++i) {
         const int row = unknown[mesh.tets[t][i]];
         if (row != kFixed) rhs.row(row) += g.col(i).transpose();
@@ -220,7 +226,8 @@ ArapResult arapDeform(const TetMesh& mesh, const std::vector<int>& constrained, 
   if (!globalStep(rotations)) return fail(acd::StatusCode::InternalError, "deformation: the linear solve failed");
   r.linearPositions = x;
   if (!options.linearStart) x = restStart;
-  const double scale = r.restVolume > 0 ? 1.0 / r.restVolume : 1.0;
+  const double weights = std::accumulate(op.weight.begin(), op.weight.end(), 0.0);
+  const double scale = weights > 0 ? 1.0 / weights : 1.0;
   r.energy.push_back(scale * localStep(mesh, op, x, rotations, tetEnergy, threads));
   while (r.iterations < options.maxIterations) {
     const double previous = r.energy.back();

@@ -251,7 +251,7 @@ std::vector<std::string> deformationSummary(const DeformationResult& r) {
   lines.push_back(format("  embedding      %zu surface vertices located, %d outside every tet (farthest %.3g), %.3f s",
                          r.embedding.tet.size(), r.embedding.outside, r.embedding.maxOutsideDistance,
                          r.embedding.seconds));
-  lines.push_back(format("  ARAP           %d iterations (%s), energy %.4g -> %.4g (mean ||F - R||^2 over the volume)",
+  lines.push_back(format("  ARAP           %d iterations (%s), energy %.4g -> %.4g (weighted mean ||F - R||^2)",
                          a.iterations, a.converged ? "converged" : "stopped at the limit",
                          a.energy.empty() ? 0.0 : a.energy.front(), a.energy.empty() ? 0.0 : a.energy.back()));
   lines.push_back(format("                 inverted tets %d (linear start %d; %.2g of the volume at rest, %d surface vertices in them)",
