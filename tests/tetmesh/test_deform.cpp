@@ -428,7 +428,7 @@ TEST(DeformCli, ElephantWritesFourFilesThatParseBack) {
   EXPECT_NE(json.find("\"inverted_tets\""), std::string::npos);
 }
 
-TEST(DeformCli, BadDeformOptionsExitThree) {
+TEST(DeformCli, BadDeformOptionsExitThreeAndUnwritableDirFive) {
   acdtest::TempDir dir("tetmesh_deform_bad");
   ASSERT_TRUE(acd::writeMesh(dir / "u.off", acd::shapes::uShape()).ok());
   const std::string base = acdtest::quote(dir / "u.off") + " --tau 0.05 --deform " + acdtest::quote(dir / "out");
@@ -448,6 +448,9 @@ TEST(DeformCli, BadDeformOptionsExitThree) {
   EXPECT_EQ(r.code, 3) << r.err;
   r = acdtest::runTool(TETMESH_CLI, acdtest::quote(dir / "u.off") + " --deform-handle 1", dir);
   EXPECT_NE(r.code, 0) << "--deform-handle without --deform";
+  r = acdtest::runTool(TETMESH_CLI, acdtest::quote(dir / "u.off") + " --tau 0.05 --deform /dev/null/out", dir);
+  EXPECT_EQ(r.code, 5) << r.err;
+  EXPECT_NE(r.err.find("/dev/null/out"), std::string::npos) << r.err;
   // And a good run on the U: the default handle and anchor, counts kept.
   r = acdtest::runTool(TETMESH_CLI, base, dir);
   ASSERT_EQ(r.code, 0) << r.err;

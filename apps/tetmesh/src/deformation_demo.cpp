@@ -82,7 +82,7 @@ DeformationResult deformSurface(const TetMesh& tets, const acd::TriMesh& surface
   if (options.handle != 0 && options.handle == options.anchor)
     return fail("the handle and the anchor are the same component (" + std::to_string(options.handle) + ")");
 
-  // Choose: handle farthest from the centroid, anchor farthest from the handle.
+  // Choose: handle farthest from the centroid, anchor the largest other component.
   const std::size_t components = labels.size();
   const Vec3 centre = all.centroid();
   r.handle = options.handle, r.anchor = options.anchor;
