@@ -310,9 +310,14 @@ int run(const Args& a) {
   std::printf("  decomposition  tau %g, %d components%s, %.3f s\n", a.options.tau, n,
               a.options.merge ? " (with merge pass)" : " (no merge pass)", r.times.decompose);
   if (unresolved > 0) std::printf("  warning        %d components still exceed tau (see acd decompose)\n", unresolved);
-  if (a.options.simplify > 0)
-    std::printf("  hulls          %d vertices, simplified to %d (at most %d each; %d hulls could not get there)\n",
-                hullVerts, simpleVerts, a.options.simplify, r.simplifyMissed);
+  if (r.simplifyFallback)
+    std::printf("  hulls          %d vertices; TetGen refused every complex of the hulls simplified to at most %d\n"
+                "                 vertices, so the exact hulls were meshed\n",
+                hullVerts, a.options.simplify);
+  else if (a.options.simplify > 0)
+    std::printf("  hulls          %d vertices, simplified to %d (at most %d each%s; %d hulls could not get there)\n",
+                hullVerts, simpleVerts, r.simplifyUsed,
+                r.simplifyUsed < a.options.simplify ? ", TetGen refused the larger budgets" : "", r.simplifyMissed);
   else
     std::printf("  hulls          %d vertices\n", hullVerts);
   std::printf("  containment    farthest component vertex outside its hull: %.3g, outside its meshed region: %.3g\n",
@@ -362,6 +367,8 @@ int run(const Args& a) {
               {"tau", a.options.tau},
               {"merge", a.options.merge},
               {"simplify", a.options.simplify},
+              {"simplify_used", r.simplifyUsed},
+              {"simplify_fallback", r.simplifyFallback},
               {"tetgen_switches", r.tetgen.switches},
               {"snap_tolerance", r.toleranceUsed},
               {"refused_complexes", r.refusedComplexes},

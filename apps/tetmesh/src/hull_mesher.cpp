@@ -53,23 +53,55 @@ HullMeshResult meshHulls(const acd::TriMesh& model, const HullMeshOptions& optio
     r.hulls.push_back(std::move(hull));
   }
   r.times.hulls = since(t0);
+  r.simplifyUsed = options.simplify;
 
   // TetGen merges points closer than its own tolerance and then trips over the complex; when it
   // refuses one, the complex is rebuilt with a 10 times larger snapping distance (twice at most).
-  // TetGen merges points closer than its own tolerance and then trips over the complex; when it
-  // refuses one, the complex is rebuilt with a 10 times larger snapping distance (twice at most).
-  for (int attempt = 0; attempt < 3 && !r.tetgen.ok; ++attempt) {
-    const double tolerance = options.tolerance * std::pow(10.0, attempt);
+  auto meshComplex = [&](const std::vector<acd::TriMesh>& hulls) {
+    for (int attempt = 0; attempt < 3 && !r.tetgen.ok; ++attempt) {
+      const double tolerance = options.tolerance * std::pow(10.0, attempt);
+      t0 = std::chrono::steady_clock::now();
+      HullComplexOptions copt;
+      copt.tolerance = tolerance;
+      r.complex = buildHullComplex(hulls, copt);
+      r.times.complex += since(t0);
+      r.toleranceUsed = tolerance;
+      if (!r.complex.status.ok()) continue;
+      r.tetgen = runTetGen(r.complex.plc, options.tetgen);
+      r.times.tetgen += r.tetgen.seconds;
+      if (!r.tetgen.ok) r.refusedComplexes.push_back(r.tetgen.error);
+    }
+  };
+  meshComplex(r.hulls);
+  // A refused complex of simplified hulls is often accepted with a smaller budget (other
+  // corners, other clipping planes); simplifying the simplified hulls further is cheap.
+  for (int budget = options.simplify - 4; !r.tetgen.ok && options.simplify > 0 && budget >= 8 &&
+                                          budget >= options.simplify - 8;
+       budget -= 4) {
+    r.simplifyMissed = 0;
+    r.maxOutside = 0.0;
     t0 = std::chrono::steady_clock::now();
-    HullComplexOptions copt;
-    copt.tolerance = tolerance;
-    r.complex = buildHullComplex(r.hulls, copt);
-    r.times.complex += since(t0);
-    r.toleranceUsed = tolerance;
-    if (!r.complex.status.ok()) continue;
-    r.tetgen = runTetGen(r.complex.plc, options.tetgen);
-    r.times.tetgen += r.tetgen.seconds;
-    if (!r.tetgen.ok) r.refusedComplexes.push_back(r.tetgen.error);
+    for (std::size_t i = 0; i < r.hulls.size(); ++i) {
+      SimplifiedHull s = simplifyHull(r.hulls[i], budget);
+      if (!s.reached) ++r.simplifyMissed;
+      r.hulls[i] = std::move(s.mesh);
+      r.maxOutside = std::max(r.maxOutside, maxOutsideDistance(r.hulls[i], r.decomposition.components[i].mesh.vertices));
+    }
+    r.times.hulls += since(t0);
+    r.simplifyUsed = budget;
+    meshComplex(r.hulls);
+  }
+  // Simplified hulls overlap and are clipped at planes of their own; when TetGen refuses every
+  // such complex, the exact hulls (which only touch along cut planes) are meshed instead.
+  if (!r.tetgen.ok && options.simplify > 0) {
+    r.simplifyFallback = true;
+    r.hulls.clear();
+    r.maxOutside = 0.0;
+    for (const acd::Component& c : r.decomposition.components) {
+      r.hulls.push_back(c.hull.empty() ? acd::hullMesh(c.mesh.vertices) : c.hull);
+      r.maxOutside = std::max(r.maxOutside, maxOutsideDistance(r.hulls.back(), c.mesh.vertices));
+    }
+    meshComplex(r.hulls);
   }
   if (!r.complex.status.ok()) {
     r.status = r.complex.status;

@@ -38,6 +38,8 @@ struct HullMeshResult {
   std::vector<acd::TriMesh> hulls;       // per component, as meshed (simplified if asked)
   std::vector<int> hullVertices;         // per component, before simplification
   int simplifyMissed = 0;                // hulls that could not get down to `simplify` vertices
+  int simplifyUsed = 0;                  // the vertex budget of the meshed hulls (below `simplify` after refusals)
+  bool simplifyFallback = false;         // TetGen refused the simplified hulls: the exact ones were meshed
   double maxOutside = 0.0;               // largest distance of a component vertex outside its hull
   HullComplex complex;
   double maxOutsideRegion = 0.0;               // same, against the meshed region (after clipping)
