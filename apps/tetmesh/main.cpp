@@ -320,6 +320,9 @@ int run(const Args& a) {
                 r.simplifyUsed < a.options.simplify ? ", TetGen refused the larger budgets" : "", r.simplifyMissed);
   else
     std::printf("  hulls          %d vertices\n", hullVerts);
+  if (a.options.simplify > 0 && !r.simplifyFallback)
+    std::printf("  separation     %d planes keep the simplified hulls apart; %d pairs of exact hulls overlap (cut there)\n",
+                r.separatingPlanes, r.overlappingHulls);
   std::printf("  containment    farthest component vertex outside its hull: %.3g, outside its meshed region: %.3g\n",
               r.maxOutside, r.maxOutsideRegion);
   std::printf("  complex        %d touching pairs (%d overlapping, deepest %.3g), %d contact planes, %d interface + %d boundary facets\n",
@@ -368,6 +371,8 @@ int run(const Args& a) {
               {"merge", a.options.merge},
               {"simplify", a.options.simplify},
               {"simplify_used", r.simplifyUsed},
+              {"separating_planes", r.separatingPlanes},
+              {"overlapping_exact_hulls", r.overlappingHulls},
               {"simplify_fallback", r.simplifyFallback},
               {"tetgen_switches", r.tetgen.switches},
               {"snap_tolerance", r.toleranceUsed},
@@ -417,7 +422,7 @@ int main(int argc, char** argv) {
   app.footer(exitCodes());
   app.add_option("MODEL", a.model, "Closed mesh (OFF, OBJ, PLY, STL)")->required();
   app.add_option("-t,--tau", a.options.tau, "Concavity tolerance, normalised units")->capture_default_str();
-  app.add_option("--simplify", a.options.simplify, "Hulls with at most K vertices that still contain their component (K >= 4)");
+  app.add_option("--simplify", a.options.simplify, "Hulls with at most K vertices that still contain their component (K >= 4; 0: exact hulls)");
   app.add_option("--quality", a.options.tetgen.radiusEdge,
                  "TetGen radius-edge bound (q, e.g. 2); 0: no refinement, the coarse constrained Delaunay mesh")
       ->capture_default_str();

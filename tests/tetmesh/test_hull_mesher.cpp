@@ -164,6 +164,12 @@ TEST(HullMesher, SimplifiedHullsMeetTheBudgetAndTheRegionsAreMeshedWatertight) {
   EXPECT_EQ(r.simplifyMissed, 0);
   for (const acd::TriMesh& h : r.hulls) EXPECT_LE(h.vertices.size(), 12u);
   EXPECT_LE(r.maxOutside, 1e-9);  // each simplified hull contains its component
+  EXPECT_FALSE(r.simplifyFallback);
+  EXPECT_EQ(r.simplifyUsed, 12);
+  // The simplified hulls are kept apart at planes between the exact hulls, so nothing is
+  // clipped off and every component lies in the region meshed for it.
+  EXPECT_EQ(r.complex.overlappingPairs, 0);
+  EXPECT_LE(r.maxOutsideRegion, 1e-9);
   EXPECT_NEAR(r.quality.volume, r.hullsVolume, 1e-6 * r.hullsVolume);
   EXPECT_EQ(r.quality.nonPositiveTets, 0);
   expectConforming(r.tetgen.mesh);

@@ -1,6 +1,8 @@
 // The conforming complex of a set of convex hulls; see hull_complex.hpp for the method.
 #include "hull_complex.hpp"
 
+#include "separation.hpp"
+
 #include <acd/hull.hpp>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -29,9 +31,11 @@ using acd::TriMesh;
 /// Points closer than `tol` are one point (first come keeps its position).
 class PointWelder {
  public:
-  explicit PointWelder(double tol) : tol_(tol), cell_(2.0 * tol) {}
+  /// `reach`: the largest tolerance any call of add() will use.
+  PointWelder(double tol, double reach) : tol_(tol), cell_(2.0 * std::max(tol, reach)) {}
 
-  int add(const Vec3& p) {
+  int add(const Vec3& p) { return add(p, tol_); }
+  int add(const Vec3& p, double tol) {
     const std::array<long long, 3> c = cellOf(p);
     for (long long dx = -1; dx <= 1; ++dx)
       for (long long dy = -1; dy <= 1; ++dy)
@@ -39,7 +43,7 @@ class PointWelder {
           auto it = grid_.find(key({c[0] + dx, c[1] + dy, c[2] + dz}));
           if (it == grid_.end()) continue;
           for (int id : it->second)
-            if ((points_[id] - p).norm() <= tol_) return id;
+            if ((points_[id] - p).norm() <= tol) return id;
         }
     const int id = static_cast<int>(points_.size());
     points_.push_back(p);
@@ -48,6 +52,8 @@ class PointWelder {
   }
 
   const std::vector<Vec3>& points() const { return points_; }
+  /// Moves a point (by less than the welding reach, so the grid stays good enough).
+  void move(int id, const Vec3& p) { points_[id] = p; }
 
  private:
   std::array<long long, 3> cellOf(const Vec3& p) const {
@@ -78,89 +84,6 @@ struct SideConstraint {
   int plane = -1;
   double side = 1.0;
 };
-
-std::vector<Vec3> uniqueFacetNormals(const TriMesh& hull) {
-  std::vector<Vec3> out;
-  for (int f = 0; f < static_cast<int>(hull.faces.size()); ++f) {
-    const Vec3 n = acd::faceNormal(hull, f);
-    const double len = n.norm();
-    if (!(len > 0)) continue;
-    const Vec3 u = n / len;
-    bool seen = false;
-    for (const Vec3& o : out)
-      if (o.dot(u) > 1.0 - 1e-12) {
-        seen = true;
-        break;
-      }
-    if (!seen) out.push_back(u);
-  }
-  return out;
-}
-
-double maxAlong(const std::vector<Vec3>& pts, const Vec3& n) {
-  double m = -std::numeric_limits<double>::infinity();
-  for (const Vec3& p : pts) m = std::max(m, n.dot(p));
-  return m;
-}
-double minAlong(const std::vector<Vec3>& pts, const Vec3& n) {
-  double m = std::numeric_limits<double>::infinity();
-  for (const Vec3& p : pts) m = std::min(m, n.dot(p));
-  return m;
-}
-
-/// Least-squares plane through points; normal oriented like `hint`.
-bool fitPlane(const std::vector<Vec3>& pts, const Vec3& hint, Vec3& normal) {
-  if (pts.size() < 3) return false;
-  Vec3 mean = Vec3::Zero();
-  for (const Vec3& p : pts) mean += p;
-  mean /= static_cast<double>(pts.size());
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (const Vec3& p : pts) cov += (p - mean) * (p - mean).transpose();
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
-  if (es.info() != Eigen::Success) return false;
-  // A plane needs two clear directions of spread.
-  if (!(es.eigenvalues()(1) > 1e-12 * es.eigenvalues()(2))) return false;
-  normal = es.eigenvectors().col(0).normalized();
-  if (normal.dot(hint) < 0) normal = -normal;
-  return true;
-}
-
-/// Where two convex point sets are farthest apart along a facet normal of either: `gap` > 0 is
-/// a clearance, < 0 the depth of the overlap. For touching sets the plane is refitted to the
-/// points of both near it (their shared cut section). The plane lies halfway between them.
-struct Contact {
-  double gap = std::numeric_limits<double>::infinity();
-  Vec3 normal = Vec3::UnitZ();  // from the first set toward the second
-  double offset = 0.0;
-};
-
-Contact findContact(const std::vector<Vec3>& vi, const std::vector<Vec3>& vj, const std::vector<Vec3>& ni,
-                    const std::vector<Vec3>& nj, double tol) {
-  Contact ct;
-  ct.gap = -std::numeric_limits<double>::infinity();
-  auto consider = [&](const Vec3& nrm) {
-    const double gap = minAlong(vj, nrm) - maxAlong(vi, nrm);
-    if (gap > ct.gap) ct.gap = gap, ct.normal = nrm;
-  };
-  for (const Vec3& nrm : ni) consider(nrm);
-  for (const Vec3& nrm : nj) consider(-nrm);
-  if (ct.gap >= -tol && ct.gap <= tol) {
-    const double hi = maxAlong(vi, ct.normal), lo = minAlong(vj, ct.normal);
-    const double band = 1e3 * tol;
-    std::vector<Vec3> near;
-    for (const Vec3& p : vi)
-      if (std::abs(ct.normal.dot(p) - hi) <= band) near.push_back(p);
-    for (const Vec3& p : vj)
-      if (std::abs(ct.normal.dot(p) - lo) <= band) near.push_back(p);
-    Vec3 fitted = ct.normal;
-    if (fitPlane(near, ct.normal, fitted)) {
-      const double gap = minAlong(vj, fitted) - maxAlong(vi, fitted);
-      if (gap >= ct.gap) ct.gap = gap, ct.normal = fitted;
-    }
-  }
-  ct.offset = 0.5 * (maxAlong(vi, ct.normal) + minAlong(vj, ct.normal));
-  return ct;
-}
 
 /// Closest point to p on the intersection of the given planes (1 to 3 of them, independent).
 Vec3 projectOnto(const Vec3& p, const std::vector<const ContactPlane*>& planes) {
@@ -313,6 +236,51 @@ void resolveTJunctions(Plc& plc, double tol) {
   plc.facets = std::move(kept);
 }
 
+/// Splits every facet with more than three corners into triangles (constrained Delaunay in its
+/// plane), dropping the slivers that collinear corners make. Polygons here are triangles or
+/// faces with points inserted on their edges; TetGen 1.5 inserts such a point into its own
+/// triangulation of the facet, and when rounding puts it a hair outside, its segment
+/// recovery walks off the facet and aborts (`sscoutsegment`). Triangles avoid that.
+void splitIntoTriangles(Plc& plc) {
+  std::vector<Plc::Facet> out;
+  for (const Plc::Facet& f : plc.facets) {
+    const int m = static_cast<int>(f.polygon.size());
+    if (m <= 3) {
+      out.push_back(f);
+      continue;
+    }
+    Vec3 normal = Vec3::Zero();
+    for (int k = 0; k < m; ++k) normal += plc.points[f.polygon[k]].cross(plc.points[f.polygon[(k + 1) % m]]);
+    ContactPlane plane{normal.normalized(), 0.0};
+    plane.c = plane.n.dot(plc.points[f.polygon[0]]);
+    const PlaneFrame frame(plane);
+    Cdt cdt;
+    std::vector<Cdt::Vertex_handle> vh;
+    for (int id : f.polygon) {
+      Cdt::Vertex_handle h = cdt.insert(frame.to2(plc.points[id]));
+      if (h->info().id < 0) h->info().id = id;
+      vh.push_back(h);
+    }
+    for (int k = 0; k < m; ++k)
+      if (vh[k] != vh[(k + 1) % m]) cdt.insert_constraint(vh[k], vh[(k + 1) % m]);
+    double longest = 0;
+    for (int k = 0; k < m; ++k)
+      longest = std::max(longest, (plc.points[f.polygon[k]] - plc.points[f.polygon[(k + 1) % m]]).norm());
+    for (auto t = cdt.finite_faces_begin(); t != cdt.finite_faces_end(); ++t) {
+      const int a = t->vertex(0)->info().id, b = t->vertex(1)->info().id, c = t->vertex(2)->info().id;
+      if (a < 0 || b < 0 || c < 0 || a == b || b == c || a == c) continue;
+      const Vec3 area = (plc.points[b] - plc.points[a]).cross(plc.points[c] - plc.points[a]);
+      if (!(area.norm() > 1e-9 * longest * longest)) continue;  // collinear corners
+      // Keep the triangle's orientation that of the polygon.
+      if (area.dot(normal) > 0)
+        out.push_back({{a, b, c}, f.marker});
+      else
+        out.push_back({{a, c, b}, f.marker});
+    }
+  }
+  plc.facets = std::move(out);
+}
+
 }  // namespace
 
 HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComplexOptions& options) {
@@ -360,13 +328,22 @@ HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComple
         out.maxOverlapDepth = std::max(out.maxOverlapDepth, depth);
       }
       ContactPlane pl{best, ct.offset};
-      // The same plane as an earlier contact (possibly facing the other way)?
+      // The same plane as an earlier contact (possibly facing the other way)? Judged by the
+      // points in contact, not by the normals: a normal from a thin hull facet is inaccurate,
+      // and a plane found twice would be overlaid twice (overlapping facets).
+      std::vector<Vec3> touching;
+      for (const Vec3& p : hulls[i].vertices)
+        if (std::abs(pl.distance(p)) <= 2 * tol) touching.push_back(p);
+      for (const Vec3& p : hulls[j].vertices)
+        if (std::abs(pl.distance(p)) <= 2 * tol) touching.push_back(p);
       int id = -1;
       double sideI = 1.0;
       for (int k = 0; k < static_cast<int>(planes.size()) && id < 0; ++k) {
         const double dot = planes[k].n.dot(pl.n);
-        if (dot > 1.0 - 1e-12 && std::abs(planes[k].c - pl.c) <= 10 * tol) id = k, sideI = 1.0;
-        if (dot < -1.0 + 1e-12 && std::abs(planes[k].c + pl.c) <= 10 * tol) id = k, sideI = -1.0;
+        if (std::abs(dot) < 1.0 - 1e-6) continue;
+        bool same = !touching.empty();
+        for (const Vec3& p : touching) same = same && std::abs(planes[k].distance(p)) <= 10 * tol;
+        if (same) id = k, sideI = dot > 0 ? 1.0 : -1.0;
       }
       if (id < 0) {
         id = static_cast<int>(planes.size());
@@ -416,7 +393,10 @@ HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComple
 
   // Global points and region triangles in global numbering.
   // Points on more contact planes are welded first, so that they are the ones kept.
-  PointWelder welder(tol);
+  // On contact planes, points closer than `feature` are one: the overlay would otherwise make
+  // edges of that length, and TetGen's segment recovery fails near them.
+  const double feature = std::max(tol, options.feature * scale);
+  PointWelder welder(tol, feature);
   std::vector<std::vector<Face>> regionTris(n);
   std::vector<std::vector<int>> regionIds(n);
   {
@@ -434,7 +414,8 @@ HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComple
       }
     }
     std::stable_sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) { return a.planes > b.planes; });
-    for (const Entry& e : entries) regionIds[e.region][e.vertex] = welder.add(out.regions[e.region].vertices[e.vertex]);
+    for (const Entry& e : entries)
+      regionIds[e.region][e.vertex] = welder.add(out.regions[e.region].vertices[e.vertex], e.planes > 0 ? feature : tol);
   }
   for (int i = 0; i < n; ++i)
     for (const Face& f : out.regions[i].faces) {
@@ -500,6 +481,18 @@ HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComple
     for (const auto& e : items[k].edges) pts.insert(e.first), pts.insert(e.second);
     items[k].points.assign(pts.begin(), pts.end());
   }
+
+  // A point of a plane nearly on an edge of it (closer than `feature`) is put onto the edge:
+  // it then splits that edge exactly instead of leaving a sliver next to it.
+  for (int k = 0; k < np; ++k)
+    for (int w : items[k].points)
+      for (const auto& [a, b] : items[k].edges) {
+        if (w == a || w == b) continue;
+        double t = 0;
+        const Vec3 &pa = welder.points()[a], &pb = welder.points()[b];
+        const double d = segmentDistance(welder.points()[w], pa, pb, t);
+        if (d > tol && d <= feature && t > 0 && t < 1) welder.move(w, pa + t * (pb - pa));
+      }
 
   // 3. Overlay each plane until no plane adds a point to an edge another plane uses.
   std::map<std::uint64_t, std::set<int>> splits;  // edge -> points strictly inside it
@@ -610,6 +603,7 @@ HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComple
   // Only numerically collinear points here: anything coarser was welded above, and dropping a
   // facet thinner than tol could open a hole where two such facets share their long edge.
   resolveTJunctions(plc, std::min(tol, 1e-10 * scale));
+  splitIntoTriangles(plc);
   for (const Plc::Facet& f : plc.facets) (f.marker == kInterfaceFacet ? out.interfaceFacets : out.boundaryFacets)++;
 
   // One seed per region: the mean of its vertices, strictly inside a convex solid.

@@ -41,29 +41,26 @@ HullMeshResult meshHulls(const acd::TriMesh& model, const HullMeshOptions& optio
   for (const acd::Component& c : r.decomposition.components) r.modelVolume += acd::signedVolume(c.mesh);
 
   t0 = std::chrono::steady_clock::now();
+  std::vector<acd::TriMesh> exact;
   for (const acd::Component& c : r.decomposition.components) {
-    acd::TriMesh hull = c.hull.empty() ? acd::hullMesh(c.mesh.vertices) : c.hull;
-    r.hullVertices.push_back(static_cast<int>(hull.vertices.size()));
-    if (options.simplify > 0) {
-      SimplifiedHull s = simplifyHull(hull, options.simplify);
-      if (!s.reached) ++r.simplifyMissed;
-      hull = std::move(s.mesh);
-    }
-    r.maxOutside = std::max(r.maxOutside, maxOutsideDistance(hull, c.mesh.vertices));
-    r.hulls.push_back(std::move(hull));
+    exact.push_back(c.hull.empty() ? acd::hullMesh(c.mesh.vertices) : c.hull);
+    r.hullVertices.push_back(static_cast<int>(exact.back().vertices.size()));
   }
   r.times.hulls = since(t0);
-  r.simplifyUsed = options.simplify;
 
   // TetGen merges points closer than its own tolerance and then trips over the complex; when it
   // refuses one, the complex is rebuilt with a 10 times larger snapping distance (twice at most).
-  auto meshComplex = [&](const std::vector<acd::TriMesh>& hulls) {
+  auto meshComplex = [&](std::vector<acd::TriMesh> hulls) {
+    r.hulls = std::move(hulls);
+    r.maxOutside = 0.0;
+    for (std::size_t i = 0; i < r.hulls.size(); ++i)
+      r.maxOutside = std::max(r.maxOutside, maxOutsideDistance(r.hulls[i], r.decomposition.components[i].mesh.vertices));
     for (int attempt = 0; attempt < 3 && !r.tetgen.ok; ++attempt) {
       const double tolerance = options.tolerance * std::pow(10.0, attempt);
       t0 = std::chrono::steady_clock::now();
       HullComplexOptions copt;
       copt.tolerance = tolerance;
-      r.complex = buildHullComplex(hulls, copt);
+      r.complex = buildHullComplex(r.hulls, copt);
       r.times.complex += since(t0);
       r.toleranceUsed = tolerance;
       if (!r.complex.status.ok()) continue;
@@ -72,36 +69,26 @@ HullMeshResult meshHulls(const acd::TriMesh& model, const HullMeshOptions& optio
       if (!r.tetgen.ok) r.refusedComplexes.push_back(r.tetgen.error);
     }
   };
-  meshComplex(r.hulls);
-  // A refused complex of simplified hulls is often accepted with a smaller budget (other
-  // corners, other clipping planes); simplifying the simplified hulls further is cheap.
-  for (int budget = options.simplify - 4; !r.tetgen.ok && options.simplify > 0 && budget >= 8 &&
-                                          budget >= options.simplify - 8;
+  // Simplified hulls: when TetGen refuses every complex, smaller budgets give other regions, and
+  // one of them is often accepted; the exact hulls come last.
+  const int lowestBudget = std::min(options.simplify, std::max(8, options.simplify - 8));
+  for (int budget = options.simplify; options.simplify > 0 && !r.tetgen.ok && budget >= lowestBudget;
        budget -= 4) {
-    r.simplifyMissed = 0;
-    r.maxOutside = 0.0;
     t0 = std::chrono::steady_clock::now();
-    for (std::size_t i = 0; i < r.hulls.size(); ++i) {
-      SimplifiedHull s = simplifyHull(r.hulls[i], budget);
-      if (!s.reached) ++r.simplifyMissed;
-      r.hulls[i] = std::move(s.mesh);
-      r.maxOutside = std::max(r.maxOutside, maxOutsideDistance(r.hulls[i], r.decomposition.components[i].mesh.vertices));
-    }
+    HullSimplifyOptions sopt;
+    sopt.maxVertices = budget;
+    const SimplifiedHulls simplified = simplifyHulls(exact, sopt);
     r.times.hulls += since(t0);
     r.simplifyUsed = budget;
-    meshComplex(r.hulls);
+    r.simplifyMissed = 0;
+    for (bool reached : simplified.reached) r.simplifyMissed += reached ? 0 : 1;
+    r.separatingPlanes = simplified.separatingPlanes;
+    r.overlappingHulls = simplified.overlappingHulls;
+    meshComplex(simplified.regions);
   }
-  // Simplified hulls overlap and are clipped at planes of their own; when TetGen refuses every
-  // such complex, the exact hulls (which only touch along cut planes) are meshed instead.
-  if (!r.tetgen.ok && options.simplify > 0) {
-    r.simplifyFallback = true;
-    r.hulls.clear();
-    r.maxOutside = 0.0;
-    for (const acd::Component& c : r.decomposition.components) {
-      r.hulls.push_back(c.hull.empty() ? acd::hullMesh(c.mesh.vertices) : c.hull);
-      r.maxOutside = std::max(r.maxOutside, maxOutsideDistance(r.hulls.back(), c.mesh.vertices));
-    }
-    meshComplex(r.hulls);
+  if (!r.tetgen.ok) {
+    r.simplifyFallback = options.simplify > 0;
+    meshComplex(exact);
   }
   if (!r.complex.status.ok()) {
     r.status = r.complex.status;

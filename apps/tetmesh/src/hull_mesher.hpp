@@ -39,6 +39,8 @@ struct HullMeshResult {
   std::vector<int> hullVertices;         // per component, before simplification
   int simplifyMissed = 0;                // hulls that could not get down to `simplify` vertices
   int simplifyUsed = 0;                  // the vertex budget of the meshed hulls (below `simplify` after refusals)
+  int separatingPlanes = 0;              // planes keeping the simplified hulls apart
+  int overlappingHulls = 0;              // pairs of exact hulls that overlap (a plane cuts them)
   bool simplifyFallback = false;         // TetGen refused the simplified hulls: the exact ones were meshed
   double maxOutside = 0.0;               // largest distance of a component vertex outside its hull
   HullComplex complex;

@@ -1,82 +1,196 @@
-// Progressive-hull simplification; see hull_simplify.hpp.
+// Simplified hull regions by supporting planes; see hull_simplify.hpp.
 #include "hull_simplify.hpp"
 
-#include <acd/hull.hpp>
-
-#include <Eigen/Dense>
+#include "convex_polytope.hpp"
+#include "separation.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <set>
-#include <vector>
+#include <utility>
 
 namespace tetmesh {
 
 namespace {
 
-using acd::Face;
 using acd::TriMesh;
-using acd::Vec3;
 
-struct FacePlane {
-  Vec3 n;        // unit, outward
-  double d;      // n . x = d
-  double area;
-};
-
-struct Collapse {
-  int a = -1, b = -1;
-  Vec3 p = Vec3::Zero();
-  double cost = std::numeric_limits<double>::infinity();
-};
-
-/// Best replacement point for edge ab: a corner of the region outside all star planes that
-/// minimises the added volume sum(area * (n . p - d)).
-Collapse bestCollapse(int a, int b, const std::vector<FacePlane>& planes, const std::vector<int>& star,
-                      const TriMesh& mesh, double reach) {
-  Collapse best;
-  best.a = a, best.b = b;
-  // Distinct planes of the star (a hull face split in triangles gives the same plane several times).
-  std::vector<int> uniq;
-  for (int f : star) {
-    bool dup = false;
-    for (int g : uniq)
-      if (planes[g].n.dot(planes[f].n) > 1.0 - 1e-12 && std::abs(planes[g].d - planes[f].d) < 1e-12 * reach) {
-        dup = true;
+/// Directions to try: the hull's facet normals (one per degree or so) and the 26 directions of
+/// a cube's faces, edges and corners, which fit any blob tolerably.
+std::vector<Vec3> candidateDirections(const std::vector<Vec3>& facetNormals) {
+  std::vector<Vec3> dirs;
+  for (int x = -1; x <= 1; ++x)
+    for (int y = -1; y <= 1; ++y)
+      for (int z = -1; z <= 1; ++z)
+        if (x || y || z) dirs.push_back(Vec3(x, y, z).normalized());
+  const double sameDirection = std::cos(M_PI / 180.0);
+  for (const Vec3& u : facetNormals) {
+    bool seen = false;
+    for (const Vec3& d : dirs)
+      if (d.dot(u) > sameDirection) {
+        seen = true;
         break;
       }
-    if (!dup) uniq.push_back(f);
+    if (!seen) dirs.push_back(u);
   }
-  Vec3 w = Vec3::Zero();
-  double w0 = 0.0;
-  for (int f : star) w += planes[f].area * planes[f].n, w0 += planes[f].area * planes[f].d;
-  const Vec3 mid = 0.5 * (mesh.vertices[a] + mesh.vertices[b]);
-  const int m = static_cast<int>(uniq.size());
-  for (int i = 0; i < m; ++i)
-    for (int j = i + 1; j < m; ++j)
-      for (int k = j + 1; k < m; ++k) {
-        Eigen::Matrix3d A;
-        A.row(0) = planes[uniq[i]].n.transpose();
-        A.row(1) = planes[uniq[j]].n.transpose();
-        A.row(2) = planes[uniq[k]].n.transpose();
-        if (std::abs(A.determinant()) < 1e-9) continue;
-        const Vec3 p = A.partialPivLu().solve(Vec3(planes[uniq[i]].d, planes[uniq[j]].d, planes[uniq[k]].d));
-        if (!p.allFinite() || (p - mid).norm() > reach) continue;
-        bool feasible = true;
-        for (int f : uniq)
-          if (planes[f].n.dot(p) < planes[f].d - 1e-12 * reach) {
-            feasible = false;
-            break;
-          }
-        if (!feasible) continue;
-        const double cost = w.dot(p) - w0;
-        if (cost < best.cost) best.cost = cost, best.p = p;
+  return dirs;
+}
+
+struct RegionSetup {
+  const TriMesh* hull = nullptr;
+  std::vector<HalfSpace> candidates;  // supporting half-spaces of the hull
+  std::vector<HalfSpace> keep;        // planes to the neighbours, oriented to keep this side
+  double margin = 0.0;                // supporting planes are pushed out by this much
+};
+
+/// Greedy cutting of the hull's box (see the header). `reached`: at most K corners.
+ConvexPolytope buildRegion(const RegionSetup& s, int maxCorners, double eps, double minEdge, bool& reached) {
+  const acd::Box3 box = acd::boundingBox(*s.hull);
+  const Vec3 pad = Vec3::Constant(s.margin);
+  ConvexPolytope region = ConvexPolytope::box(box.lo - pad, box.hi + pad, eps);
+  for (const HalfSpace& h : s.keep)
+    if (region.cutBy(h)) region = region.clipped(h);
+  reached = false;
+  if (region.empty()) return region;
+  const double enough = 1e-4 * acd::signedVolume(*s.hull);  // smaller gains are not worth a corner
+  const std::size_t nc = s.candidates.size();
+  std::vector<double> bound(nc, std::numeric_limits<double>::infinity());
+  std::vector<std::size_t> order(nc);
+  double volume = region.volume();
+  for (;;) {
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return bound[a] > bound[b]; });
+    const double shortest = std::min(minEdge, region.shortestEdge());
+    double bestGain = enough;
+    std::size_t best = nc;
+    ConvexPolytope bestRegion;
+    for (std::size_t c : order) {
+      if (bound[c] <= bestGain) break;  // no later candidate can beat the best one
+      const HalfSpace& h = s.candidates[c];
+      if (!region.cutBy(h)) {
+        bound[c] = 0.0;
+        continue;
       }
-  return best;
+      ConvexPolytope cut = region.clipped(h);
+      const double gain = volume - cut.volume();
+      bound[c] = gain;
+      if (gain <= bestGain || cut.empty()) continue;
+      if (static_cast<int>(cut.corners().size()) > maxCorners || cut.shortestEdge() < shortest) continue;
+      bestGain = gain, best = c, bestRegion = std::move(cut);
+    }
+    if (best == nc) break;
+    region = std::move(bestRegion);
+    volume = region.volume();
+    bound[best] = 0.0;
+  }
+  reached = static_cast<int>(region.corners().size()) <= maxCorners;
+  return region;
+}
+
+/// Separating-axis gap between two regions over their face normals (< 0: they overlap).
+double regionGap(const ConvexPolytope& a, const ConvexPolytope& b) {
+  const std::vector<Vec3> ca = a.corners(), cb = b.corners();
+  double gap = -std::numeric_limits<double>::infinity();
+  for (const ConvexPolytope::Face& f : a.faces()) gap = std::max(gap, minAlong(cb, f.normal) - maxAlong(ca, f.normal));
+  for (const ConvexPolytope::Face& f : b.faces()) gap = std::max(gap, minAlong(ca, f.normal) - maxAlong(cb, f.normal));
+  return gap;
+}
+
+bool boxesMeet(const acd::Box3& a, const acd::Box3& b, double tol) {
+  return !((a.lo.array() - tol > b.hi.array()).any() || (b.lo.array() - tol > a.hi.array()).any());
+}
+
+acd::Box3 boxOf(const std::vector<Vec3>& pts) {
+  acd::Box3 b;
+  b.lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+  b.hi = -b.lo;
+  for (const Vec3& p : pts) b.lo = b.lo.cwiseMin(p), b.hi = b.hi.cwiseMax(p);
+  return b;
 }
 
 }  // namespace
+
+SimplifiedHulls simplifyHulls(const std::vector<TriMesh>& hulls, const HullSimplifyOptions& options) {
+  SimplifiedHulls out;
+  const int n = static_cast<int>(hulls.size());
+  if (n == 0) return out;
+  std::vector<acd::Box3> boxes(n);
+  acd::Box3 all = acd::boundingBox(hulls[0]);
+  for (int i = 0; i < n; ++i) {
+    boxes[i] = acd::boundingBox(hulls[i]);
+    all.lo = all.lo.cwiseMin(boxes[i].lo), all.hi = all.hi.cwiseMax(boxes[i].hi);
+  }
+  const double scale = 0.5 * all.size().norm();
+  const double tol = options.tolerance * scale, minEdge = options.minEdge * scale, margin = options.margin * scale;
+
+  std::vector<std::vector<Vec3>> normals(n);
+  std::vector<RegionSetup> setup(n);
+  for (int i = 0; i < n; ++i) {
+    normals[i] = uniqueFacetNormals(hulls[i]);
+    setup[i].hull = &hulls[i];
+    // Neighbours share the vertices of their cut section, so their supporting planes often pass
+    // through the same point; pushed out by different margins, their faces stay apart instead
+    // of nearly coinciding (near-coincident faces make slivers and trip TetGen).
+    setup[i].margin = margin * (1.0 + std::fmod(0.6180339887 * (i + 1), 1.0));
+    for (const Vec3& u : candidateDirections(normals[i]))
+      setup[i].candidates.push_back({u, maxAlong(hulls[i].vertices, u) + setup[i].margin});
+  }
+
+  // Planes between pairs, shared when they agree (the two sides of one cut lie on one plane).
+  std::vector<HalfSpace> planes;
+  std::set<std::pair<int, int>> separated;
+  auto separate = [&](int i, int j, const Contact& ct) {
+    if (!separated.insert({i, j}).second) return;
+    if (ct.gap < -tol) ++out.overlappingHulls;
+    HalfSpace h{ct.normal, ct.offset};
+    bool shared = false;
+    for (const HalfSpace& p : planes) {
+      const double dot = p.n.dot(h.n);
+      if (dot > 1.0 - 1e-9 && std::abs(p.c - h.c) <= tol) h = p, shared = true;
+      if (dot < -1.0 + 1e-9 && std::abs(p.c + h.c) <= tol) h = {-p.n, -p.c}, shared = true;
+      if (shared) break;
+    }
+    if (!shared) planes.push_back(h);
+    setup[i].keep.push_back(h);
+    setup[j].keep.push_back({-h.n, -h.c});
+  };
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j) {
+      if (!boxesMeet(boxes[i], boxes[j], tol)) continue;
+      const Contact ct = findContact(hulls[i].vertices, hulls[j].vertices, normals[i], normals[j], tol);
+      if (ct.gap <= tol) separate(i, j, ct);  // touching or overlapping hulls
+    }
+
+  std::vector<ConvexPolytope> regions(n);
+  out.reached.assign(n, false);
+  std::vector<bool> dirty(n, true);
+  for (out.rounds = 1; out.rounds <= 10; ++out.rounds) {
+    for (int i = 0; i < n; ++i) {
+      if (!dirty[i]) continue;
+      bool reached = false;
+      regions[i] = buildRegion(setup[i], options.maxVertices, tol, minEdge, reached);
+      out.reached[i] = reached;
+    }
+    std::fill(dirty.begin(), dirty.end(), false);
+    std::vector<acd::Box3> rboxes(n);
+    for (int i = 0; i < n; ++i) rboxes[i] = boxOf(regions[i].corners());
+    bool any = false;
+    for (int i = 0; i < n; ++i)
+      for (int j = i + 1; j < n; ++j) {
+        if (separated.count({i, j}) || !boxesMeet(rboxes[i], rboxes[j], -tol)) continue;
+        if (regionGap(regions[i], regions[j]) >= -tol) continue;
+        separate(i, j, findContact(hulls[i].vertices, hulls[j].vertices, normals[i], normals[j], tol));
+        dirty[i] = dirty[j] = any = true;
+      }
+    if (!any) break;
+  }
+  out.separatingPlanes = static_cast<int>(planes.size());
+  out.separatedPairs = static_cast<int>(separated.size());
+  for (const ConvexPolytope& r : regions) out.regions.push_back(r.mesh());
+  return out;
+}
 
 double maxOutsideDistance(const TriMesh& convex, const std::vector<Vec3>& points) {
   // Sliver faces (nearly coplanar corners) have no reliable normal in floating point; their
@@ -93,90 +207,6 @@ double maxOutsideDistance(const TriMesh& convex, const std::vector<Vec3>& points
     for (const Vec3& p : points) worst = std::max(worst, u.dot(p) - d);
   }
   return worst;
-}
-
-SimplifiedHull simplifyHull(const TriMesh& hull, int maxVertices) {
-  SimplifiedHull out;
-  out.mesh = hull;
-  maxVertices = std::max(maxVertices, 4);
-  const acd::Box3 box = acd::boundingBox(hull);
-  const double reach = 4.0 * box.size().norm();  // how far a new corner may go
-  const double eps = 1e-10 * reach;
-  while (static_cast<int>(out.mesh.vertices.size()) > maxVertices) {
-    const TriMesh& cur = out.mesh;
-    const int nv = static_cast<int>(cur.vertices.size());
-    std::vector<FacePlane> planes(cur.faces.size());
-    std::vector<std::vector<int>> facesOf(nv);
-    std::vector<std::set<int>> neighbours(nv);
-    for (int f = 0; f < static_cast<int>(cur.faces.size()); ++f) {
-      const Vec3 nrm = acd::faceNormal(cur, f);
-      const double len = nrm.norm();
-      planes[f] = {len > 0 ? Vec3(nrm / len) : Vec3::Zero(), len > 0 ? nrm.dot(cur.vertices[cur.faces[f][0]]) / len : 0.0,
-                   0.5 * len};
-      for (int k = 0; k < 3; ++k) {
-        facesOf[cur.faces[f][k]].push_back(f);
-        neighbours[cur.faces[f][k]].insert(cur.faces[f][(k + 1) % 3]);
-      }
-    }
-    std::vector<Collapse> candidates;
-    for (int a = 0; a < nv; ++a)
-      for (int b : neighbours[a]) {
-        if (b < a) continue;
-        std::vector<int> star = facesOf[a];
-        for (int f : facesOf[b])
-          if (std::find(star.begin(), star.end(), f) == star.end()) star.push_back(f);
-        Collapse c = bestCollapse(a, b, planes, star, cur, reach);
-        if (std::isfinite(c.cost)) candidates.push_back(c);
-      }
-    std::sort(candidates.begin(), candidates.end(), [](const Collapse& x, const Collapse& y) {
-      return x.cost != y.cost ? x.cost < y.cost : std::make_pair(x.a, x.b) < std::make_pair(y.a, y.b);
-    });
-    // Collapse a batch of edges whose neighbourhoods do not touch, then check containment;
-    // if the batch fails, fall back to the single cheapest collapse that passes.
-    const int excess = nv - maxVertices;
-    const int batchLimit = std::max(1, std::min(excess, nv / 10));
-    auto attempt = [&](const std::vector<const Collapse*>& batch, TriMesh& result) {
-      std::vector<bool> drop(nv, false);
-      std::vector<Vec3> pts;
-      for (const Collapse* c : batch) drop[c->a] = drop[c->b] = true, pts.push_back(c->p);
-      for (int v = 0; v < nv; ++v)
-        if (!drop[v]) pts.push_back(cur.vertices[v]);
-      const acd::ConvexHull h = acd::convexHull(pts);
-      if (h.degenerate || static_cast<int>(h.mesh.vertices.size()) >= nv) return false;
-      if (maxOutsideDistance(h.mesh, cur.vertices) > eps) return false;
-      result = h.mesh;
-      return true;
-    };
-    std::vector<const Collapse*> batch;
-    std::vector<bool> used(nv, false);
-    for (const Collapse& c : candidates) {
-      if (static_cast<int>(batch.size()) >= batchLimit) break;
-      bool clash = used[c.a] || used[c.b];
-      for (int v : neighbours[c.a]) clash = clash || used[v];
-      for (int v : neighbours[c.b]) clash = clash || used[v];
-      if (clash) continue;
-      batch.push_back(&c);
-      used[c.a] = used[c.b] = true;
-      for (int v : neighbours[c.a]) used[v] = true;
-      for (int v : neighbours[c.b]) used[v] = true;
-    }
-    TriMesh next;
-    bool done = batch.size() > 1 && attempt(batch, next);
-    if (done) {
-      out.collapses += static_cast<int>(batch.size());
-    } else {
-      const std::size_t tries = std::min<std::size_t>(candidates.size(), 32);
-      for (std::size_t t = 0; t < tries && !done; ++t)
-        if (attempt({&candidates[t]}, next)) {
-          done = true;
-          ++out.collapses;
-        }
-    }
-    if (!done) break;
-    out.mesh = std::move(next);
-  }
-  out.reached = static_cast<int>(out.mesh.vertices.size()) <= maxVertices;
-  return out;
 }
 
 }  // namespace tetmesh

@@ -1,25 +1,49 @@
-// Convex hulls with at most K vertices that still contain the original hull.
+// Simplified hull regions: for each component, a convex polytope with at most K corners that
+// contains the component's convex hull, and that overlaps no other component's region.
 //
-// Greedy edge collapse after Sander et al., "Silhouette clipping" (progressive hulls): an edge
-// ab of the current hull is replaced by one point p that lies on or outside every face plane
-// around a and b, chosen among the corners of that region to add the least volume (the sum
-// of face area times the distance p moves beyond the face). The collapse is kept only if the
-// new hull contains every vertex of the current one (checked against each new face plane),
-// so by induction the result contains the input hull and hence the component.
+// How. A supporting plane of a hull (any direction u, offset max of u . x over the hull) keeps
+// the whole hull on its inner side, so every intersection of supporting half-spaces contains
+// the hull. Each region starts as the hull's bounding box, is cut by the planes it must keep
+// (below), and is then cut greedily by the supporting plane, among the hull's facet directions
+// and 26 fixed directions, that removes the most volume while the region keeps at most K
+// corners and no edge shorter than a minimum length (short edges make poor tetrahedra). The
+// volume a plane removes can only shrink as the region shrinks, so stale values bound fresh
+// ones from above and most candidates are never re-evaluated (lazy greedy).
+//
+// Regions grow beyond their hulls and would overlap. Two components whose hulls touch (the two
+// sides of a cut) or whose regions overlap get a plane between their exact hulls (the
+// separating-axis test over facet normals; for touching hulls, the cut plane refitted to the
+// shared section). Both regions keep their side of it, and since the plane separates the
+// hulls, each region still contains its hull. Planes that agree within the tolerance are one,
+// so the two sides of a cut lie on the same plane. Regions are rebuilt until none overlaps.
+// Only when two exact hulls overlap (merged components, self-intersecting input) does a plane
+// cut a hull; the pairs are counted.
 #pragma once
 
 #include <acd/mesh.hpp>
 
+#include <vector>
+
 namespace tetmesh {
 
-struct SimplifiedHull {
-  acd::TriMesh mesh;     // convex, outward; the input hull when nothing could be collapsed
-  bool reached = false;  // at most `maxVertices` vertices
-  int collapses = 0;
+struct HullSimplifyOptions {
+  int maxVertices = 24;       // K >= 4
+  double tolerance = 1e-8;    // relative to the half-diagonal of all hulls: on a plane, touching
+  double minEdge = 2e-3;      // relative to the half-diagonal: no region edge shorter
+  double margin = 1e-3;       // relative to the half-diagonal: supporting planes pushed out by 1-2x this
 };
 
-/// `maxVertices` >= 4. The hull must be a closed convex triangle mesh.
-SimplifiedHull simplifyHull(const acd::TriMesh& hull, int maxVertices);
+struct SimplifiedHulls {
+  std::vector<acd::TriMesh> regions;  // convex, closed, outward; one per hull
+  std::vector<bool> reached;          // at most K corners
+  int separatingPlanes = 0;           // distinct planes between pairs of regions
+  int separatedPairs = 0;
+  int overlappingHulls = 0;           // pairs of exact hulls that overlap (cut at a plane)
+  int rounds = 0;                     // rebuild rounds until no regions overlapped
+};
+
+/// Each hull must be a closed convex triangle mesh with volume.
+SimplifiedHulls simplifyHulls(const std::vector<acd::TriMesh>& hulls, const HullSimplifyOptions& options);
 
 /// Largest distance by which any point lies outside a face plane of the convex mesh (0 if inside all).
 double maxOutsideDistance(const acd::TriMesh& convex, const std::vector<acd::Vec3>& points);

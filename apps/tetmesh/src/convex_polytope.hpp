@@ -1,0 +1,51 @@
+// A convex polytope kept as its faces (convex polygons on known planes), so that cutting it by
+// one more half-space, counting its corners and measuring its volume are cheap. The bounded
+// hull regions of tetmesh are built by cutting a box down with supporting planes.
+#pragma once
+
+#include <acd/mesh.hpp>
+
+#include <vector>
+
+namespace tetmesh {
+
+using acd::Vec3;
+
+/// The half-space n . x <= c (|n| = 1).
+struct HalfSpace {
+  Vec3 n = Vec3::UnitZ();
+  double c = 0.0;
+  double distance(const Vec3& p) const { return n.dot(p) - c; }
+};
+
+class ConvexPolytope {
+ public:
+  struct Face {
+    std::vector<Vec3> corners;  // counter-clockwise seen from outside
+    Vec3 normal;                // outward, unit: the normal of the half-space that made it
+  };
+
+  /// The axis-aligned box [lo, hi]; `eps` is the distance below which points count as on a plane.
+  static ConvexPolytope box(const Vec3& lo, const Vec3& hi, double eps);
+
+  /// Whether some corner lies farther than eps beyond the half-space's plane.
+  bool cutBy(const HalfSpace& h) const;
+  /// The part inside the half-space (corners within eps of the plane are kept as they are).
+  ConvexPolytope clipped(const HalfSpace& h) const;
+
+  bool empty() const { return faces_.size() < 4; }
+  double volume() const;
+  /// Distinct corners (corners of different faces closer than eps are one).
+  std::vector<Vec3> corners() const;
+  /// Shortest edge over all faces.
+  double shortestEdge() const;
+  const std::vector<Face>& faces() const { return faces_; }
+  /// Triangulated, outward; empty when no volume is left.
+  acd::TriMesh mesh() const;
+
+ private:
+  std::vector<Face> faces_;
+  double eps_ = 0.0;
+};
+
+}  // namespace tetmesh
