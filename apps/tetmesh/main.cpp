@@ -422,7 +422,10 @@ int main(int argc, char** argv) {
   app.footer(exitCodes());
   app.add_option("MODEL", a.model, "Closed mesh (OFF, OBJ, PLY, STL)")->required();
   app.add_option("-t,--tau", a.options.tau, "Concavity tolerance, normalised units")->capture_default_str();
-  app.add_option("--simplify", a.options.simplify, "Hulls with at most K vertices that still contain their component (K >= 4; 0: exact hulls)");
+  a.options.simplify = 24;  // the paper's coarse mesh; the exact hulls keep every vertex of the cut sections
+  app.add_option("--simplify", a.options.simplify,
+                 "Hulls with at most K vertices that still contain their component (K >= 4; 0: the exact hulls)")
+      ->capture_default_str();
   app.add_option("--quality", a.options.tetgen.radiusEdge,
                  "TetGen radius-edge bound (q, e.g. 2); 0: no refinement, the coarse constrained Delaunay mesh")
       ->capture_default_str();

@@ -68,10 +68,14 @@ TEST(HullSimplify, TwoHalvesOfABarShareTheCutPlaneAndDoNotOverlap) {
   for (const Vec3& p : s.regions[1].vertices) EXPECT_GE(p.x(), 1.0 - 1e-12);
   EXPECT_LE(maxOutsideDistance(s.regions[0], left.vertices), 1e-12);
   EXPECT_LE(maxOutsideDistance(s.regions[1], right.vertices), 1e-12);
-  // Boxes are their own simplest hulls: only the margin that keeps faces of neighbours from
-  // nearly coinciding (1-2 x 1e-3 of the half-diagonal, 1.3 here) is added.
-  EXPECT_GE(acd::signedVolume(s.regions[0]), 1.0);
-  EXPECT_LT(acd::signedVolume(s.regions[0]), 1.03);
+  // Boxes are within the budget: they are their own regions.
+  EXPECT_NEAR(acd::signedVolume(s.regions[0]), 1.0, 1e-12);
+  EXPECT_NEAR(acd::signedVolume(s.regions[1]), 1.5 * 0.7 * 1.2, 1e-12);
+  // With a budget of 6 they are not, and grow (by a margin at least) but stay on their side.
+  const SimplifiedHulls six = simplify({left, right}, 6);
+  EXPECT_GT(acd::signedVolume(six.regions[0]), 1.0);
+  for (const Vec3& p : six.regions[0].vertices) EXPECT_LE(p.x(), 1.0 + 1e-12);
+  for (const Vec3& p : six.regions[1].vertices) EXPECT_GE(p.x(), 1.0 - 1e-12);
 }
 
 TEST(HullSimplify, DecomposedTorusRegionsContainTheirPiecesAndNeverOverlap) {

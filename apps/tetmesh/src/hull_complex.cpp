@@ -31,11 +31,9 @@ using acd::TriMesh;
 /// Points closer than `tol` are one point (first come keeps its position).
 class PointWelder {
  public:
-  /// `reach`: the largest tolerance any call of add() will use.
-  PointWelder(double tol, double reach) : tol_(tol), cell_(2.0 * std::max(tol, reach)) {}
+  explicit PointWelder(double tol) : tol_(tol), cell_(2.0 * tol) {}
 
-  int add(const Vec3& p) { return add(p, tol_); }
-  int add(const Vec3& p, double tol) {
+  int add(const Vec3& p) {
     const std::array<long long, 3> c = cellOf(p);
     for (long long dx = -1; dx <= 1; ++dx)
       for (long long dy = -1; dy <= 1; ++dy)
@@ -43,7 +41,7 @@ class PointWelder {
           auto it = grid_.find(key({c[0] + dx, c[1] + dy, c[2] + dz}));
           if (it == grid_.end()) continue;
           for (int id : it->second)
-            if ((points_[id] - p).norm() <= tol) return id;
+            if ((points_[id] - p).norm() <= tol_) return id;
         }
     const int id = static_cast<int>(points_.size());
     points_.push_back(p);
@@ -52,8 +50,6 @@ class PointWelder {
   }
 
   const std::vector<Vec3>& points() const { return points_; }
-  /// Moves a point (by less than the welding reach, so the grid stays good enough).
-  void move(int id, const Vec3& p) { points_[id] = p; }
 
  private:
   std::array<long long, 3> cellOf(const Vec3& p) const {
@@ -393,10 +389,7 @@ HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComple
 
   // Global points and region triangles in global numbering.
   // Points on more contact planes are welded first, so that they are the ones kept.
-  // On contact planes, points closer than `feature` are one: the overlay would otherwise make
-  // edges of that length, and TetGen's segment recovery fails near them.
-  const double feature = std::max(tol, options.feature * scale);
-  PointWelder welder(tol, feature);
+  PointWelder welder(tol);
   std::vector<std::vector<Face>> regionTris(n);
   std::vector<std::vector<int>> regionIds(n);
   {
@@ -414,8 +407,7 @@ HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComple
       }
     }
     std::stable_sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) { return a.planes > b.planes; });
-    for (const Entry& e : entries)
-      regionIds[e.region][e.vertex] = welder.add(out.regions[e.region].vertices[e.vertex], e.planes > 0 ? feature : tol);
+    for (const Entry& e : entries) regionIds[e.region][e.vertex] = welder.add(out.regions[e.region].vertices[e.vertex]);
   }
   for (int i = 0; i < n; ++i)
     for (const Face& f : out.regions[i].faces) {
@@ -429,12 +421,26 @@ HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComple
   const int np = static_cast<int>(planes.size());
   std::vector<std::vector<std::vector<Face>>> planeTris(np, std::vector<std::vector<Face>>(n));
   std::vector<std::vector<Face>> freeTris(n);
+  // The planes each region touches: its own contacts first, then any other contact plane it
+  // reaches (a face on a plane of other regions' contact must go through that overlay too, or
+  // it would be a second facet over the overlay's triangles).
+  std::vector<std::vector<int>> touching(n);
+  for (int i = 0; i < n; ++i) {
+    for (const SideConstraint& s : constraints[i]) touching[i].push_back(s.plane);
+    for (int k = 0; k < static_cast<int>(planes.size()); ++k) {
+      if (std::find(touching[i].begin(), touching[i].end(), k) != touching[i].end()) continue;
+      bool reaches = false;
+      for (const Face& f : regionTris[i])
+        for (int v : f) reaches = reaches || onPlane(v, k);
+      if (reaches) touching[i].push_back(k);
+    }
+  }
   for (int i = 0; i < n; ++i)
     for (const Face& f : regionTris[i]) {
       int on = -1;
-      for (const SideConstraint& s : constraints[i])
-        if (onPlane(f[0], s.plane) && onPlane(f[1], s.plane) && onPlane(f[2], s.plane)) {
-          on = s.plane;
+      for (int k : touching[i])
+        if (onPlane(f[0], k) && onPlane(f[1], k) && onPlane(f[2], k)) {
+          on = k;
           break;
         }
       if (on >= 0)
@@ -454,9 +460,7 @@ HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComple
     std::set<int> pts;
     std::set<std::uint64_t> seenEdges;
     for (int i = 0; i < n; ++i) {
-      bool touches = false;
-      for (const SideConstraint& s : constraints[i]) touches = touches || s.plane == k;
-      if (!touches) continue;
+      if (std::find(touching[i].begin(), touching[i].end(), k) == touching[i].end()) continue;
       std::map<std::uint64_t, std::pair<int, int>> count;  // edge -> (uses, first a)
       std::map<std::uint64_t, std::pair<int, int>> ends;
       for (const Face& f : planeTris[k][i])
@@ -482,26 +486,17 @@ HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComple
     items[k].points.assign(pts.begin(), pts.end());
   }
 
-  // A point of a plane nearly on an edge of it (closer than `feature`) is put onto the edge:
-  // it then splits that edge exactly instead of leaving a sliver next to it.
-  for (int k = 0; k < np; ++k)
-    for (int w : items[k].points)
-      for (const auto& [a, b] : items[k].edges) {
-        if (w == a || w == b) continue;
-        double t = 0;
-        const Vec3 &pa = welder.points()[a], &pb = welder.points()[b];
-        const double d = segmentDistance(welder.points()[w], pa, pb, t);
-        if (d > tol && d <= feature && t > 0 && t < 1) welder.move(w, pa + t * (pb - pa));
-      }
-
   // 3. Overlay each plane until no plane adds a point to an edge another plane uses.
   std::map<std::uint64_t, std::set<int>> splits;  // edge -> points strictly inside it
   std::vector<Plc::Facet> overlayFacets;
   bool changed = true;
-  for (int pass = 0; pass < 6 && changed; ++pass) {
+  for (int pass = 0; pass < 20 && changed; ++pass) {
     changed = false;
     ++out.overlayPasses;
     overlayFacets.clear();
+    // A thin triangle along the line where two contact planes meet lies on both, and both
+    // overlays make it: it is one facet (an interface if either says so).
+    std::map<std::array<int, 3>, std::size_t> emitted;
     for (int k = 0; k < np; ++k) {
       if (items[k].edges.empty()) continue;
       const PlaneFrame frame(planes[k]);
@@ -568,7 +563,15 @@ HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComple
               break;
             }
         if (covered == 0) continue;
-        overlayFacets.push_back({{a, b, c}, covered >= 2 ? kInterfaceFacet : kBoundaryFacet});
+        std::array<int, 3> key{a, b, c};
+        std::sort(key.begin(), key.end());
+        const int marker = covered >= 2 ? kInterfaceFacet : kBoundaryFacet;
+        auto [it, fresh] = emitted.emplace(key, overlayFacets.size());
+        if (!fresh) {
+          overlayFacets[it->second].marker = std::max(overlayFacets[it->second].marker, marker);
+          continue;
+        }
+        overlayFacets.push_back({{a, b, c}, marker});
       }
     }
   }

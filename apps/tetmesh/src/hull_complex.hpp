@@ -30,7 +30,6 @@ namespace tetmesh {
 
 struct HullComplexOptions {
   double tolerance = 1e-8;  // snapping distance, relative to the half-diagonal of all hulls' box
-  double feature = 1e-5;    // on contact planes, shorter features are closed up (relative, as above)
 };
 
 struct HullComplex {

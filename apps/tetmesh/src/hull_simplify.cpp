@@ -42,12 +42,25 @@ struct RegionSetup {
   const TriMesh* hull = nullptr;
   std::vector<HalfSpace> candidates;  // supporting half-spaces of the hull
   std::vector<HalfSpace> keep;        // planes to the neighbours, oriented to keep this side
+  std::vector<Vec3> facetNormals;     // the hull's own
   double margin = 0.0;                // supporting planes are pushed out by this much
 };
 
 /// Greedy cutting of the hull's box (see the header). `reached`: at most K corners.
 ConvexPolytope buildRegion(const RegionSetup& s, int maxCorners, double eps, double minEdge, bool& reached) {
   const acd::Box3 box = acd::boundingBox(*s.hull);
+  // A hull within the budget is its own region: its facet planes, unpadded.
+  if (static_cast<int>(s.hull->vertices.size()) <= maxCorners) {
+    ConvexPolytope region = ConvexPolytope::box(box.lo, box.hi, eps);
+    for (const Vec3& u : s.facetNormals) {
+      const HalfSpace h{u, maxAlong(s.hull->vertices, u)};
+      if (region.cutBy(h)) region = region.clipped(h);
+    }
+    for (const HalfSpace& h : s.keep)
+      if (region.cutBy(h)) region = region.clipped(h);
+    reached = static_cast<int>(region.corners().size()) <= maxCorners;
+    return region;
+  }
   const Vec3 pad = Vec3::Constant(s.margin);
   ConvexPolytope region = ConvexPolytope::box(box.lo - pad, box.hi + pad, eps);
   for (const HalfSpace& h : s.keep)
@@ -130,6 +143,7 @@ SimplifiedHulls simplifyHulls(const std::vector<TriMesh>& hulls, const HullSimpl
   for (int i = 0; i < n; ++i) {
     normals[i] = uniqueFacetNormals(hulls[i]);
     setup[i].hull = &hulls[i];
+    setup[i].facetNormals = normals[i];
     // Neighbours share the vertices of their cut section, so their supporting planes often pass
     // through the same point; pushed out by different margins, their faces stay apart instead
     // of nearly coinciding (near-coincident faces make slivers and trip TetGen).
@@ -145,11 +159,16 @@ SimplifiedHulls simplifyHulls(const std::vector<TriMesh>& hulls, const HullSimpl
     if (!separated.insert({i, j}).second) return;
     if (ct.gap < -tol) ++out.overlappingHulls;
     HalfSpace h{ct.normal, ct.offset};
+    // Any offset between the two hulls separates them. An earlier plane of the same direction
+    // whose offset lies in that gap is reused: two parallel planes a hair apart would leave a
+    // sliver of a gap between regions.
+    const double lo = std::min(ct.offset, maxAlong(hulls[i].vertices, h.n)) - tol;
+    const double hi = std::max(ct.offset, minAlong(hulls[j].vertices, h.n)) + tol;
     bool shared = false;
     for (const HalfSpace& p : planes) {
       const double dot = p.n.dot(h.n);
-      if (dot > 1.0 - 1e-9 && std::abs(p.c - h.c) <= tol) h = p, shared = true;
-      if (dot < -1.0 + 1e-9 && std::abs(p.c + h.c) <= tol) h = {-p.n, -p.c}, shared = true;
+      if (dot > 1.0 - 1e-9 && p.c >= lo && p.c <= hi) h = p, shared = true;
+      if (dot < -1.0 + 1e-9 && -p.c >= lo && -p.c <= hi) h = {-p.n, -p.c}, shared = true;
       if (shared) break;
     }
     if (!shared) planes.push_back(h);
