@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <set>
 
 using namespace tetmesh;
@@ -98,6 +100,21 @@ TEST(HullComplex, FourBoxesMeetingAtAnEdgeConform) {
   EXPECT_NEAR(v[5], 1.25 * 0.75 * 0.5, 1e-12);
   // Interfaces: four unit squares between the cubes, plus the slab's bottom 1.25 x 0.75.
   EXPECT_NEAR(interfaceArea(m), 4.0 + 1.25 * 0.75, 1e-12);
+  // TetGen gets triangles only (it aborts on some polygons with points inserted on their
+  // edges), each once, none degenerate; the points the T-junctions add are corners of them.
+  std::set<std::array<int, 3>> seen;
+  for (const Plc::Facet& f : c.plc.facets) {
+    ASSERT_EQ(f.polygon.size(), 3u);
+    std::array<int, 3> key{f.polygon[0], f.polygon[1], f.polygon[2]};
+    const Vec3 area = (c.plc.points[key[1]] - c.plc.points[key[0]]).cross(c.plc.points[key[2]] - c.plc.points[key[0]]);
+    EXPECT_GT(area.norm(), 1e-9);
+    std::sort(key.begin(), key.end());
+    EXPECT_TRUE(seen.insert(key).second) << "facet given twice";
+  }
+  std::set<std::array<double, 3>> corners;
+  for (const acd::TriMesh& h : hulls)
+    for (const Vec3& p : h.vertices) corners.insert({p.x(), p.y(), p.z()});
+  EXPECT_GT(c.plc.points.size(), corners.size());  // the overlay added points, and they are used
 }
 
 TEST(HullComplex, RefusesAFlatHull) {
