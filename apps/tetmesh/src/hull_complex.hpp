@@ -9,14 +9,16 @@
 //     a decomposition without the merge pass touch only along their cut planes (each lies on
 //     one side of every plane that cut its ancestors), so the planes found are the cut planes,
 //     refitted to the vertices near them. Contact planes within the tolerance are one plane.
-//  2. Overlaps. Hulls that overlap (simplified hulls, or hulls of merged components) are both
-//     clipped by that plane, each keeping its own side: the overlap is split at the plane of
-//     least penetration. Vertices within the tolerance of a contact plane are projected onto
+//  2. Overlaps. Hulls that overlap (hulls of merged components, of self-intersecting input) are
+//     both clipped by that plane, each keeping its own side: the overlap is split at the plane
+//     of least penetration. (Simplified hulls arrive apart; see hull_simplify.hpp.) Vertices within the tolerance of a contact plane are projected onto
 //     it (onto the line or point where two or three of them meet).
 //  3. Interfaces. On each contact plane, the faces, edges and vertices the regions have there
 //     are overlaid in a constrained Delaunay triangulation; each of its triangles covered by a
 //     region becomes a facet, an interface when covered from both sides. Points the overlay
 //     adds on an edge are added to every other facet with that edge (no T-junctions).
+//  4. Triangles. Facets with points on their edges are split into triangles: TetGen 1.5
+//     aborts on some such polygons (its own facet triangulation loses the segment).
 #pragma once
 
 #include "tet_mesh.hpp"
