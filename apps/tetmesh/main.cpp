@@ -164,6 +164,7 @@ struct Args {
   std::string format;
   std::string json;
   std::string poly;
+  std::string regions;
   bool compare = false;
   bool quiet = false;
   DeformArgs deform;
@@ -257,6 +258,19 @@ int run(const Args& a) {
   // Written even when TetGen fails on it: that is when it is most useful.
   if (!a.poly.empty() && !r.complex.plc.facets.empty()) {
     const acd::Status s = writePoly(a.poly, r.complex.plc);
+    if (!s.ok()) {
+      std::fprintf(stderr, "tetmesh: %s\n", s.message.c_str());
+      return kOutputFailed;
+    }
+  }
+  // The regions as meshed, one OBJ object per component: a picture before the numbers.
+  if (!a.regions.empty() && !r.complex.regions.empty()) {
+    std::vector<acd::TriMesh> meshes;
+    std::vector<std::string> names;
+    for (std::size_t i = 0; i < r.complex.regions.size(); ++i)
+      if (!r.complex.regions[i].empty())
+        meshes.push_back(r.complex.regions[i]), names.push_back("component_" + std::to_string(i + 1));
+    const acd::Status s = acd::writeObjObjects(a.regions, meshes, names);
     if (!s.ok()) {
       std::fprintf(stderr, "tetmesh: %s\n", s.message.c_str());
       return kOutputFailed;
@@ -442,6 +456,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--json", a.json, "Write the report as JSON to this file");
   app.add_option("--poly", a.poly, "Write the hull complex given to TetGen as a .poly file");
+  app.add_option("--regions", a.regions, "Write the meshed hull regions as an OBJ, one object per component");
   app.add_flag("-q,--quiet", a.quiet, "No progress on stderr");
   addDeformOptions(app, a.deform);
   try {

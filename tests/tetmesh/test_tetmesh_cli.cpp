@@ -20,6 +20,13 @@ TEST(TetmeshCli, BoxToEveryFormat) {
   EXPECT_NE(r.out.find("+0.00%"), std::string::npos) << r.out;
   EXPECT_NE(acdtest::slurp(dir / "box.vtk").find("UNSTRUCTURED_GRID"), std::string::npos);
   EXPECT_NE(acdtest::slurp(dir / "report.json").find("\"hull_mesh\""), std::string::npos);
+  // The regions as an OBJ: one object, the box itself (within the vertex budget).
+  r = runTool(TETMESH_CLI, acdtest::quote(dir / "box.off") + " --regions " + acdtest::quote(dir / "regions.obj"), dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const acd::ObjObjects regions = acd::readObjObjects(dir / "regions.obj");
+  ASSERT_TRUE(regions.status.ok()) << regions.status.message;
+  ASSERT_EQ(regions.objects.size(), 1u);
+  EXPECT_NEAR(acd::signedVolume(regions.objects[0]), 6.0, 1e-12);
   r = runTool(TETMESH_CLI, acdtest::quote(dir / "box.off") + " -o " + acdtest::quote(dir / "box.mesh"), dir);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(acdtest::slurp(dir / "box.mesh").find("Tetrahedra"), std::string::npos);
