@@ -262,7 +262,23 @@ void splitIntoTriangles(Plc& plc) {
     double longest = 0;
     for (int k = 0; k < m; ++k)
       longest = std::max(longest, (plc.points[f.polygon[k]] - plc.points[f.polygon[(k + 1) % m]]).norm());
-    for (auto t = cdt.finite_faces_begin(); t != cdt.finite_faces_end(); ++t) {
+    // Inside the polygon: faces reached from outside across an odd number of its edges (the
+    // triangulation covers the convex hull of the corners, more than a non-convex polygon).
+    std::set<Cdt::Face_handle> inside, outside{cdt.infinite_face()};
+    std::vector<std::pair<Cdt::Face_handle, bool>> stack{{cdt.infinite_face(), false}};
+    while (!stack.empty()) {
+      const auto [fh, in] = stack.back();
+      stack.pop_back();
+      for (int e = 0; e < 3; ++e) {
+        const Cdt::Face_handle next = fh->neighbor(e);
+        const bool nextIn = cdt.is_constrained({fh, e}) ? !in : in;
+        if (inside.count(next) || outside.count(next)) continue;
+        (nextIn ? inside : outside).insert(next);
+        stack.push_back({next, nextIn});
+      }
+    }
+    for (auto t = cdt.finite_faces_begin(); t != cdt.finite_faces_end(); ++t) {  // in a fixed order
+      if (!inside.count(t)) continue;
       const int a = t->vertex(0)->info().id, b = t->vertex(1)->info().id, c = t->vertex(2)->info().id;
       if (a < 0 || b < 0 || c < 0 || a == b || b == c || a == c) continue;
       const Vec3 area = (plc.points[b] - plc.points[a]).cross(plc.points[c] - plc.points[a]);
