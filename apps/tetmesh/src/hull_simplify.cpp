@@ -102,9 +102,9 @@ ConvexPolytope buildRegion(const RegionSetup& s, int maxCorners, double eps, dou
   return region;
 }
 
-/// Separating-axis gap between two regions over their face normals (< 0: they overlap).
-double regionGap(const ConvexPolytope& a, const ConvexPolytope& b) {
-  const std::vector<Vec3> ca = a.corners(), cb = b.corners();
+/// Separating-axis gap between two regions (with their corners) over their face normals (< 0: they overlap).
+double regionGap(const ConvexPolytope& a, const std::vector<Vec3>& ca, const ConvexPolytope& b,
+                 const std::vector<Vec3>& cb) {
   double gap = -std::numeric_limits<double>::infinity();
   for (const ConvexPolytope::Face& f : a.faces()) gap = std::max(gap, minAlong(cb, f.normal) - maxAlong(ca, f.normal));
   for (const ConvexPolytope::Face& f : b.faces()) gap = std::max(gap, minAlong(ca, f.normal) - maxAlong(cb, f.normal));
@@ -193,13 +193,14 @@ SimplifiedHulls simplifyHulls(const std::vector<TriMesh>& hulls, const HullSimpl
       out.reached[i] = reached;
     }
     std::fill(dirty.begin(), dirty.end(), false);
+    std::vector<std::vector<Vec3>> corners(n);
     std::vector<acd::Box3> rboxes(n);
-    for (int i = 0; i < n; ++i) rboxes[i] = boxOf(regions[i].corners());
+    for (int i = 0; i < n; ++i) corners[i] = regions[i].corners(), rboxes[i] = boxOf(corners[i]);
     bool any = false;
     for (int i = 0; i < n; ++i)
       for (int j = i + 1; j < n; ++j) {
         if (separated.count({i, j}) || !boxesMeet(rboxes[i], rboxes[j], -tol)) continue;
-        if (regionGap(regions[i], regions[j]) >= -tol) continue;
+        if (regionGap(regions[i], corners[i], regions[j], corners[j]) >= -tol) continue;
         separate(i, j, findContact(hulls[i].vertices, hulls[j].vertices, normals[i], normals[j], tol));
         dirty[i] = dirty[j] = any = true;
       }
