@@ -1,0 +1,121 @@
+#!/usr/bin/python3
+"""Tests of the benchmark helpers bench/compare_peers.py and bench/invariance.py (run by ctest)."""
+import importlib.util
+import math
+import os
+import tempfile
+import unittest
+
+BENCH = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "bench")
+
+
+def load(name):
+    spec = importlib.util.spec_from_file_location(name, os.path.join(BENCH, name + ".py"))
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+cp = load("compare_peers")
+inv = load("invariance")
+
+
+def run(parts, excess, iou=0.9, tau=0.05, rc=0):
+    return {"parts": parts, "excess": excess, "iou": iou, "tau": tau, "rc": rc}
+
+
+class Interpolation(unittest.TestCase):
+    def test_log_linear_between_bracketing_runs(self):
+        # parts = 100 * exp(-20 * excess) exactly: the interpolation must give it back.
+        runs = [run(100 * math.exp(-20 * e), e) for e in (0.02, 0.05, 0.1)]
+        v, note, br = cp.parts_at(runs, "excess", 0.07)
+        self.assertEqual(note, "")
+        self.assertAlmostEqual(v, 100 * math.exp(-1.4), places=9)
+        self.assertEqual([r["excess"] for r in br], [0.1, 0.05])
+
+    def test_run_worse_than_a_coarser_one_is_ignored(self):
+        # 30 parts sticks out further than 20 parts: the bracket is 20 -> 40, not 30 -> 40.
+        runs = [run(10, 0.10), run(20, 0.06), run(30, 0.08), run(40, 0.03)]
+        v, note, br = cp.parts_at(runs, "excess", 0.05)
+        self.assertEqual([r["parts"] for r in br], [20, 40])
+        self.assertAlmostEqual(v, math.exp(math.log(20) + (1 / 3) * math.log(2)), places=9)
+
+    def test_iou_higher_is_better(self):
+        runs = [run(10, 0, iou=0.8), run(20, 0, iou=0.9), run(40, 0, iou=0.95)]
+        v, note, _ = cp.parts_at(runs, "iou", 0.9)
+        self.assertEqual(note, "")
+        self.assertAlmostEqual(v, 20, places=9)
+
+    def test_bounds_when_not_bracketed(self):
+        runs = [run(10, 0.05), run(20, 0.03)]
+        self.assertEqual(cp.parts_at(runs, "excess", 0.06)[:2], (10, "<="))
+        self.assertEqual(cp.parts_at(runs, "excess", 0.01)[:2], (20, ">"))
+
+
+class Motions(unittest.TestCase):
+    def test_random_rotations_are_proper_and_invertible(self):
+        for seed in range(1, 9):
+            R, t = inv.motion("random:%d" % seed, 3.0)
+            for i in range(3):
+                for j in range(3):
+                    dot = sum(R[i][k] * R[j][k] for k in range(3))
+                    self.assertAlmostEqual(dot, 1.0 if i == j else 0.0, places=12)
+            det = (R[0][0] * (R[1][1] * R[2][2] - R[1][2] * R[2][1]) - R[0][1] * (R[1][0] * R[2][2] - R[1][2] * R[2][0])
+                   + R[0][2] * (R[1][0] * R[2][1] - R[1][1] * R[2][0]))
+            self.assertAlmostEqual(det, 1.0, places=12)
+            p = (0.3, -1.7, 2.25)
+            back = inv.unapply(R, t, inv.apply(R, t, p))
+            self.assertLess(math.dist(back, p), 1e-12)
+
+    def test_seeded_motions_repeat(self):
+        self.assertEqual(inv.motion("random:3", 1.0), inv.motion("random:3", 1.0))
+        self.assertNotEqual(inv.motion("random:3", 1.0), inv.motion("random:4", 1.0))
+
+    def test_turn_is_exact_and_keeps_colours_and_faces(self):
+        with tempfile.TemporaryDirectory() as d:
+            src, dst = os.path.join(d, "a.off"), os.path.join(d, "b.off")
+            open(src, "w").write("COFF\n# comment\n3 1 0\n0.1 -0.2 0.3 1 2 3 255\n1e-5 7 -0 4 5 6 255\n"
+                                 "2 3 4 7 8 9 255\n3 0 1 2\n")
+            inv.move(src, dst, "turn")
+            _, _, verts, fidx = inv.read_off(dst)
+            self.assertEqual(verts, [(0.2, 0.1, 0.3), (-7.0, 1e-5, -0.0), (-3.0, 2.0, 4.0)])
+            lines = open(dst).read().split("\n")
+            self.assertTrue(lines[3].endswith("1 2 3 255"))
+            self.assertEqual(lines[fidx[0]], "3 0 1 2")
+
+    def test_counts_on_the_header_line(self):
+        with tempfile.TemporaryDirectory() as d:
+            src = os.path.join(d, "a.off")
+            open(src, "w").write("OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
+            self.assertEqual(len(inv.read_off(src)[2]), 3)
+
+
+class Comparison(unittest.TestCase):
+    CUBE = ("OFF\n8 12 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+            "3 0 2 1\n3 0 3 2\n3 4 5 6\n3 4 6 7\n3 0 1 5\n3 0 5 4\n3 1 2 6\n3 1 6 5\n"
+            "3 2 3 7\n3 2 7 6\n3 3 0 4\n3 3 4 7\n")
+
+    def test_centroid_of_a_cube(self):
+        with tempfile.TemporaryDirectory() as d:
+            p = os.path.join(d, "c.off")
+            open(p, "w").write(self.CUBE)
+            for a, b in zip(inv.centroid(p), (0.5, 0.5, 0.5)):
+                self.assertAlmostEqual(a, b, places=12)
+
+    def test_matching_through_the_motion(self):
+        R, t = inv.motion("random:5", 2.0)
+        m = {"R": R, "t": t, "diagonal": 2.0}
+        cents = [(0.1, 0.2, 0.3), (-0.5, 0.0, 0.4), (0.9, -0.9, 0.0)]
+        orig = (0, [1.0, 2.0, 3.0], cents)
+        # the moved run lists its components in another order
+        moved = (0, [3.0, 1.0, 2.0], [inv.apply(R, t, cents[2]), inv.apply(R, t, cents[0]), inv.apply(R, t, cents[1])])
+        self.assertEqual(inv.compare(orig, moved, m), (True, 0.0))
+        off = (0, [3.0, 1.0, 2.0 * (1 + 1e-5)], moved[2])
+        ok, worst = inv.compare(orig, off, m)
+        self.assertFalse(ok)
+        self.assertAlmostEqual(worst, 1e-5, places=12)
+        self.assertFalse(inv.compare(orig, (0, [1.0, 2.0], moved[2][:2]), m)[0])
+
+
+if __name__ == "__main__":
+    unittest.main()
