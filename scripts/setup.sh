@@ -17,6 +17,7 @@ CORE_PKGS=(
     libtet1.5-dev libompl-dev libfcl-dev libyaml-cpp-dev libassimp-dev
     libboost-filesystem-dev libboost-serialization-dev libboost-graph-dev
     python3-matplotlib python3-networkx
+    python3-distributed python3-tqdm chromium python3-pil
 )
 # Optional: off-screen pictures (scripts/render.sh). Failure here is not fatal.
 PICTURE_PKGS=(f3d xvfb xauth)

@@ -17,6 +17,7 @@ enum Exit : int {
   kUnfinished = 4,      // --exact: a time or memory cap stopped the exact decomposition
   kOutputFailed = 5,    // could not write results
   kInternal = 6,        // a bug: please report
+  kBatchFailures = 7,   // batch: some meshes failed (crash, cap, refused input); see OUT/batch.jsonl
 };
 
 inline int exitFor(const acd::Status& s) {

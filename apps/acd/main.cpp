@@ -5,6 +5,8 @@
 //   acd decompose MODEL --surface [-t TAU] -o OUT surface ACD: patches.obj, hulls.obj, report.json (surface.cpp)
 //   acd decompose MODEL --exact [--surface]     exact convex decomposition (exact.cpp)
 //   acd table [--models ...]                    the paper's Table 1 and Figures 18-19 (table.cpp)
+//   acd batch INPUT... -o OUT                   many meshes in capped workers, cached (batch.cpp)
+//   acd report OUT                              index.html over a batch, with a 3D view (report.cpp)
 // Exit codes are listed in exitCodes() and in --help.
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
@@ -12,8 +14,10 @@
 #include <acd/io.hpp>
 
 #include <CLI/CLI.hpp>
+#include "batch.hpp"
 #include "exit_codes.hpp"
 #include "exact.hpp"
+#include "report.hpp"
 #include "surface.hpp"
 #include "table.hpp"
 #include <nlohmann/json.hpp>
@@ -34,7 +38,8 @@ namespace {
 
 const char* exitCodes() {
   return "Exit codes: 0 success; 1 bad command line; 2 unreadable or invalid model; 3 invalid parameter;\n"
-         "4 some component still exceeds tau (--exact: a cap stopped it); 5 cannot write output; 6 internal error.";
+         "4 some component still exceeds tau (--exact: a cap stopped it); 5 cannot write output; 6 internal error;\n"
+         "7 batch: some meshes failed (see OUT/batch.jsonl).";
 }
 
 acd::ReadResult load(const std::string& path) {
@@ -335,6 +340,8 @@ int main(int argc, char** argv) {
   // Keep after every other decompose option: --exact adds --surface if no one else has.
   acdcli::addExactOptions(*dec);
   CLI::App* table = acdcli::addTableCommand(app);
+  CLI::App* batch = acdcli::addBatchCommand(app, *dec);  // after every decompose option: it takes them all
+  CLI::App* report = acdcli::addReportCommand(app);
 
   try {
     app.parse(argc, argv);
@@ -359,6 +366,8 @@ int main(int argc, char** argv) {
     }
     if (*dec) return runDecompose(da);
     if (*table) return acdcli::runTable();
+    if (*batch) return acdcli::runBatch();
+    if (*report) return acdcli::runReport();
     if (*info) return runInfo(infoModel);
     if (*eval) {
       if (eo.volumeSamples <= 0 || eo.surfaceSamples <= 0)

@@ -2,6 +2,7 @@
 // measures exactly what a user gets, and methods that are not built in (surface ACD) show "n/a"
 // until they are. Components and times come from each run's report.json; sizes are those of
 // the pieces written as one OBJ file (one object per piece), the same writer for every method.
+#include "child_process.hpp"
 #include "exit_codes.hpp"
 #include "table.hpp"
 
@@ -12,8 +13,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <fcntl.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -75,11 +74,7 @@ void progress(const std::string& text) {
   std::fflush(stderr);
 }
 
-std::string selfPath() {
-  std::error_code ec;
-  const fs::path p = fs::read_symlink("/proc/self/exe", ec);
-  return ec ? std::string("acd") : p.string();
-}
+std::string selfPath() { return acdproc::selfExecutable("acd"); }
 
 std::string format(double v) {
   char b[32];
@@ -89,24 +84,11 @@ std::string format(double v) {
 
 /// Runs `argv` with stdout and stderr into `log`; returns the exit code (128 + signal if killed).
 int runCommand(const std::vector<std::string>& argv, const std::string& log) {
-  std::fflush(nullptr);
-  const pid_t pid = ::fork();
-  if (pid < 0) return -1;
-  if (pid == 0) {
-    const int out = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int in = ::open("/dev/null", O_RDONLY);
-    if (out >= 0) ::dup2(out, 1), ::dup2(out, 2);
-    if (in >= 0) ::dup2(in, 0);
-    std::vector<char*> cargv;
-    for (const auto& a : argv) cargv.push_back(const_cast<char*>(a.c_str()));
-    cargv.push_back(nullptr);
-    ::execv(cargv[0], cargv.data());
-    ::_exit(127);
-  }
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  acdproc::ChildOptions options;
+  options.logPath = log;
+  const acdproc::ChildOutcome o = acdproc::runProgram(argv, options);
+  if (o.end == acdproc::ChildEnd::StartFailed) return -1;
+  return o.signal != 0 ? 128 + o.signal : o.exitCode;
 }
 
 std::string lastLine(const std::string& path) {

@@ -1,6 +1,8 @@
 // See tetgen_run.hpp for why TetGen runs in a child process.
 #include "tetgen_run.hpp"
 
+#include "child_process.hpp"
+
 #include <tetgen.h>
 
 #include <fcntl.h>
@@ -95,8 +97,7 @@ void fillInput(const Plc& plc, tetgenio& in) {
 }
 
 /// Child side: run TetGen and serialise the result; never returns.
-[[noreturn]] void childMain(const Plc& plc, const std::string& switches, int fd, int timeoutSeconds) {
-  if (timeoutSeconds > 0) ::alarm(static_cast<unsigned>(timeoutSeconds));
+[[noreturn]] void childMain(const Plc& plc, const std::string& switches, int fd) {
   std::vector<char> buf;
   // The tetgenio objects are deliberately leaked: after a TetGen error their destructors crash.
   auto* in = new tetgenio;
@@ -211,44 +212,21 @@ TetGenResult runTetGen(const Plc& plc, const TetGenOptions& options) {
   }
   const auto start = std::chrono::steady_clock::now();
 
+  // TetGen runs in a child process (acd_process) under the time cap; its messages go to a log.
   char logPath[] = "/tmp/tetmesh_tetgen_XXXXXX";
   const int logFd = ::mkstemp(logPath);
-  int fds[2];
-  if (logFd < 0 || ::pipe(fds) != 0) {
-    r.error = "cannot create a pipe or temporary file for TetGen";
-    if (logFd >= 0) ::close(logFd), ::unlink(logPath);
+  if (logFd < 0) {
+    r.error = "cannot create a temporary file for TetGen";
     return r;
   }
-  std::fflush(stdout);
-  std::fflush(stderr);
-  const pid_t pid = ::fork();
-  if (pid < 0) {
-    r.error = "cannot start a process for TetGen";
-    ::close(fds[0]), ::close(fds[1]), ::close(logFd), ::unlink(logPath);
-    return r;
-  }
-  if (pid == 0) {
-    ::close(fds[0]);
-    ::dup2(logFd, STDOUT_FILENO);
-    ::dup2(logFd, STDERR_FILENO);
-    childMain(plc, r.switches, fds[1], options.timeoutSeconds);
-  }
-  ::close(fds[1]);
   ::close(logFd);
-  std::vector<char> buf;
-  char chunk[1 << 16];
-  for (;;) {
-    const ssize_t n = ::read(fds[0], chunk, sizeof chunk);
-    if (n > 0) {
-      buf.insert(buf.end(), chunk, chunk + n);
-    } else if (n == 0 || errno != EINTR) {
-      break;
-    }
-  }
-  ::close(fds[0]);
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
+  acdproc::ChildOptions child;
+  child.pipe = true;
+  child.logPath = logPath;
+  child.limits.wallSeconds = options.timeoutSeconds;
+  const acdproc::ChildOutcome outcome = acdproc::runInChild(
+      [&](int fd) -> int { childMain(plc, r.switches, fd); }, child);
+  const std::vector<char> buf(outcome.data.begin(), outcome.data.end());
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::string log;
   {
@@ -258,15 +236,19 @@ TetGenResult runTetGen(const Plc& plc, const TetGenOptions& options) {
     log = s.str();
   }
   ::unlink(logPath);
+  if (outcome.end == acdproc::ChildEnd::StartFailed) {
+    r.error = "cannot start a process for TetGen: " + outcome.error;
+    return r;
+  }
 
   Reader rd(buf);
   std::int32_t kind = -1;
   if (!rd.get(kind)) {
     const std::string said = tetgenMessage(log);
-    if (WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM)
+    if (outcome.end == acdproc::ChildEnd::TimedOut)
       r.error = "TetGen did not finish within " + std::to_string(options.timeoutSeconds) + " s";
-    else if (WIFSIGNALED(status))
-      r.error = std::string("TetGen crashed (") + strsignal(WTERMSIG(status)) + ")";
+    else if (outcome.end == acdproc::ChildEnd::Signaled)
+      r.error = std::string("TetGen crashed (") + strsignal(outcome.signal) + ")";
     else
       r.error = "TetGen ended without a result";
     if (!said.empty()) r.error += "; it said: " + said;
