@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Throughput of acd batch over the whole corpus (data/meshes/*.off), in meshes per minute:
 # the local batch with 1 and 2 jobs, and the Dask batch (python3 -m acd.batch) on a LocalCluster
-# of 1 and 2 worker processes. Every run starts with an empty cache; each mesh runs with one thread.
+# of 1 and 2 worker processes. Every run starts with an empty cache (but the one that shows the
+# cache: the 2-job batch run again); each mesh runs with one thread.
 #
 #   bench/batch_throughput.sh [--tau 0.2] [--time-limit 120] [--acd build/bin/acd] [--out out/bench-batch]
 #
@@ -42,7 +43,7 @@ row() {  # NAME OUTDIR SECONDS
 
 run() {  # NAME OUTDIR COMMAND...
     local name="$1" dir="$2"; shift 2
-    rm -rf "$dir"
+    [[ "$name" == *cache* ]] || rm -rf "$dir"
     echo "[bench] $name" >&2
     local start end
     start=$(date +%s.%N)
@@ -57,6 +58,9 @@ echo "|---|---:|---|---:|---:|"
 COMMON=(data/meshes -t "$TAU" --threads 1 --time-limit "$LIMIT" -q)
 run "local, 1 job" "$OUT/local1" "$ACD" batch "${COMMON[@]}" --jobs 1 -o "$OUT/local1"
 run "local, 2 jobs" "$OUT/local2" "$ACD" batch "${COMMON[@]}" --jobs 2 -o "$OUT/local2"
+# The same batch again: everything from the cache.
+cp -r "$OUT/local2" "$OUT/local2-again"
+run "local, 2 jobs, second run (cache)" "$OUT/local2-again" "$ACD" batch "${COMMON[@]}" --jobs 2 -o "$OUT/local2-again"
 run "Dask LocalCluster, 1 worker" "$OUT/dask1" /usr/bin/python3 -m acd.batch "${COMMON[@]}" --acd "$ACD" \
     --scheduler local:1 -o "$OUT/dask1"
 run "Dask LocalCluster, 2 workers" "$OUT/dask2" /usr/bin/python3 -m acd.batch "${COMMON[@]}" --acd "$ACD" \

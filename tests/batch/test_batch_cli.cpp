@@ -326,3 +326,23 @@ TEST_F(Batch, WorkerAndSummaryModes) {
   // plain decompose with two threads would (the output does not depend on the thread count).
   expectSameAsDecompose("copy", copy, "-t 0.2", 2);
 }
+
+TEST_F(Batch, ProgressBarOnATerminalOnly) {
+  if (std::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "script (util-linux) not installed";
+  addModel("eight", "a.off");
+  addModel("handle", "b.off");
+  // `script` gives acd a terminal; the bar (with an ETA once a mesh has run) goes to it.
+  const std::string inner = quote(ACD_CLI) + " batch " + quote(p("in")) + " -o " + quote(p("out")) + " -t 0.2 --jobs 1";
+  const std::string cmd = "script -qec " + quote(inner) + " /dev/null > " + quote(p("tty.txt"));
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  const std::string text = slurp(p("tty.txt"));
+  EXPECT_NE(text.find("1/2 meshes"), std::string::npos) << text;
+  EXPECT_NE(text.find("ETA"), std::string::npos) << text;
+  EXPECT_NE(text.find("2/2 meshes"), std::string::npos) << text;
+  // Without a terminal: no bar, the summary only.
+  fs::remove_all(p("out"));
+  const ToolRun plain = acd("batch " + quote(p("in")) + " -o " + quote(p("out")) + " -t 0.2 --jobs 1");
+  EXPECT_EQ(plain.code, 0);
+  EXPECT_EQ(plain.err.find("meshes,"), std::string::npos) << plain.err;
+  EXPECT_NE(plain.out.find("2 meshes: 2 ok"), std::string::npos) << plain.out;
+}
