@@ -4,7 +4,9 @@
 # of 1 and 2 worker processes. Every run starts with an empty cache (but the one that shows the
 # cache: the 2-job batch run again); each mesh runs with one thread.
 #
-#   bench/batch_throughput.sh [--tau 0.2] [--time-limit 120] [--acd build/bin/acd] [--out out/bench-batch]
+#   bench/batch_throughput.sh [--tau 0.2] [--time-limit 120] [--max-kb N] [--acd build/bin/acd] [--out out/bench-batch]
+#
+# --max-kb N keeps only the corpus files of at most N KiB (a manifest in --out), for a shorter run.
 #
 # Prints a Markdown table (configuration, meshes, ok / unresolved / failed, wall seconds,
 # meshes per minute) on stdout; the runs' outputs stay in --out.
@@ -16,13 +18,15 @@ TAU=0.2
 LIMIT=120
 ACD=build/bin/acd
 OUT=out/bench-batch
+MAXKB=
 while [[ $# -gt 0 ]]; do
     case "$1" in
         --tau) TAU="$2"; shift 2 ;;
         --time-limit) LIMIT="$2"; shift 2 ;;
+        --max-kb) MAXKB="$2"; shift 2 ;;
         --acd) ACD="$2"; shift 2 ;;
         --out) OUT="$2"; shift 2 ;;
-        *) sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'; exit 1 ;;
+        *) sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//'; exit 1 ;;
     esac
 done
 ACD="$(realpath "$ACD")"
@@ -55,7 +59,12 @@ run() {  # NAME OUTDIR COMMAND...
 mkdir -p "$OUT"
 echo "| configuration | meshes | ok / unresolved / failed | wall s | meshes/min |"
 echo "|---|---:|---|---:|---:|"
-COMMON=(data/meshes -t "$TAU" --threads 1 --time-limit "$LIMIT" -q)
+INPUT=data/meshes
+if [[ -n "$MAXKB" ]]; then
+    INPUT="$OUT/meshes-under-${MAXKB}k.txt"
+    find "$ROOT/data/meshes" -name '*.off' -size -"$((MAXKB + 1))"k | sort > "$INPUT"
+fi
+COMMON=("$INPUT" -t "$TAU" --threads 1 --time-limit "$LIMIT" -q)
 run "local, 1 job" "$OUT/local1" "$ACD" batch "${COMMON[@]}" --jobs 1 -o "$OUT/local1"
 run "local, 2 jobs" "$OUT/local2" "$ACD" batch "${COMMON[@]}" --jobs 2 -o "$OUT/local2"
 # The same batch again: everything from the cache.
