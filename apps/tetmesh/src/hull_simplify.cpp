@@ -1,8 +1,10 @@
 // Simplified hull regions by supporting planes; see hull_simplify.hpp.
 #include "hull_simplify.hpp"
 
-#include "convex_polytope.hpp"
 #include "separation.hpp"
+
+#include <acd/convex_polytope.hpp>
+#include <acd/hull_vertex_cap.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -15,91 +17,26 @@ namespace tetmesh {
 
 namespace {
 
+using acd::ConvexPolytope;
+using acd::HalfSpace;
 using acd::TriMesh;
-
-/// Directions to try: the hull's facet normals (one per degree or so) and the 26 directions of
-/// a cube's faces, edges and corners, which fit any blob tolerably.
-std::vector<Vec3> candidateDirections(const std::vector<Vec3>& facetNormals) {
-  std::vector<Vec3> dirs;
-  for (int x = -1; x <= 1; ++x)
-    for (int y = -1; y <= 1; ++y)
-      for (int z = -1; z <= 1; ++z)
-        if (x || y || z) dirs.push_back(Vec3(x, y, z).normalized());
-  const double sameDirection = std::cos(M_PI / 180.0);
-  for (const Vec3& u : facetNormals) {
-    bool seen = false;
-    for (const Vec3& d : dirs)
-      if (d.dot(u) > sameDirection) {
-        seen = true;
-        break;
-      }
-    if (!seen) dirs.push_back(u);
-  }
-  return dirs;
-}
 
 struct RegionSetup {
   const TriMesh* hull = nullptr;
-  std::vector<HalfSpace> candidates;  // supporting half-spaces of the hull
   std::vector<HalfSpace> keep;        // planes to the neighbours, oriented to keep this side
   std::vector<Vec3> facetNormals;     // the hull's own
   double margin = 0.0;                // supporting planes are pushed out by this much
 };
 
-/// Greedy cutting of the hull's box (see the header). `reached`: at most K corners.
+/// The region of one hull: its vertex-capped polytope within the planes to its neighbours.
 ConvexPolytope buildRegion(const RegionSetup& s, int maxCorners, double eps, double minEdge, bool& reached) {
-  const acd::Box3 box = acd::boundingBox(*s.hull);
-  // A hull within the budget is its own region: its facet planes, unpadded.
-  if (static_cast<int>(s.hull->vertices.size()) <= maxCorners) {
-    ConvexPolytope region = ConvexPolytope::box(box.lo, box.hi, eps);
-    for (const Vec3& u : s.facetNormals) {
-      const HalfSpace h{u, maxAlong(s.hull->vertices, u)};
-      if (region.cutBy(h)) region = region.clipped(h);
-    }
-    for (const HalfSpace& h : s.keep)
-      if (region.cutBy(h)) region = region.clipped(h);
-    reached = static_cast<int>(region.corners().size()) <= maxCorners;
-    return region;
-  }
-  const Vec3 pad = Vec3::Constant(s.margin);
-  ConvexPolytope region = ConvexPolytope::box(box.lo - pad, box.hi + pad, eps);
-  for (const HalfSpace& h : s.keep)
-    if (region.cutBy(h)) region = region.clipped(h);
-  reached = false;
-  if (region.empty()) return region;
-  const double enough = 1e-4 * acd::signedVolume(*s.hull);  // smaller gains are not worth a corner
-  const std::size_t nc = s.candidates.size();
-  std::vector<double> bound(nc, std::numeric_limits<double>::infinity());
-  std::vector<std::size_t> order(nc);
-  double volume = region.volume();
-  for (;;) {
-    std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return bound[a] > bound[b]; });
-    const double shortest = std::min(minEdge, region.shortestEdge());
-    double bestGain = enough;
-    std::size_t best = nc;
-    ConvexPolytope bestRegion;
-    for (std::size_t c : order) {
-      if (bound[c] <= bestGain) break;  // no later candidate can beat the best one
-      const HalfSpace& h = s.candidates[c];
-      if (!region.cutBy(h)) {
-        bound[c] = 0.0;
-        continue;
-      }
-      ConvexPolytope cut = region.clipped(h);
-      const double gain = volume - cut.volume();
-      bound[c] = gain;
-      if (gain <= bestGain || cut.empty()) continue;
-      if (static_cast<int>(cut.corners().size()) > maxCorners || cut.shortestEdge() < shortest) continue;
-      bestGain = gain, best = c, bestRegion = std::move(cut);
-    }
-    if (best == nc) break;
-    region = std::move(bestRegion);
-    volume = region.volume();
-    bound[best] = 0.0;
-  }
-  reached = static_cast<int>(region.corners().size()) <= maxCorners;
-  return region;
+  acd::VertexCapOptions o;
+  o.maxVertices = maxCorners;
+  o.eps = eps;
+  o.minEdge = minEdge;
+  o.margin = s.margin;
+  o.keep = s.keep;
+  return acd::capVertices(*s.hull, s.facetNormals, o, reached);
 }
 
 /// Separating-axis gap between two regions (with their corners) over their face normals (< 0: they overlap).
@@ -148,8 +85,6 @@ SimplifiedHulls simplifyHulls(const std::vector<TriMesh>& hulls, const HullSimpl
     // through the same point; pushed out by different margins, their faces stay apart instead
     // of nearly coinciding (near-coincident faces make slivers and trip TetGen).
     setup[i].margin = margin * (1.0 + std::fmod(0.6180339887 * (i + 1), 1.0));
-    for (const Vec3& u : candidateDirections(normals[i]))
-      setup[i].candidates.push_back({u, maxAlong(hulls[i].vertices, u) + setup[i].margin});
   }
 
   // Planes between pairs, shared when they agree (the two sides of one cut lie on one plane).
@@ -210,23 +145,6 @@ SimplifiedHulls simplifyHulls(const std::vector<TriMesh>& hulls, const HullSimpl
   out.separatedPairs = static_cast<int>(separated.size());
   for (const ConvexPolytope& r : regions) out.regions.push_back(r.mesh());
   return out;
-}
-
-double maxOutsideDistance(const TriMesh& convex, const std::vector<Vec3>& points) {
-  // Sliver faces (nearly coplanar corners) have no reliable normal in floating point; their
-  // wide neighbours bound the same region to within their size, so they are skipped.
-  const double size = acd::boundingBox(convex).size().norm();
-  const double minArea2 = 1e-12 * size * size;
-  double worst = 0.0;
-  for (int f = 0; f < static_cast<int>(convex.faces.size()); ++f) {
-    const Vec3 nrm = acd::faceNormal(convex, f);
-    const double len = nrm.norm();
-    if (!(len > minArea2)) continue;
-    const Vec3 u = nrm / len;
-    const double d = u.dot(convex.vertices[convex.faces[f][0]]);
-    for (const Vec3& p : points) worst = std::max(worst, u.dot(p) - d);
-  }
-  return worst;
 }
 
 }  // namespace tetmesh

@@ -1,14 +1,9 @@
 // Simplified hull regions: for each component, a convex polytope with at most K corners that
 // contains the component's convex hull, and that overlaps no other component's region.
 //
-// How. A supporting plane of a hull (any direction u, offset max of u . x over the hull) keeps
-// the whole hull on its inner side, so every intersection of supporting half-spaces contains
-// the hull. Each region starts as the hull's bounding box, is cut by the planes it must keep
-// (below), and is then cut greedily by the supporting plane, among the hull's facet directions
-// and 26 fixed directions, that removes the most volume while the region keeps at most K
-// corners and no edge shorter than a minimum length (short edges make poor tetrahedra). The
-// volume a plane removes can only shrink as the region shrinks, so stale values bound fresh
-// ones from above and most candidates are never re-evaluated (lazy greedy).
+// How. Each region is the hull's vertex-capped polytope (acd/hull_vertex_cap.hpp: supporting
+// planes cut greedily from the hull's box), started within the planes it must keep (below),
+// and with no edge shorter than a minimum length (short edges make poor tetrahedra).
 //
 // Regions grow beyond their hulls and would overlap. Two components whose hulls touch (the two
 // sides of a cut) or whose regions overlap get a plane between their exact hulls (the
@@ -20,6 +15,7 @@
 // cut a hull; the pairs are counted.
 #pragma once
 
+#include <acd/convex_polytope.hpp>
 #include <acd/mesh.hpp>
 
 #include <vector>
@@ -45,7 +41,6 @@ struct SimplifiedHulls {
 /// Each hull must be a closed convex triangle mesh with volume.
 SimplifiedHulls simplifyHulls(const std::vector<acd::TriMesh>& hulls, const HullSimplifyOptions& options);
 
-/// Largest distance by which any point lies outside a face plane of the convex mesh (0 if inside all).
-double maxOutsideDistance(const acd::TriMesh& convex, const std::vector<acd::Vec3>& points);
+using acd::maxOutsideDistance;  // moved to libacd (acd/convex_polytope.hpp)
 
 }  // namespace tetmesh

@@ -7,35 +7,6 @@
 
 namespace tetmesh {
 
-std::vector<Vec3> uniqueFacetNormals(const acd::TriMesh& hull) {
-  std::vector<Vec3> out;
-  for (int f = 0; f < static_cast<int>(hull.faces.size()); ++f) {
-    const Vec3 n = acd::faceNormal(hull, f);
-    const double len = n.norm();
-    if (!(len > 0)) continue;
-    const Vec3 u = n / len;
-    bool seen = false;
-    for (const Vec3& o : out)
-      if (o.dot(u) > 1.0 - 1e-12) {
-        seen = true;
-        break;
-      }
-    if (!seen) out.push_back(u);
-  }
-  return out;
-}
-
-double maxAlong(const std::vector<Vec3>& pts, const Vec3& n) {
-  double m = -std::numeric_limits<double>::infinity();
-  for (const Vec3& p : pts) m = std::max(m, n.dot(p));
-  return m;
-}
-double minAlong(const std::vector<Vec3>& pts, const Vec3& n) {
-  double m = std::numeric_limits<double>::infinity();
-  for (const Vec3& p : pts) m = std::min(m, n.dot(p));
-  return m;
-}
-
 /// Least-squares plane through points; normal oriented like `hint`.
 bool fitPlane(const std::vector<Vec3>& pts, const Vec3& hint, Vec3& normal) {
   if (pts.size() < 3) return false;

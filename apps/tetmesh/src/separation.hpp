@@ -3,6 +3,7 @@
 // planes of the decomposition) and the planes that keep grown regions apart.
 #pragma once
 
+#include <acd/convex_polytope.hpp>
 #include <acd/mesh.hpp>
 
 #include <limits>
@@ -11,12 +12,9 @@
 namespace tetmesh {
 
 using acd::Vec3;
-
-/// Unit normals of the hull's faces, without repeats (parallel within 1e-12).
-std::vector<Vec3> uniqueFacetNormals(const acd::TriMesh& hull);
-
-double maxAlong(const std::vector<Vec3>& pts, const Vec3& n);
-double minAlong(const std::vector<Vec3>& pts, const Vec3& n);
+using acd::maxAlong;            // support functions and facet normals live in libacd
+using acd::minAlong;
+using acd::uniqueFacetNormals;
 
 /// Least-squares plane through points; normal oriented like `hint`. False if they are not
 /// spread in two directions.

@@ -1,5 +1,5 @@
 // See convex_polytope.hpp.
-#include "convex_polytope.hpp"
+#include <acd/convex_polytope.hpp>
 
 #include <acd/hull.hpp>
 
@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-namespace tetmesh {
+namespace acd {
 
 namespace {
 
@@ -126,10 +126,55 @@ double ConvexPolytope::shortestEdge() const {
   return s;
 }
 
-acd::TriMesh ConvexPolytope::mesh() const {
+TriMesh ConvexPolytope::mesh() const {
   if (empty()) return {};
-  const acd::ConvexHull h = acd::convexHull(corners());
-  return h.degenerate ? acd::TriMesh{} : h.mesh;
+  const ConvexHull h = convexHull(corners());
+  return h.degenerate ? TriMesh{} : h.mesh;
 }
 
-}  // namespace tetmesh
+std::vector<Vec3> uniqueFacetNormals(const TriMesh& mesh) {
+  std::vector<Vec3> out;
+  for (int f = 0; f < static_cast<int>(mesh.faces.size()); ++f) {
+    const Vec3 n = faceNormal(mesh, f);
+    const double len = n.norm();
+    if (!(len > 0)) continue;
+    const Vec3 u = n / len;
+    bool seen = false;
+    for (const Vec3& o : out)
+      if (o.dot(u) > 1.0 - 1e-12) {
+        seen = true;
+        break;
+      }
+    if (!seen) out.push_back(u);
+  }
+  return out;
+}
+
+double maxAlong(const std::vector<Vec3>& pts, const Vec3& n) {
+  double m = -std::numeric_limits<double>::infinity();
+  for (const Vec3& p : pts) m = std::max(m, n.dot(p));
+  return m;
+}
+
+double minAlong(const std::vector<Vec3>& pts, const Vec3& n) {
+  double m = std::numeric_limits<double>::infinity();
+  for (const Vec3& p : pts) m = std::min(m, n.dot(p));
+  return m;
+}
+
+double maxOutsideDistance(const TriMesh& convex, const std::vector<Vec3>& points) {
+  const double size = boundingBox(convex).size().norm();
+  const double minArea2 = 1e-12 * size * size;
+  double worst = 0.0;
+  for (int f = 0; f < static_cast<int>(convex.faces.size()); ++f) {
+    const Vec3 nrm = faceNormal(convex, f);
+    const double len = nrm.norm();
+    if (!(len > minArea2)) continue;
+    const Vec3 u = nrm / len;
+    const double d = u.dot(convex.vertices[convex.faces[f][0]]);
+    for (const Vec3& p : points) worst = std::max(worst, u.dot(p) - d);
+  }
+  return worst;
+}
+
+}  // namespace acd

@@ -1,15 +1,13 @@
 // A convex polytope kept as its faces (convex polygons on known planes), so that cutting it by
-// one more half-space, counting its corners and measuring its volume are cheap. The bounded
-// hull regions of tetmesh are built by cutting a box down with supporting planes.
+// one more half-space, counting its corners and measuring its volume are cheap. Hulls with a
+// vertex budget (acd/hull_vertex_cap.hpp) are built by cutting a box down with supporting planes.
 #pragma once
 
 #include <acd/mesh.hpp>
 
 #include <vector>
 
-namespace tetmesh {
-
-using acd::Vec3;
+namespace acd {
 
 /// The half-space n . x <= c (|n| = 1).
 struct HalfSpace {
@@ -41,11 +39,23 @@ class ConvexPolytope {
   double shortestEdge() const;
   const std::vector<Face>& faces() const { return faces_; }
   /// Triangulated, outward; empty when no volume is left.
-  acd::TriMesh mesh() const;
+  TriMesh mesh() const;
 
  private:
   std::vector<Face> faces_;
   double eps_ = 0.0;
 };
 
-}  // namespace tetmesh
+/// Unit normals of a mesh's faces, without repeats (parallel within 1e-12).
+std::vector<Vec3> uniqueFacetNormals(const TriMesh& mesh);
+
+/// Largest and smallest of n . p over the points (the support function and its opposite).
+double maxAlong(const std::vector<Vec3>& pts, const Vec3& n);
+double minAlong(const std::vector<Vec3>& pts, const Vec3& n);
+
+/// Largest distance by which any point lies outside a face plane of the convex mesh (0 if
+/// inside all). Sliver faces (no reliable normal in floating point) are skipped: their wide
+/// neighbours bound the same region to within their size.
+double maxOutsideDistance(const TriMesh& convex, const std::vector<Vec3>& points);
+
+}  // namespace acd
