@@ -18,6 +18,7 @@
 #include "exit_codes.hpp"
 #include "exact.hpp"
 #include "report.hpp"
+#include "simulator.hpp"
 #include "surface.hpp"
 #include "table.hpp"
 #include <nlohmann/json.hpp>
@@ -98,6 +99,7 @@ struct DecomposeArgs {
   bool noFillHoles = false;
   bool surface = false;
   bool quiet = false;
+  SimulatorArgs sim;  // --tau-abs, --max-hulls, --max-hull-vertices, --density, --format (simulator.cpp)
 };
 
 json reportJson(const DecomposeArgs& a, const acd::Decomposition& d, const acd::MeshDiagnosis& input,
@@ -203,10 +205,11 @@ int runDecompose(DecomposeArgs& a) {
   a.options.featureGrouping = !a.noGrouping;
   a.options.merge = !a.noMerge;
   a.options.fillHoles = !a.noFillHoles;
-  const acd::Status valid = acd::validate(a.options);
-  if (!valid.ok()) return fail("invalid parameter", valid);
   acd::ReadResult r = load(a.model);
   if (!r.status.ok()) return fail(a.model, r.status);
+  if (const int code = resolveTauAbs(a.sim, r.mesh, a.options); code != kOk) return code;
+  const acd::Status valid = acd::validate(a.options);
+  if (!valid.ok()) return fail("invalid parameter", valid);
   const acd::MeshDiagnosis diagnosis = acd::diagnose(r.mesh);
   const bool showProgress = !a.quiet && isatty(fileno(stderr));
   if (showProgress)
@@ -217,6 +220,9 @@ int runDecompose(DecomposeArgs& a) {
   acd::Decomposition d = acd::decompose(r.mesh, a.options);
   if (showProgress) std::fprintf(stderr, "\r%60s\r", "");
   if (!d.status.ok()) return fail(a.model, d.status);
+  json simReport = json::object();
+  std::vector<json> simComponents;
+  if (const int code = applyPostPasses(a.sim, d, a.quiet, simReport, simComponents); code != kOk) return code;
   // A self-intersecting solid is decomposed anyway: every cut that succeeds yields closed pieces,
   // and where a section crosses itself no clean cut exists, which is flagged, never hidden.
   const int selfIntersections = acd::countSelfIntersections(r.mesh);
@@ -240,9 +246,13 @@ int runDecompose(DecomposeArgs& a) {
   }
   acd::Status s = acd::writeObjObjects((fs::path(a.out) / "hulls.obj").string(), hulls, names);
   if (!s.ok()) return (void)fail("output", s), kOutputFailed;
+  if (const int code = writeSimulatorOutputs(a.sim, d, r.mesh, a.model, a.out, simReport); code != kOk) return code;
   std::ofstream report(fs::path(a.out) / "report.json");
   const bool anyUnresolved = std::any_of(d.components.begin(), d.components.end(), [](const auto& c) { return c.unresolved; });
-  report << reportJson(a, d, diagnosis, selfIntersections).dump(2) << "\n";
+  json j = reportJson(a, d, diagnosis, selfIntersections);
+  for (std::size_t i = 0; i < simComponents.size() && i < j["components"].size(); ++i) j["components"][i].update(simComponents[i]);
+  j.update(simReport);
+  report << j.dump(2) << "\n";
   if (!report) return (void)fail("output", acd::Status::error(acd::StatusCode::FileUnreadable, "cannot write report.json")), kOutputFailed;
   if (!a.quiet) printSummary(a, d);
   if (anyUnresolved) {
@@ -317,6 +327,7 @@ int main(int argc, char** argv) {
   dec->add_option("-o,--out", da.out, "Output folder: component_NNN.off, hulls.obj (one object per hull), report.json")
       ->capture_default_str();
   dec->add_flag("-q,--quiet", da.quiet, "No summary table and no progress");
+  addSimulatorOptions(*dec, da.sim);
 
   std::string infoModel;
   auto* info = app.add_subcommand("info", "Diagnose a mesh: counts, manifoldness, orientation, genus, volume");
@@ -350,6 +361,14 @@ int main(int argc, char** argv) {
     return code == 0 ? kOk : kUsage;
   }
   try {
+    if (*dec) {
+      if (const int code = validateSimulatorArgs(da.sim, *dec); code != kOk) return code;
+      if ((da.surface || acdcli::exactRequested(*dec)) && simulatorRequested(da.sim)) {
+        std::fprintf(stderr, "acd: --tau-abs, --max-hulls, --max-hull-vertices and --format apply to solid "
+                             "decomposition only (not --surface or --exact)\n");
+        return kUsage;
+      }
+    }
     if (*dec && acdcli::exactRequested(*dec)) return acdcli::runExact(*dec, da.model, da.out, da.quiet);
     if (*dec && da.surface) {
       acdcli::SurfaceArgs sa;
