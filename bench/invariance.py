@@ -146,7 +146,7 @@ def table(results, taus, models, meshes):
             orig = load_run(os.path.join(base, "orig"))
             if orig is None:
                 print("| %s | %s | no original run | | | | |" % (model, tau)); bad.append(model); continue
-            n, worst, counts, unresolved, exact = 0, 0.0, {}, int(orig[0] == 4), {}
+            n, worst, counts, unresolved, exact = 0, None, {}, int(orig[0] == 4), {}
             for name in MOTIONS:
                 tag = name.replace(":", "")
                 run = load_run(os.path.join(base, tag))
@@ -158,11 +158,12 @@ def table(results, taus, models, meshes):
                 exact[name] = "yes" if ok else "no"
                 unresolved += run[0] == 4
                 if w is not None:
-                    worst = max(worst, w)
+                    worst = w if worst is None else max(worst, w)
                 counts[len(run[1])] = counts.get(len(run[1]), 0) + 1
             seen = ", ".join("%d×%d" % (k, v) if v > 1 else str(k) for k, v in sorted(counts.items()))
-            print("| %s | %s | %d of %d | %s, %s | %.1e | %d; %s | %d |" % (
-                model, tau, n, len(MOTIONS), exact.get("tiny", "–"), exact.get("turn", "–"), worst,
+            print("| %s | %s | %d of %d | %s, %s | %s | %d; %s | %d |" % (
+                model, tau, n, len(MOTIONS), exact.get("tiny", "–"), exact.get("turn", "–"),
+                "–" if worst is None else "%.1e" % worst,
                 len(orig[1]), seen, unresolved))
             if n < len(MOTIONS) - 1:
                 bad.append(model)
