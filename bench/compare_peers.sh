@@ -12,6 +12,8 @@
 #   --threads  acd's --threads (default 2)      --jobs  runs at a time (default 1)
 #   --out      cache of runs (default out/compare_peers); existing runs are reused
 #   --fresh    forget the cache and re-do every run
+#   ACD_COMMIT=LABEL (environment): what the runs are labelled with when --acd is a binary built
+#              elsewhere (default: the checkout's commit)
 #
 # Each run: `acd decompose data/meshes/MODEL.off -t TAU -o OUT/MODEL/tTAU -q` (exit 4, some
 # component unresolved, is a result: kept and flagged †), then
@@ -38,7 +40,7 @@ ACD="build/bin/acd"
 PEERS="bench/peers-corpus.tsv"
 MAX_ROUNDS=8
 
-usage() { sed -n '2,25p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,27p' "$0" | sed 's/^# \{0,1\}//'; }
 while [[ $# -gt 0 ]]; do
     case "$1" in
         --models) MODELS="$2"; shift 2 ;;
