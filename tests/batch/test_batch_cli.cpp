@@ -346,3 +346,34 @@ TEST_F(Batch, ProgressBarOnATerminalOnly) {
   EXPECT_EQ(plain.err.find("meshes,"), std::string::npos) << plain.err;
   EXPECT_NE(plain.out.find("2 meshes: 2 ok"), std::string::npos) << plain.out;
 }
+
+TEST_F(Batch, ReportCarriesEvaluationAndEveryMesh) {
+  const std::string eight = addModel("eight", "eight.off");
+  std::ofstream(dir_ / "in" / "bad.off") << "OFF\nnot a mesh\n";
+  ASSERT_EQ(acd("batch " + quote(p("in")) + " -o " + quote(p("out")) + " -t 0.2 -q").code, 7);
+  const ToolRun r = acd("report " + quote(p("out")) + " --evaluate --no-pictures");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string html = slurp(p("out/index.html"));
+  const auto start = html.find("<script type=\"application/json\" id=\"acd-data\">");
+  ASSERT_NE(start, std::string::npos);
+  const auto open = html.find('>', start) + 1;
+  const json data = json::parse(html.substr(open, html.find("</script>", open) - open));
+  ASSERT_EQ(data["meshes"].size(), 2u);
+  const json& e8 = data["meshes"][1]["name"] == "eight" ? data["meshes"][1] : data["meshes"][0];
+  const json& bad = data["meshes"][1]["name"] == "eight" ? data["meshes"][0] : data["meshes"][1];
+  EXPECT_EQ(bad["status"], "refused");
+  EXPECT_TRUE(bad["hulls"].is_null());
+  EXPECT_EQ(e8["tau"], 0.2);
+  EXPECT_EQ(e8["picture_note"], "no picture (--no-pictures)");
+  ASSERT_TRUE(e8["hulls"].is_string());
+  EXPECT_TRUE(fs::exists(p("out/" + e8["hulls"].get<std::string>())));
+  // The IoU shown is acd evaluate's, run on its own with the same samples (same seed).
+  const ToolRun ev = acd("evaluate " + quote(eight) + " " + quote(p("out/eight/hulls.obj")) +
+                         " --json --samples 200000 --surface-samples 20000 --threads 1");
+  ASSERT_EQ(ev.code, 0) << ev.err;
+  const json direct = json::parse(ev.out);
+  EXPECT_DOUBLE_EQ(e8["iou"].get<double>(), direct["iou"].get<double>());
+  EXPECT_DOUBLE_EQ(e8["excess"].get<double>(), direct["union_to_model"].get<double>() - 1.0);
+  EXPECT_GT(e8["iou"].get<double>(), 0.5);
+  EXPECT_EQ(acd("report " + quote(p("nowhere"))).code, 2);
+}
