@@ -269,6 +269,12 @@ CLI::App* addBatchCommand(CLI::App& app, const CLI::App& decompose) {
     const bool flag = o->get_type_size_max() == 0;
     CLI::Option* copy = flag ? b->add_flag(names) : b->add_option(names, CLI::callback_t{}, "");
     copy->description(o->get_description())->group(group);
+    if (!flag) {  // take as many values as decompose does (--format urdf glb, or urdf,glb)
+      copy->type_size(o->get_type_size_min(), o->get_type_size_max());
+      copy->expected(o->get_expected_min(), o->get_expected_max());
+      copy->delimiter(o->get_delimiter());
+      copy->allow_extra_args(o->get_allow_extra_args());
+    }
     args.forwarded.push_back({copy, o->get_lnames().empty() ? "-" + first : "--" + first, flag});
   }
   return b;

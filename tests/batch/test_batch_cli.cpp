@@ -107,8 +107,10 @@ class Batch : public ::testing::Test {
                           " -q -o " + quote(plain));
     ASSERT_TRUE(d.code == 0 || d.code == 4) << d.err;
     std::set<std::string> a, b;
-    for (const auto& e : fs::directory_iterator(plain)) a.insert(e.path().filename().string());
-    for (const auto& e : fs::directory_iterator(p("out/" + name))) b.insert(e.path().filename().string());
+    for (const auto& e : fs::recursive_directory_iterator(plain))
+      if (e.is_regular_file()) a.insert(e.path().lexically_relative(plain).string());
+    for (const auto& e : fs::recursive_directory_iterator(p("out/" + name)))
+      if (e.is_regular_file()) b.insert(e.path().lexically_relative(p("out/" + name)).string());
     EXPECT_EQ(a, b) << name;
     for (const std::string& f : a) {
       if (f == "report.json") {
@@ -376,4 +378,15 @@ TEST_F(Batch, ReportCarriesEvaluationAndEveryMesh) {
   EXPECT_DOUBLE_EQ(e8["excess"].get<double>(), direct["union_to_model"].get<double>() - 1.0);
   EXPECT_GT(e8["iou"].get<double>(), 0.5);
   EXPECT_EQ(acd("report " + quote(p("nowhere"))).code, 2);
+}
+
+TEST_F(Batch, EveryDecomposeOptionIsPassedOnWithAllItsValues) {
+  const std::string mesh = addModel("handle", "handle.off");
+  if (acd("decompose --help").out.find("--format") == std::string::npos) GTEST_SKIP() << "no --format in this build";
+  ASSERT_EQ(acd("batch " + quote(p("in")) + " -o " + quote(p("out")) + " -t 0.2 --format urdf glb -q").code, 0);
+  expectSameAsDecompose("handle", mesh, "-t 0.2 --format urdf glb");
+  ASSERT_EQ(acd("batch " + quote(p("in")) + " -o " + quote(p("out2")) + " -t 0.2 --format urdf,glb -q").code, 0);
+  EXPECT_EQ(records("out")["handle"]["key"], records("out2")["handle"]["key"]) << "same options, same key";
+  ASSERT_EQ(acd("batch " + quote(p("in")) + " -o " + quote(p("out3")) + " -t 0.2 -q").code, 0);
+  EXPECT_NE(records("out")["handle"]["key"], records("out3")["handle"]["key"]) << "other options, other key";
 }
