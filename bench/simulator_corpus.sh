@@ -12,10 +12,11 @@
 #   --max-hulls           N (default 64)
 #   --models              corpus names, files data/meshes/NAME.off (default: all 12)
 #   --samples             Monte-Carlo points for acd evaluate (default 1000000, as the peers' table)
-#   --peers FILE          the peers' reference table (Markdown); its "V-HACD default (64)" column
-#                         is joined in (default: ../shared/reference/peers-corpus.md if present)
+#   --peers FILE          the peers' figures (default bench/peers-corpus.tsv); V-HACD's row at
+#                         its defaults (64 hulls) is joined in
 #   --out DIR             where runs write (default out/simulator)
 #   --acd PATH            the CLI (default build/bin/acd)
+#   --table-only          no runs: the table from the outputs already in --out
 #
 # Per model: `acd decompose MODEL -t T -o DIR/exact -q` (uncapped hulls, for the IoU they would
 # give) and `acd decompose MODEL -t T --max-hull-vertices K --max-hulls N -o DIR/capped -q`;
@@ -32,12 +33,12 @@ K=60
 N=64
 MODELS="elephant armadillo bunny00 camel cow dino homer handle knot eight mushroom ChineseDragon-10kv"
 SAMPLES=1000000
-PEERS="../shared/reference/peers-corpus.md"
-[[ -f "$PEERS" ]] || PEERS="$ROOT/../shared/reference/peers-corpus.md"
+PEERS="bench/peers-corpus.tsv"
 OUTROOT="out/simulator"
 ACD="build/bin/acd"
+TABLE_ONLY=0
 
-usage() { sed -n '2,24p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; }
 while [[ $# -gt 0 ]]; do
     case "$1" in
         --tau) TAU="$2"; shift 2 ;;
@@ -48,6 +49,7 @@ while [[ $# -gt 0 ]]; do
         --peers) PEERS="$2"; shift 2 ;;
         --out) OUTROOT="$2"; shift 2 ;;
         --acd) ACD="$2"; shift 2 ;;
+        --table-only) TABLE_ONLY=1; shift ;;
         -h|--help) usage; exit 0 ;;
         *) echo "simulator_corpus: unknown option $1" >&2; usage >&2; exit 2 ;;
     esac
@@ -58,6 +60,7 @@ PY=/usr/bin/python3
 
 failed=0
 for model in $MODELS; do
+    (( TABLE_ONLY )) && break
     mesh="data/meshes/$model.off"
     [[ -f "$mesh" ]] || { echo "simulator_corpus: $mesh not found (scripts/fetch_corpus.sh)" >&2; failed=1; continue; }
     dir="$OUTROOT/$model"
@@ -94,14 +97,15 @@ vhacd = {}
 if os.path.isfile(peers):
     header = None
     for line in open(peers):
-        cells = [c.strip() for c in line.strip().strip('|').split('|')]
-        if header is None and cells and cells[0] == 'model':
+        if line.startswith('#') or not line.strip():
+            continue
+        cells = line.rstrip('\n').split('\t')
+        if header is None:
             header = cells
             continue
-        if header and len(cells) == len(header) and cells[0] not in ('', '---'):
-            for i, h in enumerate(header):
-                if h.startswith('V-HACD default'):
-                    vhacd[cells[0]] = cells[i]
+        row = dict(zip(header, cells))
+        if row.get('tool') == 'V-HACD' and row.get('setting') == 'default':
+            vhacd[row['model']] = ' / '.join(row[k] for k in ('parts', 'iou', 'err_pct', 'excess', 'seconds'))
 def load(path):
     try:
         with open(path) as f:
