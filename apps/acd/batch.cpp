@@ -281,9 +281,18 @@ CLI::App* addBatchCommand(CLI::App& app, const CLI::App& decompose) {
 }
 
 /// --dask: the same command line, less --dask, handed to python/acd/batch.py (Debian's python3).
+/// The file is run as a script, not as `-m acd.batch`: it needs nothing else of the package.
 int runOnDask() {
   const std::string self = acdproc::selfExecutable("acd");
-  std::vector<std::string> argv{"/usr/bin/python3", "-m", "acd.batch", "--scheduler", args.dask, "--acd", self};
+  // The copy next to this executable (the build tree's python/), else the source tree's.
+  std::string script;
+  for (const fs::path& dir : {fs::path(self).parent_path().parent_path() / "python", fs::path(ACD_PYTHON_SOURCE_DIR)})
+    if (fs::exists(dir / "acd" / "batch.py")) {
+      script = (dir / "acd" / "batch.py").string();
+      break;
+    }
+  if (script.empty()) return std::fprintf(stderr, "acd: batch: --dask needs python/acd/batch.py, not found\n"), kInternal;
+  std::vector<std::string> argv{"/usr/bin/python3", script, "--scheduler", args.dask, "--acd", self};
   std::ifstream in("/proc/self/cmdline", std::ios::binary);
   std::vector<std::string> given;
   for (std::string part; std::getline(in, part, '\0');) given.push_back(part);
@@ -300,16 +309,6 @@ int runOnDask() {
     if (given[i].rfind("--dask=", 0) == 0) continue;
     argv.push_back(given[i]);
   }
-  // The package next to this executable (the build tree's python/), else the source tree's.
-  std::string path;
-  for (const fs::path& dir : {fs::path(self).parent_path().parent_path() / "python", fs::path(ACD_PYTHON_SOURCE_DIR)})
-    if (fs::exists(dir / "acd" / "batch.py")) {
-      path = dir.string();
-      break;
-    }
-  if (path.empty()) return std::fprintf(stderr, "acd: batch: --dask needs python/acd/batch.py, not found\n"), kInternal;
-  const char* old = std::getenv("PYTHONPATH");
-  ::setenv("PYTHONPATH", (path + (old && *old ? ":" + std::string(old) : "")).c_str(), 1);
   std::vector<char*> cargv;
   for (auto& a : argv) cargv.push_back(a.data());
   cargv.push_back(nullptr);

@@ -2,6 +2,7 @@
 
     python3 -m acd.batch INPUT... -o OUT --scheduler tcp://HOST:8786 [acd batch options]
     python3 -m acd.batch INPUT... -o OUT --scheduler local:2          [acd batch options]
+    python3 path/to/acd/batch.py ...     (the same; needs nothing else of the package)
 
 The meshes, their names and the per-mesh command come from `acd batch --plan`; each Dask task
 runs that command (`acd batch --worker MESH --name NAME -o OUT ...`), which decomposes the mesh in
