@@ -10,7 +10,8 @@ cd "$ROOT"
 
 # Required: the build, the tests, the benchmarks and the corpus. Simulator output: tinyxml2
 # (URDF/MJCF/SDF) and tinygltf (glTF) for acd itself; urdfdom, sdformat and Bullet only for the
-# tests that read those files back (23 packages, 24 MB installed).
+# tests that read those files back (23 packages, 24 MB installed). clang and its runtime: the
+# sanitizer build and the fuzz harnesses (scripts/run_sanitizers.sh, fuzz/).
 CORE_PKGS=(
     build-essential cmake ccache
     libcgal-dev libeigen3-dev libgmp-dev libmpfr-dev libboost-dev libtbb-dev
@@ -22,6 +23,7 @@ CORE_PKGS=(
     python3-distributed python3-tqdm chromium python3-pil
     libtinyxml2-dev libtinygltf-dev
     liburdfdom-dev libsdformat-dev libbullet-dev
+    clang libclang-rt-14-dev
 )
 # Optional: off-screen pictures (scripts/render.sh). Failure here is not fatal.
 PICTURE_PKGS=(f3d xvfb xauth)

@@ -194,9 +194,21 @@ void reserveAtMost(std::vector<T>& v, long long count, size_t fileBytes, size_t 
   v.reserve(static_cast<size_t>(std::min<long long>(count, static_cast<long long>(fileBytes / minBytesPerItem + 1))));
 }
 
-std::string outOfRange(long long face, long long index, size_t vertexCount) {
-  return "face " + std::to_string(face) + " refers to vertex " + std::to_string(index) + " but the file has " +
+std::string outOfRange(long long face, const std::string& index, size_t vertexCount) {
+  return "face " + std::to_string(face) + " refers to vertex " + index + " but the file has " +
          std::to_string(vertexCount) + " vertices";
+}
+
+std::string outOfRange(long long face, long long index, size_t vertexCount) {
+  return outOfRange(face, std::to_string(index), vertexCount);
+}
+
+/// PLY indices arrive as doubles: 1e300 or inf has no integer to convert to.
+std::string outOfRange(long long face, double index, size_t vertexCount) {
+  if (std::abs(index) < 9e18) return outOfRange(face, static_cast<long long>(index), vertexCount);
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", index);
+  return outOfRange(face, std::string(text), vertexCount);
 }
 
 /// Merges STL corners with exactly the same position (+0 and -0 are the same position).
@@ -610,6 +622,9 @@ Status readPlyBody(Values& values, const PlyHeader& header, const std::string& p
       return Status::error(StatusCode::FileUnreadable, path + ": the vertex element has no x, y and z properties");
     if (isFace && indexList < 0)
       return Status::error(StatusCode::FileUnreadable, path + ": the face element has no vertex_indices list");
+    // An element without properties takes no bytes: skip it whatever its count (a count of
+    // 10^18 must not spin through empty items).
+    if (element.properties.empty()) continue;
     if (isVertex) reserveAtMost(mesh.vertices, element.count, fileBytes, 3);
     if (isFace) reserveAtMost(mesh.faces, element.count, fileBytes, 4);
 
@@ -636,7 +651,7 @@ Status readPlyBody(Values& values, const PlyHeader& header, const std::string& p
           if (value != std::floor(value)) return fail(element.name, item, "vertex index is not an integer");
           if (value < 0 || value >= static_cast<double>(vertexCount))
             return Status::error(StatusCode::IndexOutOfRange,
-                                 path + ": " + outOfRange(item, static_cast<long long>(value), vertexCount));
+                                 path + ": " + outOfRange(item, value, static_cast<size_t>(vertexCount)));
           polygon.push_back(static_cast<int>(value));
         }
         if (isIndexList && polygon.size() < 3)
@@ -864,44 +879,45 @@ Status guarded(const std::string& path, Read&& read) {
   }
 }
 
-Status checkNotEmpty(const std::string& path, const std::string& data) {
-  if (data.empty()) return Status::error(StatusCode::EmptyMesh, path + ": file is empty");
-  return Status::success();
-}
-
 }  // namespace
 
-ReadResult readMesh(const std::string& path) {
+ReadResult readMeshFromMemory(std::string_view data, const std::string& name) {
   ReadResult result;
-  const Format format = formatOf(path);
+  const Format format = formatOf(name);
   if (format == Format::Unknown) {
-    result.status = unsupportedFormat(path);
+    result.status = unsupportedFormat(name);
     return result;
   }
-  result.status = guarded(path, [&]() -> Status {
-    std::string data;
-    if (Status s = readWholeFile(path, data); !s.ok()) return s;
-    if (Status s = checkNotEmpty(path, data); !s.ok()) return s;
+  result.status = guarded(name, [&]() -> Status {
+    if (data.empty()) return Status::error(StatusCode::EmptyMesh, name + ": file is empty");
     Status s;
     switch (format) {
-      case Format::Off: s = readOff(data, path, result.mesh); break;
+      case Format::Off: s = readOff(data, name, result.mesh); break;
       case Format::Obj: {
         ObjFile obj;
-        s = readObj(data, path, obj);
+        s = readObj(data, name, obj);
         result.mesh = std::move(obj.mesh);
         break;
       }
-      case Format::Ply: s = readPly(data, path, result.mesh); break;
-      case Format::Stl: s = readStl(data, path, result.mesh); break;
+      case Format::Ply: s = readPly(data, name, result.mesh); break;
+      case Format::Stl: s = readStl(data, name, result.mesh); break;
       case Format::Unknown: break;
     }
     if (s.ok() && result.mesh.faces.empty())
       s = Status::error(StatusCode::EmptyMesh,
-                        path + ": no faces (" + std::to_string(result.mesh.vertices.size()) + " vertices)");
+                        name + ": no faces (" + std::to_string(result.mesh.vertices.size()) + " vertices)");
     return s;
   });
   if (!result.status.ok()) result.mesh = TriMesh{};
   return result;
+}
+
+ReadResult readMesh(const std::string& path) {
+  if (formatOf(path) == Format::Unknown) return {unsupportedFormat(path), {}};
+  std::string data;
+  const Status read = guarded(path, [&] { return readWholeFile(path, data); });
+  if (!read.ok()) return {read, {}};
+  return readMeshFromMemory(data, path);
 }
 
 Status writeMesh(const std::string& path, const TriMesh& mesh) {
@@ -944,6 +960,14 @@ Status writeObjObjects(const std::string& path, const std::vector<TriMesh>& mesh
 }
 
 ObjObjects readObjObjects(const std::string& path) {
+  if (formatOf(path) != Format::Obj) return readObjObjectsFromMemory({}, path);
+  std::string data;
+  const Status read = guarded(path, [&] { return readWholeFile(path, data); });
+  if (!read.ok()) return {read, {}, {}};
+  return readObjObjectsFromMemory(data, path);
+}
+
+ObjObjects readObjObjectsFromMemory(std::string_view data, const std::string& path) {
   ObjObjects result;
   if (formatOf(path) != Format::Obj) {
     result.status = formatOf(path) == Format::Unknown
@@ -952,9 +976,7 @@ ObjObjects readObjObjects(const std::string& path) {
     return result;
   }
   result.status = guarded(path, [&]() -> Status {
-    std::string data;
-    if (Status s = readWholeFile(path, data); !s.ok()) return s;
-    if (Status s = checkNotEmpty(path, data); !s.ok()) return s;
+    if (data.empty()) return Status::error(StatusCode::EmptyMesh, path + ": file is empty");
     ObjFile obj;
     if (Status s = readObj(data, path, obj); !s.ok()) return s;
     // OBJ indices are global: renumber each object's vertices, keeping the file's order.

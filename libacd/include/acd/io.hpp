@@ -5,6 +5,7 @@
 #include <acd/status.hpp>
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace acd {
@@ -17,6 +18,10 @@ struct ReadResult {
 /// Reads a mesh by file extension (case-insensitive). Never throws: a missing
 /// file, a parse error or an unknown extension comes back as a Status naming it.
 ReadResult readMesh(const std::string& path);
+
+/// Reads a mesh from bytes in memory, exactly as readMesh reads a file: `name`'s extension
+/// picks the format and `name` starts every error message.
+ReadResult readMeshFromMemory(std::string_view data, const std::string& name);
 
 /// Writes by extension (.off, .obj, .ply, .stl).
 Status writeMesh(const std::string& path, const TriMesh& mesh);
@@ -33,5 +38,6 @@ struct ObjObjects {
 
 /// Reads an OBJ that holds several objects (ours, CoACD's or V-HACD's hull files).
 ObjObjects readObjObjects(const std::string& path);
+ObjObjects readObjObjectsFromMemory(std::string_view data, const std::string& name);
 
 }  // namespace acd
