@@ -91,20 +91,25 @@ TEST(HullVertexCap, SphereGetsEveryBudgetAndStaysInside) {
   EXPECT_LT(signedVolume(capHullVertices({hull}, o).hulls[0]), 1.25 * hullVolume);
 }
 
-TEST(HullVertexCap, RotatedInputGivesTheSameBudgetAndContainment) {
-  const TriMesh blob = shapes::revolve([](double z) { return 0.6 + 0.3 * std::sin(3 * z); }, -1.2, 1.4, 20, 24);
+TEST(HullVertexCap, TheResultTurnsWithTheInput) {
+  // A lumpy ellipsoid: three distinct principal moments, so its principal frame is defined.
+  TriMesh blob = shapes::icosphere(Vec3::Zero(), 1.0, 3);
+  for (Vec3& v : blob.vertices) v = Vec3(1.3 * v.x(), 0.8 * v.y(), 0.5 * v.z()) * (1.0 + 0.08 * std::sin(3 * v.x() + 2 * v.y()));
   const Eigen::Matrix3d rot = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
   TriMesh turned = blob;
   for (Vec3& v : turned.vertices) v = rot * v + Vec3(5, -3, 2);
-  for (const TriMesh& m : {blob, turned}) {
-    HullCapOptions o;
-    o.maxVertices = 16;
-    const CappedHulls c = capHullVertices({hullMesh(m.vertices)}, o);
-    EXPECT_LE(c.vertices[0], 16);
-    EXPECT_LE(beyondFaces(c.hulls[0], m.vertices), 1e-12);
-    // The added volume is a modest share of the hull's whatever the pose.
-    EXPECT_LT(c.addedVolume[0], 0.6 * c.hullVolume[0]);
+  HullCapOptions o;
+  o.maxVertices = 16;
+  const CappedHulls a = capHullVertices({hullMesh(blob.vertices)}, o);
+  const CappedHulls b = capHullVertices({hullMesh(turned.vertices)}, o);
+  for (const CappedHulls* c : {&a, &b}) {
+    EXPECT_LE(c->vertices[0], 16);
+    EXPECT_LT(c->addedVolume[0], 0.6 * c->hullVolume[0]);
   }
+  EXPECT_LE(beyondFaces(a.hulls[0], blob.vertices), 1e-12);
+  EXPECT_LE(beyondFaces(b.hulls[0], turned.vertices), 1e-12);
+  EXPECT_EQ(a.vertices[0], b.vertices[0]);
+  EXPECT_NEAR(b.addedVolume[0], a.addedVolume[0], 1e-6 * a.hullVolume[0]);
 }
 
 TEST(HullVertexCap, ConvexPolytopeCutsAndCounts) {

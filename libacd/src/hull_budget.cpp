@@ -83,8 +83,18 @@ Candidate join(const Group& a, const Group& b, const Normalization& norm) {
   return c;
 }
 
-/// Distance between two boxes (0 when they meet).
-double boxGap(const Box3& a, const Box3& b) { return (a.lo - b.hi).cwiseMax(b.lo - a.hi).cwiseMax(0.0).norm(); }
+/// A sphere around a mesh: the centroid of its vertices and the farthest vertex (turns with the mesh).
+struct Ball {
+  Vec3 centre = Vec3::Zero();
+  double radius = 0.0;
+};
+Ball ballAround(const TriMesh& m) {
+  Ball b;
+  for (const Vec3& p : m.vertices) b.centre += p;
+  b.centre /= static_cast<double>(std::max<std::size_t>(1, m.vertices.size()));
+  for (const Vec3& p : m.vertices) b.radius = std::max(b.radius, (p - b.centre).norm());
+  return b;
+}
 
 }  // namespace
 
@@ -139,15 +149,16 @@ HullBudgetReport limitHullCount(Decomposition& d, const HullBudgetOptions& optio
     measure(false);
     for (const auto& [i, j] : pairs) glueable = glueable || measured[{groups[i].uid, groups[j].uid}].valid;
     if (!glueable) {
-      // No neighbours left to glue: join each group with its nearest few (by box gap).
+      // No neighbours left to glue: join each group with its nearest few (gap between the
+      // spheres around them, which does not depend on the pose).
       pairs.clear();
-      std::vector<Box3> boxes;
-      for (const Group& g : groups) boxes.push_back(boundingBox(g.mesh));
+      std::vector<Ball> balls;
+      for (const Group& g : groups) balls.push_back(ballAround(g.mesh));
       const int m = static_cast<int>(groups.size());
       for (int i = 0; i < m; ++i) {
         std::vector<std::pair<double, int>> near;
         for (int j = 0; j < m; ++j)
-          if (j != i) near.emplace_back(boxGap(boxes[i], boxes[j]), j);
+          if (j != i) near.emplace_back((balls[i].centre - balls[j].centre).norm() - balls[i].radius - balls[j].radius, j);
         std::sort(near.begin(), near.end());
         for (int k = 0; k < std::min<int>(4, static_cast<int>(near.size())); ++k)
           pairs.emplace_back(std::min(i, near[k].second), std::max(i, near[k].second));

@@ -2,6 +2,7 @@
 #include <acd/hull_vertex_cap.hpp>
 
 #include <acd/hull.hpp>
+#include <acd/mass_properties.hpp>
 
 #include <Eigen/Dense>
 
@@ -18,12 +19,12 @@ namespace {
 
 /// Directions to try: the hull's facet normals (one per degree or so) and the 26 directions of
 /// a cube's faces, edges and corners, which fit any blob tolerably.
-std::vector<Vec3> candidateDirections(const std::vector<Vec3>& facetNormals) {
+std::vector<Vec3> candidateDirections(const std::vector<Vec3>& facetNormals, const Eigen::Matrix3d& frame) {
   std::vector<Vec3> dirs;
   for (int x = -1; x <= 1; ++x)
     for (int y = -1; y <= 1; ++y)
       for (int z = -1; z <= 1; ++z)
-        if (x || y || z) dirs.push_back(Vec3(x, y, z).normalized());
+        if (x || y || z) dirs.push_back(frame * Vec3(x, y, z).normalized());
   const double sameDirection = std::cos(M_PI / 180.0);
   for (const Vec3& u : facetNormals) {
     bool seen = false;
@@ -127,10 +128,21 @@ ConvexPolytope capVertices(const TriMesh& hull, const std::vector<Vec3>& facetNo
     return region;
   }
   std::vector<HalfSpace> candidates;
-  for (const Vec3& u : candidateDirections(facetNormals)) candidates.push_back({u, maxAlong(hull.vertices, u) + o.margin});
+  for (const Vec3& u : candidateDirections(facetNormals, o.frame))
+    candidates.push_back({u, maxAlong(hull.vertices, u) + o.margin});
   const Vec3 pad = Vec3::Constant(o.margin);
-  ConvexPolytope region = maxCorners >= 8 ? ConvexPolytope::box(box.lo - pad, box.hi + pad, eps)
-                                          : smallStart(hull, maxCorners, o.margin, eps);
+  const bool axisAligned = o.frame.isIdentity(0.0);
+  ConvexPolytope region;
+  if (maxCorners < 8) {
+    region = smallStart(hull, maxCorners, o.margin, eps);
+  } else if (axisAligned) {
+    region = ConvexPolytope::box(box.lo - pad, box.hi + pad, eps);
+  } else {  // the box along the frame's axes
+    bool bounded = false;
+    std::vector<Vec3> sides;
+    for (int k = 0; k < 3; ++k) sides.push_back(o.frame.col(k)), sides.push_back(-o.frame.col(k));
+    region = enclosedBy(hull.vertices, sides, o.margin, eps, bounded);
+  }
   for (const HalfSpace& h : o.keep)
     if (region.cutBy(h)) region = region.clipped(h);
   reached = false;
@@ -195,6 +207,7 @@ CappedHulls capHullVertices(const std::vector<TriMesh>& hulls, const HullCapOpti
       // A hair outside the hull: corners computed by clipping carry rounding, and the result
       // must hold every hull vertex however it is evaluated.
       o.margin = 1e-9 * size;
+      o.frame = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(massProperties(hull).inertia).eigenvectors();
       bool reached = false;
       const TriMesh capped = capVertices(hull, uniqueFacetNormals(hull), o, reached).mesh();
       if (!capped.empty()) result = capped;

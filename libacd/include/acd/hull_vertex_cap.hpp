@@ -29,6 +29,10 @@ struct VertexCapOptions {
   double minEdge = 0.0;         // no edge of the result shorter than this (unless the hull's own)
   double margin = 0.0;          // supporting planes (and the start) pushed out by this much
   std::vector<HalfSpace> keep;  // half-spaces the result must also lie in (may cut the hull)
+  /// Axes of the starting box and of the 26 fixed directions (columns, orthonormal). The
+  /// identity keeps them on the coordinate axes; capHullVertices uses the hull's principal
+  /// axes of inertia, so that the result turns with the input.
+  Eigen::Matrix3d frame = Eigen::Matrix3d::Identity();
 };
 
 /// The polytope for one closed convex hull with volume; `facetNormals` are its
@@ -37,7 +41,9 @@ struct VertexCapOptions {
 ConvexPolytope capVertices(const TriMesh& hull, const std::vector<Vec3>& facetNormals, const VertexCapOptions& options,
                            bool& reached);
 
-/// Every hull of a decomposition, lengths relative to each hull's own half-diagonal.
+/// Every hull of a decomposition, lengths relative to each hull's own half-diagonal, in the
+/// frame of each hull's principal axes of inertia (where two principal moments are equal,
+/// as on a solid of revolution, the axes in their plane are whatever the eigensolver gives).
 struct HullCapOptions {
   int maxVertices = 60;  // K >= 4
   double minEdge = 1e-6; // relative: no edge shorter (engines merge near-coincident corners)
