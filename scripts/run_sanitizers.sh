@@ -12,7 +12,7 @@ cd "$ROOT"
 BUILD="${ACD_SANITIZER_BUILD:-build-asan}"
 start=$(date +%s)
 
-scripts/build_sanitized.sh acd_tests acd_cli pointloc || exit 1
+scripts/build_sanitized.sh || exit 1  # everything: every test program of the suite
 
 LOGS="$ROOT/$BUILD/sanitizer-logs"
 rm -rf "$LOGS"
