@@ -212,7 +212,7 @@ TEST_F(Cli, OpenMeshIsRefusedWithoutHoleFilling) {
   TriMesh box = shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1));
   box.faces.pop_back();
   const std::string model = writeModel("open.off", box);
-  expectRefused(quote(model) + " --no-fill-holes", 2, {"open", "boundary"});
+  expectRefused(quote(model) + " --no-fill-holes --no-wrap", 2, {"open", "boundary"});
 }
 
 TEST_F(Cli, OpenMeshHolesAreFilledAndReported) {
@@ -251,7 +251,39 @@ TEST_F(Cli, SelfIntersectingInputIsReportedAndDecomposed) {
 TEST_F(Cli, NonManifoldEdge) {
   const TriMesh twoCubes = shapes::voxels({{0, 0, 0}, {1, 1, 0}});  // share the edge x = y = 1
   const std::string model = writeModel("nme.off", twoCubes);
-  expectRefused(quote(model), 2, {"non-manifold edge"});
+  expectRefused(quote(model) + " --no-repair", 2, {"non-manifold edge"});
+  // By default the edge is split: two cubes, each convex, each said on stderr as one line.
+  const std::string out = path("split");
+  const acdtest::ToolRun r = acd("decompose " + quote(model) + " -q -o " + quote(out));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("repaired: split non-manifold edges and vertices: 2 vertices copied"), std::string::npos) << r.err;
+  const json report = json::parse(slurp(out + "/report.json"));
+  EXPECT_EQ(report["totals"]["components"].get<int>(), 2);
+  EXPECT_FALSE(report["input"]["wrap"]["used"].get<bool>());
+  for (const auto& c : report["components"]) EXPECT_EQ(c["of"].get<std::string>(), "input");
+}
+
+TEST_F(Cli, UnclosableMeshIsDecomposedThroughItsWrap) {
+  // A box with a fin on an edge: the fin is split off and, being a sheet, wrapped.
+  TriMesh m = shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1));
+  m.vertices.emplace_back(-0.6, -0.6, 0.5);
+  m.faces.push_back({m.faces[0][0], m.faces[0][1], 8});
+  const std::string model = writeModel("fin.off", m);
+  const std::string out = path("fin");
+  const acdtest::ToolRun r = acd("decompose " + quote(model) + " -q -t 0.1 -o " + quote(out));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("decomposed through a watertight wrap"), std::string::npos) << r.err;
+  const json report = json::parse(slurp(out + "/report.json"));
+  EXPECT_TRUE(report["input"]["wrap"]["used"].get<bool>());
+  EXPECT_GT(report["input"]["wrap"]["hausdorff"].get<double>(), 0.0);
+  int ofWrap = 0, ofInput = 0;
+  for (const auto& c : report["components"]) (c["of"].get<std::string>() == "wrap" ? ofWrap : ofInput) += 1;
+  EXPECT_GE(ofWrap, 1);
+  EXPECT_GE(ofInput, 1);  // the box itself stays exact
+  expectRefused(quote(model) + " --no-wrap", 2, {"open mesh"});
+  const acdtest::ToolRun info = acd("info " + quote(model));
+  EXPECT_NE(info.out.find("through a watertight wrap"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("split non-manifold edges"), std::string::npos) << info.out;
 }
 
 TEST_F(Cli, TauZero) {

@@ -12,6 +12,8 @@
 #include <acd/diagnosis.hpp>
 #include <acd/evaluate.hpp>
 #include <acd/io.hpp>
+#include <acd/robust.hpp>
+#include <acd/scene_io.hpp>
 
 #include <CLI/CLI.hpp>
 #include "batch.hpp"
@@ -26,6 +28,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -77,15 +80,20 @@ int runInfo(const std::string& path) {
   std::printf("  bounding box          [%g %g %g] - [%g %g %g]\n", d.bbox.lo.x(), d.bbox.lo.y(), d.bbox.lo.z(),
               d.bbox.hi.x(), d.bbox.hi.y(), d.bbox.hi.z());
   if (!d.firstProblem.empty()) std::printf("  first problem         %s\n", d.firstProblem.c_str());
-  if (d.closed && d.nonManifoldEdges == 0) {
-    const int pairs = acd::countSelfIntersections(r.mesh);
-    if (pairs >= 0) std::printf("  self-intersections    %d face pairs\n", pairs);
-  }
-  acd::PrepareOptions fill;  // what `acd decompose` does: holes are closed first
-  fill.openMeshes = acd::OpenMeshPolicy::FillHoles;
-  const acd::PreparedSolid p = acd::prepareSolid(r.mesh, fill);
-  std::printf("  solid decomposition   %s\n", p.status.ok() ? "possible" : p.status.message.c_str());
+  const int pairs = d.closed && d.nonManifoldEdges == 0 ? acd::countSelfIntersections(r.mesh) : -1;
+  if (pairs >= 0) std::printf("  self-intersections    %d face pairs\n", pairs);
+  // What `acd decompose` would do, step by step (the same code, without building the wrap).
+  const acd::PreparedModel p = acd::prepareModel(r.mesh, acd::DecomposeOptions{}, false);
   for (const auto& line : p.repairs) std::printf("  repair                %s\n", line.c_str());
+  if (pairs > 0)
+    std::printf("  repair                the surface passes through itself: a shell left above tau is decomposed "
+                "through its wrap\n");
+  if (!p.status.ok())
+    std::printf("  solid decomposition   refused: %s\n", p.status.message.c_str());
+  else if (!p.wrapReason.empty())
+    std::printf("  solid decomposition   possible, through a watertight wrap (--no-wrap refuses it)\n");
+  else
+    std::printf("  solid decomposition   possible%s\n", p.repairs.empty() ? "" : " after the repairs above");
   return kOk;
 }
 
@@ -97,15 +105,20 @@ struct DecomposeArgs {
   bool noGrouping = false;
   bool noMerge = false;
   bool noFillHoles = false;
+  bool noWrap = false;
+  bool noRepair = false;
   bool surface = false;
   bool quiet = false;
   SimulatorArgs sim;  // --tau-abs, --max-hulls, --max-hull-vertices, --density, --format (simulator.cpp)
+  bool perMesh = false;
+  std::string mesh;  // with --per-mesh: the name of the scene mesh being decomposed
 };
 
 json reportJson(const DecomposeArgs& a, const acd::Decomposition& d, const acd::MeshDiagnosis& input,
                int selfIntersections) {
   json j;
   j["model"] = a.model;
+  if (!a.mesh.empty()) j["mesh"] = a.mesh;
   j["parameters"] = {{"tau", d.options.tau},
                      {"epsilon", d.options.epsilon},
                      {"delta", d.options.delta},
@@ -125,7 +138,16 @@ json reportJson(const DecomposeArgs& a, const acd::Decomposition& d, const acd::
                 {"normalization", {{"center", {d.normalization.center.x(), d.normalization.center.y(), d.normalization.center.z()}},
                                    {"scale", d.normalization.scale}}},
                 {"repairs", d.repairs},
-                {"holes_filled", d.stats.holesFilled}};
+                {"holes_filled", d.stats.holesFilled},
+                {"wrap", {{"used", d.wrap.used},
+                          {"reason", d.wrap.reason},
+                          {"wrapped_pieces", d.wrap.wrappedPieces},
+                          {"alpha", d.wrap.alpha},
+                          {"offset", d.wrap.offset},
+                          {"hausdorff", d.wrap.hausdorff},
+                          {"wrap_to_input", d.wrap.wrapToInput},
+                          {"input_to_wrap", d.wrap.inputToWrap},
+                          {"faces", d.wrap.faces}}}};
   json comps = json::array();
   double volume = 0, hullVolume = 0, maxConcavity = 0;
   int unresolved = 0;
@@ -141,7 +163,8 @@ json reportJson(const DecomposeArgs& a, const acd::Decomposition& d, const acd::
                      {"hull_faces", c.hull.faces.size()},
                      {"depth", c.depth},
                      {"source_piece", c.source},
-                     {"unresolved", c.unresolved}});
+                     {"unresolved", c.unresolved},
+                     {"of", c.ofWrap ? "wrap" : "input"}});
     if (c.unresolved) comps.back()["note"] = c.note;
     volume += c.volume;
     hullVolume += c.hullVolume;
@@ -162,6 +185,8 @@ json reportJson(const DecomposeArgs& a, const acd::Decomposition& d, const acd::
                  {"bridge_refinements", d.stats.refinements},
                  {"merges", d.stats.merges}};
   j["timing"] = {{"prepare_seconds", d.times.prepare},
+                 {"repair_seconds", d.repairSeconds},
+                 {"wrap_seconds", d.wrap.seconds},
                  {"concavity_cpu_seconds", d.times.concavity},
                  {"grouping_cpu_seconds", d.times.grouping},
                  {"cutting_cpu_seconds", d.times.cutting},
@@ -199,36 +224,41 @@ void printSummary(const DecomposeArgs& a, const acd::Decomposition& d) {
               d.times.cutting);
   std::printf("  output         %s\n", a.out.c_str());
   for (const auto& line : d.repairs) std::printf("  repaired       %s\n", line.c_str());
+  if (d.wrap.used)
+    std::printf("  wrap           %d pieces wrapped (alpha %g, offset %g); Hausdorff distance to the input %.4f\n",
+                d.wrap.wrappedPieces, d.wrap.alpha, d.wrap.offset, d.wrap.hausdorff);
 }
 
-int runDecompose(DecomposeArgs& a) {
-  a.options.featureGrouping = !a.noGrouping;
-  a.options.merge = !a.noMerge;
-  a.options.fillHoles = !a.noFillHoles;
-  acd::ReadResult r = load(a.model);
-  if (!r.status.ok()) return fail(a.model, r.status);
-  if (const int code = resolveTauAbs(a.sim, r.mesh, a.options); code != kOk) return code;
+int decomposeMesh(DecomposeArgs& a, const acd::TriMesh& mesh) {
+  if (const int code = resolveTauAbs(a.sim, mesh, a.options); code != kOk) return code;
   const acd::Status valid = acd::validate(a.options);
   if (!valid.ok()) return fail("invalid parameter", valid);
-  const acd::MeshDiagnosis diagnosis = acd::diagnose(r.mesh);
+  const acd::MeshDiagnosis diagnosis = acd::diagnose(mesh);
   const bool showProgress = !a.quiet && isatty(fileno(stderr));
   if (showProgress)
     a.options.progress = [](int done, int pending) {
       std::fprintf(stderr, "\r  decomposing: %d final, %d pending   ", done, pending);
       std::fflush(stderr);
     };
-  acd::Decomposition d = acd::decompose(r.mesh, a.options);
+  acd::Decomposition d = acd::decompose(mesh, a.options);
   if (showProgress) std::fprintf(stderr, "\r%60s\r", "");
+  for (const auto& line : d.repairs) std::fprintf(stderr, "acd: %s: repaired: %s\n", a.model.c_str(), line.c_str());
   if (!d.status.ok()) return fail(a.model, d.status);
   json simReport = json::object();
   std::vector<json> simComponents;
   if (const int code = applyPostPasses(a.sim, d, a.quiet, simReport, simComponents); code != kOk) return code;
-  // A self-intersecting solid is decomposed anyway: every cut that succeeds yields closed pieces,
-  // and where a section crosses itself no clean cut exists, which is flagged, never hidden.
-  const int selfIntersections = acd::countSelfIntersections(r.mesh);
+  if (d.wrap.used)
+    std::fprintf(stderr, "acd: %s: decomposed through a watertight wrap (%d pieces; alpha %g, offset %g; Hausdorff distance "
+                 "to the input %.4g, wrap to input %.4g; normalised units)\n", a.model.c_str(), d.wrap.wrappedPieces,
+                 d.wrap.alpha, d.wrap.offset, d.wrap.hausdorff, d.wrap.wrapToInput);
+  // A self-intersecting solid is decomposed anyway: every cut that succeeds yields closed pieces;
+  // where a section crosses itself no clean cut exists, and such a shell is decomposed through its
+  // wrap (or, with --no-wrap, its components are flagged, never hidden).
+  const int selfIntersections = acd::countSelfIntersections(mesh);
   if (selfIntersections > 0)
-    std::fprintf(stderr, "acd: warning: %s intersects itself (%d face pairs); pieces whose sections cross "
-                 "themselves may stay above tau and are marked unresolved\n", a.model.c_str(), selfIntersections);
+    std::fprintf(stderr, "acd: warning: %s intersects itself (%d face pairs); %s\n", a.model.c_str(), selfIntersections,
+                 a.options.wrap ? "a shell left above tau there is decomposed through its wrap"
+                                : "pieces whose sections cross themselves may stay above tau and are marked unresolved");
 
   std::error_code ec;
   fs::create_directories(a.out, ec);
@@ -246,7 +276,7 @@ int runDecompose(DecomposeArgs& a) {
   }
   acd::Status s = acd::writeObjObjects((fs::path(a.out) / "hulls.obj").string(), hulls, names);
   if (!s.ok()) return (void)fail("output", s), kOutputFailed;
-  if (const int code = writeSimulatorOutputs(a.sim, d, r.mesh, a.model, a.out, simReport); code != kOk) return code;
+  if (const int code = writeSimulatorOutputs(a.sim, d, mesh, a.model, a.out, simReport); code != kOk) return code;
   std::ofstream report(fs::path(a.out) / "report.json");
   const bool anyUnresolved = std::any_of(d.components.begin(), d.components.end(), [](const auto& c) { return c.unresolved; });
   json j = reportJson(a, d, diagnosis, selfIntersections);
@@ -261,6 +291,59 @@ int runDecompose(DecomposeArgs& a) {
     return kUnresolved;
   }
   return kOk;
+}
+
+/// --per-mesh: every mesh placed in a scene file (or every object of an OBJ) is a model of its own,
+/// decomposed into OUT/NNN_NAME/ with τ in its own normalised units. A refused mesh does not stop
+/// the others; the exit code is the largest of the meshes' codes.
+int runPerMesh(DecomposeArgs& a) {
+  std::vector<acd::TriMesh> meshes;
+  std::vector<std::string> names;
+  if (acd::isSceneFormat(a.model)) {
+    acd::SceneMeshes scene = acd::readScene(a.model);
+    if (!scene.status.ok()) return fail(a.model, scene.status);
+    meshes = std::move(scene.meshes);
+    names = std::move(scene.names);
+  } else if (fs::path(a.model).extension() == ".obj" || fs::path(a.model).extension() == ".OBJ") {
+    acd::ObjObjects objects = acd::readObjObjects(a.model);
+    if (!objects.status.ok()) return fail(a.model, objects.status);
+    meshes = std::move(objects.objects);
+    names = std::move(objects.names);
+  } else {
+    acd::ReadResult r = load(a.model);
+    if (!r.status.ok()) return fail(a.model, r.status);
+    meshes.push_back(std::move(r.mesh));
+    names.push_back(fs::path(a.model).stem().string());
+  }
+  int worst = kOk;
+  const std::string root = a.out;
+  for (std::size_t k = 0; k < meshes.size(); ++k) {
+    DecomposeArgs one = a;
+    one.mesh = names[k];
+    std::string folder = names[k];  // a file name: keep letters, digits, '-', '_' and '.'
+    for (char& c : folder)
+      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.') c = '_';
+    char prefix[16];
+    std::snprintf(prefix, sizeof prefix, "%03zu_", k);
+    one.out = (fs::path(root) / (prefix + folder.substr(0, 64))).string();
+    if (!a.quiet) std::printf("\n== mesh %zu of %zu: %s -> %s\n", k + 1, meshes.size(), names[k].c_str(), one.out.c_str());
+    const int code = decomposeMesh(one, meshes[k]);
+    if (code != kOk) std::fprintf(stderr, "acd: %s: mesh %s: exit %d\n", a.model.c_str(), names[k].c_str(), code);
+    worst = std::max(worst, code);
+  }
+  return worst;
+}
+
+int runDecompose(DecomposeArgs& a) {
+  a.options.featureGrouping = !a.noGrouping;
+  a.options.merge = !a.noMerge;
+  a.options.fillHoles = !a.noFillHoles;
+  a.options.wrap = !a.noWrap && !a.noRepair;
+  a.options.repair = !a.noRepair;
+  if (a.perMesh) return runPerMesh(a);
+  acd::ReadResult r = load(a.model);
+  if (!r.status.ok()) return fail(a.model, r.status);
+  return decomposeMesh(a, r.mesh);
 }
 
 // ---------------------------------------------------------------- evaluate
@@ -310,7 +393,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   DecomposeArgs da;
-  auto* dec = app.add_subcommand("decompose", "Solid ACD of a closed mesh (OFF, OBJ, PLY, STL)");
+  auto* dec = app.add_subcommand("decompose", "Solid ACD of a closed mesh (OFF, OBJ, PLY, STL; glTF, GLB, COLLADA, 3MF, FBX)");
   dec->add_option("model", da.model, "Input mesh")->required();
   dec->add_option("-t,--tau", da.options.tau, "Concavity tolerance: every component ends with concavity <= tau")
       ->capture_default_str();
@@ -322,12 +405,21 @@ int main(int argc, char** argv) {
                 "Keep every piece the recursion made (by default neighbours are glued back while their union stays within tau)");
   dec->add_flag("--no-fill-holes", da.noFillHoles,
                 "Refuse an open mesh instead of closing its holes before the solid decomposition");
+  dec->add_flag("--no-wrap", da.noWrap,
+                "Refuse a mesh that the repairs cannot make a clean solid instead of decomposing its watertight wrap; "
+                "self-intersecting pieces left above tau stay unresolved (exit 4)");
+  dec->add_flag("--no-repair", da.noRepair,
+                "Only the strict checks and safe repairs of earlier versions: no vertex merging, double-sided face, "
+                "non-manifold, degenerate-face repairs, no cavity handling and no wrap");
   dec->add_option("--threads", da.options.threads, "Worker threads, 0 = all cores; output is identical for any value")
       ->capture_default_str();
   dec->add_option("-o,--out", da.out, "Output folder: component_NNN.off, hulls.obj (one object per hull), report.json")
       ->capture_default_str();
   dec->add_flag("-q,--quiet", da.quiet, "No summary table and no progress");
   addSimulatorOptions(*dec, da.sim);
+  dec->add_flag("--per-mesh", da.perMesh,
+                "Decompose every mesh of a scene file (glTF, GLB, COLLADA, 3MF, FBX; or every object of an OBJ) on its "
+                "own, into OUT/NNN_NAME/ (default: all meshes merged into one model)");
 
   std::string infoModel;
   auto* info = app.add_subcommand("info", "Diagnose a mesh: counts, manifoldness, orientation, genus, volume");

@@ -10,6 +10,7 @@
 #include <acd/hull.hpp>
 #include <acd/knot_graph.hpp>
 #include <acd/merge.hpp>
+#include <acd/robust.hpp>
 
 #include <Eigen/Eigenvalues>
 #include <tbb/global_control.h>
@@ -303,6 +304,7 @@ int countNotches(const TriMesh& mesh, double angle) {
 }
 
 Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options) {
+  if (options.repair) return decomposeRepaired(mesh, options);  // acd/robust.hpp; comes back with repair off
   const auto start = Clock::now();
   Decomposition result;
   result.status = validate(options);

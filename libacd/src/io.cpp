@@ -2,6 +2,7 @@
 // can have millions of faces, and bad input must come back as a Status naming
 // the line or element, never as an exception.
 #include <acd/io.hpp>
+#include <acd/scene_io.hpp>
 
 #include <algorithm>
 #include <cctype>
@@ -41,7 +42,7 @@ Format formatOf(const std::string& path) {
 Status unsupportedFormat(const std::string& path) {
   const std::string ext = lowerExtension(path);
   const std::string what = ext.empty() ? "no file extension" : "unsupported extension '" + ext + "'";
-  return Status::error(StatusCode::UnsupportedFormat, path + ": " + what + " (expected .off, .obj, .ply or .stl)");
+  return Status::error(StatusCode::UnsupportedFormat, path + ": " + what + " (expected .off, .obj, .ply, .stl, .gltf, .glb, .dae, .3mf or .fbx)");
 }
 
 // ---------------------------------------------------------------- whole files
@@ -883,6 +884,12 @@ Status guarded(const std::string& path, Read&& read) {
 
 ReadResult readMeshFromMemory(std::string_view data, const std::string& name) {
   ReadResult result;
+  if (isSceneFormat(name)) {  // through assimp: every placed mesh, merged into one
+    SceneMeshes scene = readSceneFromMemory(data, name);
+    result.status = scene.status;
+    if (scene.status.ok()) result.mesh = concatenate(scene.meshes);
+    return result;
+  }
   const Format format = formatOf(name);
   if (format == Format::Unknown) {
     result.status = unsupportedFormat(name);
@@ -913,6 +920,11 @@ ReadResult readMeshFromMemory(std::string_view data, const std::string& name) {
 }
 
 ReadResult readMesh(const std::string& path) {
+  if (isSceneFormat(path)) {  // from the file: a .gltf may refer to buffers and images beside it
+    SceneMeshes scene = readScene(path);
+    if (!scene.status.ok()) return {scene.status, {}};
+    return {scene.status, concatenate(scene.meshes)};
+  }
   if (formatOf(path) == Format::Unknown) return {unsupportedFormat(path), {}};
   std::string data;
   const Status read = guarded(path, [&] { return readWholeFile(path, data); });

@@ -40,6 +40,16 @@ Vec3 faceNormal(const TriMesh& mesh, int face) {
   return (mesh.vertices[f[1]] - a).cross(mesh.vertices[f[2]] - a);
 }
 
+TriMesh concatenate(const std::vector<TriMesh>& meshes) {
+  TriMesh all;
+  for (const TriMesh& m : meshes) {
+    const int base = static_cast<int>(all.vertices.size());
+    all.vertices.insert(all.vertices.end(), m.vertices.begin(), m.vertices.end());
+    for (const Face& f : m.faces) all.faces.push_back({f[0] + base, f[1] + base, f[2] + base});
+  }
+  return all;
+}
+
 TriMesh compact(const TriMesh& mesh) {
   std::vector<int> remap(mesh.vertices.size(), -1);
   TriMesh out;

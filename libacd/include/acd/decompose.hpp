@@ -4,6 +4,7 @@
 #include <acd/mesh.hpp>
 #include <acd/normalize.hpp>
 #include <acd/status.hpp>
+#include <acd/wrap_report.hpp>
 
 #include <functional>
 #include <string>
@@ -18,6 +19,8 @@ struct DecomposeOptions {
   bool featureGrouping = true;   // false: bisect the notch's dihedral angle (Section 3.2)
   bool merge = true;             // glue neighbours back while their union stays within tau
   bool fillHoles = true;         // close an open mesh's holes first (false: refuse open meshes)
+  bool repair = true;            // repairs, shells and the wrap (acd/robust.hpp); false: strict checks only
+  bool wrap = true;              // with repair: wrap what cannot be made a clean solid (false: refuse it)
   int threads = 0;               // 0: all cores. The output never depends on it.
   int maxComponents = 10000;     // safety net against runaway recursion
   int maxDepth = 64;
@@ -39,6 +42,7 @@ struct Component {
   int source = 0;          // which connected piece of the input it came from
   bool unresolved = false; // concavity > tau but no cut could be made (reported, never hidden)
   std::string note;        // why it is unresolved
+  bool ofWrap = false;     // a piece of the watertight wrap, not of the input (acd/robust.hpp)
 };
 
 struct PhaseTimes {
@@ -63,13 +67,16 @@ struct Decomposition {
   Status status;
   std::vector<Component> components;
   Normalization normalization;
-  std::vector<std::string> repairs;   // what prepareSolid changed
+  std::vector<std::string> repairs;   // what the repairs and prepareSolid changed
+  WrapReport wrap;                    // whether (part of) the input was decomposed through its wrap
+  double repairSeconds = 0.0;         // repairs, hole filling and shell nesting (wall)
   DecomposeStats stats;
   PhaseTimes times;
   DecomposeOptions options;           // as resolved
 };
 
-/// Decomposes a closed mesh (several closed pieces are decomposed separately).
+/// Decomposes a mesh: with options.repair (the default) any mesh, through the repairs and the
+/// wrap of acd/robust.hpp; without, a closed mesh (several closed pieces are decomposed separately).
 /// Invalid input or parameters come back in `status`; nothing throws.
 Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options = {});
 

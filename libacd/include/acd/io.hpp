@@ -1,4 +1,5 @@
-// Mesh files: OFF, OBJ, PLY (ASCII and binary), STL (ASCII and binary).
+// Mesh files: OFF, OBJ, PLY (ASCII and binary), STL (ASCII and binary); scene formats
+// (glTF, COLLADA, 3MF, FBX) through assimp, see acd/scene_io.hpp.
 #pragma once
 
 #include <acd/mesh.hpp>
@@ -15,7 +16,8 @@ struct ReadResult {
   TriMesh mesh;  // polygons are fan-triangulated; STL corners are merged by exact position
 };
 
-/// Reads a mesh by file extension (case-insensitive). Never throws: a missing
+/// Reads a mesh by file extension (case-insensitive); a scene file gives all its placed meshes,
+/// transforms applied, merged into one (acd::readScene keeps them apart). Never throws: a missing
 /// file, a parse error or an unknown extension comes back as a Status naming it.
 ReadResult readMesh(const std::string& path);
 

@@ -50,6 +50,9 @@ inline std::uint64_t edgeKey(int a, int b) {
 /// Splits a mesh into edge-connected pieces, each with compacted vertices.
 std::vector<TriMesh> splitEdgeConnected(const TriMesh& mesh);
 
+/// The meshes one after the other in one mesh (vertex indices shifted; nothing merged).
+TriMesh concatenate(const std::vector<TriMesh>& meshes);
+
 /// Drops vertices no face uses and renumbers the rest (order kept).
 TriMesh compact(const TriMesh& mesh);
 

@@ -1,0 +1,56 @@
+// Repairs of the soups people export (Blender, CAD, scans, game assets) before the solid
+// decomposition: the steps that change the mesh without changing the shape it describes by
+// more than a negligible share of its size. What is left unrepairable goes to the watertight
+// wrap (acd/alpha_wrap.hpp) or is refused. docs/ERRORS.md lists every step.
+#pragma once
+
+#include <acd/mesh.hpp>
+#include <acd/status.hpp>
+
+#include <string>
+#include <vector>
+
+namespace acd {
+
+struct RepairOptions {
+  /// Vertices closer than this share of the bounding-box diagonal are merged (float exports,
+  /// STL corners, cracks between parts). Far below any tau, which starts at 1e-4 of the radius.
+  double mergeTolerance = 1e-6;
+  /// Needles (longest / shortest edge above this) are collapsed along their shortest edge when
+  /// that edge is shorter than `collapseLength` of the diagonal; caps (an angle above
+  /// `capDegrees`) are removed by flipping their longest edge.
+  double needleRatio = 1e4;
+  double collapseLength = 1e-5;
+  double capDegrees = 179.9;
+};
+
+/// What repairMesh changed; every count is also one line of `repairs` when it is not zero.
+struct MeshRepair {
+  Status status;                      // not ok only when nothing can be made of the input
+  TriMesh mesh;                       // repaired: edge-manifold, each piece consistently oriented
+  std::vector<std::string> repairs;   // one line each, naming the problem and what was done
+  int mergedVertices = 0;             // within mergeTolerance of another vertex (exact copies included)
+  int droppedCollapsedFaces = 0;      // faces left with a repeated vertex by the merge
+  int droppedDuplicateFaces = 0;      // exact copies (same orientation)
+  int doubleSidedKeptOne = 0;         // a face and its reverse: the reverse dropped
+  int doubleSidedDroppedBoth = 0;     // faces dropped as pairs that closed nothing
+  int splitVertices = 0;              // copies made to cut non-manifold edges and vertices apart
+  int flippedFaces = 0;               // turned to agree with their neighbours
+  int stitchedEdges = 0;              // boundary edge pairs sewn together
+  int removedDegenerateFaces = 0;     // zero-area, needle and cap faces removed by collapse or flip
+  int leftDegenerateFaces = 0;        // zero-area faces the collapse could not remove
+  double seconds = 0.0;
+};
+
+/// Repairs, in this order: refuse empty meshes, non-finite coordinates and bad indices; merge
+/// close vertices; drop faces with a repeated vertex and exact duplicate faces; for a face and
+/// its reverse, drop the reverse when the face is needed to close its edges, or both when the
+/// two close nothing (an inner double-sided wall); cut non-manifold edges and vertices apart
+/// and orient every piece consistently (CGAL orient_polygon_soup); stitch borders; remove
+/// zero-area, needle and cap faces (CGAL remove_degenerate_faces and
+/// remove_almost_degenerate_faces); split vertices left non-manifold
+/// (duplicate_non_manifold_vertices). Holes are not closed here (acd/hole_filling.hpp), and
+/// self-intersections are left as they are. Never throws.
+MeshRepair repairMesh(const TriMesh& mesh, const RepairOptions& options = {});
+
+}  // namespace acd

@@ -1,0 +1,324 @@
+// Mesh repairs before the solid decomposition (acd/repair.hpp). The topological steps that
+// CGAL's Polygon Mesh Processing provides are CGAL's; what is ours is the merge of close
+// vertices (CGAL 5.5 merges exact copies only) and the choice between the two sides of a
+// double-sided face, which needs the faces around it.
+#include <acd/repair.hpp>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
+#include <CGAL/Polygon_mesh_processing/shape_predicates.h>
+#include <CGAL/Polygon_mesh_processing/stitch_borders.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+#include <unordered_map>
+
+namespace acd {
+namespace {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using SurfaceMesh = CGAL::Surface_mesh<Point>;
+using Polygon = std::array<std::size_t, 3>;
+
+struct UnionFind {
+  std::vector<int> parent;
+  explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int find(int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  // The smaller index stays the representative: the result does not depend on visiting order.
+  void join(int a, int b) {
+    a = find(a), b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+};
+
+bool finite(const Vec3& p) { return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()); }
+
+/// Per vertex, the lowest-numbered vertex within `tolerance` of it through a chain of close
+/// vertices (grid hashing: only the 27 cells around a vertex can hold its neighbours).
+std::vector<int> mergeClose(const std::vector<Vec3>& vertices, const Box3& box, double tolerance) {
+  const int n = static_cast<int>(vertices.size());
+  UnionFind sets(n);
+  if (tolerance > 0.0) {
+    auto cellOf = [&](const Vec3& p) {
+      return Eigen::Array3i(((p - box.lo) / tolerance).array().floor().cast<int>());
+    };
+    auto key = [](const Eigen::Array3i& c) {
+      return (static_cast<std::uint64_t>(c.x() + 1) << 42) | (static_cast<std::uint64_t>(c.y() + 1) << 21) |
+             static_cast<std::uint64_t>(c.z() + 1);
+    };
+    std::unordered_map<std::uint64_t, std::vector<int>> grid;
+    grid.reserve(vertices.size());
+    const double tolerance2 = tolerance * tolerance;
+    for (int v = 0; v < n; ++v) {
+      const Eigen::Array3i c = cellOf(vertices[v]);
+      for (int dx = -1; dx <= 1; ++dx)
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dz = -1; dz <= 1; ++dz) {
+            const auto it = grid.find(key(c + Eigen::Array3i(dx, dy, dz)));
+            if (it == grid.end()) continue;
+            for (int u : it->second)
+              if ((vertices[u] - vertices[v]).squaredNorm() <= tolerance2) sets.join(u, v);
+          }
+      grid[key(c)].push_back(v);
+    }
+  }
+  std::vector<int> rep(n);
+  for (int v = 0; v < n; ++v) rep[v] = sets.find(v);
+  return rep;
+}
+
+bool sameCyclicOrder(const Face& a, const Face& b) {
+  for (int r = 0; r < 3; ++r)
+    if (a[0] == b[r] && a[1] == b[(r + 1) % 3] && a[2] == b[(r + 2) % 3]) return true;
+  return false;
+}
+
+struct DuplicateOutcome {
+  std::vector<Face> faces;
+  int exactCopies = 0, keptOne = 0, droppedBoth = 0;
+};
+
+/// Exact copies go. A face present in both orientations is a double-sided face: a connected set
+/// of them (joined across edges no other face uses) whose outer edges all lie where the rest of
+/// the mesh is already closed (an even, non-zero number of other faces) is an inner wall that
+/// closes nothing, and goes entirely; otherwise one side of each stays (it closes a hole, or it
+/// is a sheet that is part of the shape), the one the file gives first.
+DuplicateOutcome resolveDuplicates(const std::vector<Face>& faces) {
+  DuplicateOutcome out;
+  const int nf = static_cast<int>(faces.size());
+  std::vector<std::pair<Face, int>> keyed(nf);
+  for (int f = 0; f < nf; ++f) {
+    keyed[f] = {faces[f], f};
+    std::sort(keyed[f].first.begin(), keyed[f].first.end());
+  }
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<char> keep(nf, 0);
+  std::vector<char> doubleSided(nf, 0);  // on the kept face of a pair
+  for (int i = 0; i < nf;) {
+    int j = i;
+    while (j < nf && keyed[j].first == keyed[i].first) ++j;
+    const int first = keyed[i].second;  // lowest face number of the group
+    int reverse = -1;
+    for (int k = i + 1; k < j; ++k) {
+      const int g = keyed[k].second;
+      if (!sameCyclicOrder(faces[g], faces[first]) && reverse < 0) reverse = g;
+    }
+    keep[first] = 1;
+    out.exactCopies += (j - i) - (reverse >= 0 ? 2 : 1);
+    if (reverse >= 0) doubleSided[first] = 1;
+    i = j;
+  }
+  // Edge uses: by single faces (c) and by double-sided pairs (p).
+  std::unordered_map<std::uint64_t, std::pair<int, int>> uses;
+  for (int f = 0; f < nf; ++f)
+    if (keep[f])
+      for (int k = 0; k < 3; ++k) {
+        auto& u = uses[edgeKey(faces[f][k], faces[f][(k + 1) % 3])];
+        (doubleSided[f] ? u.second : u.first) += 1;
+      }
+  UnionFind sets(nf);
+  std::unordered_map<std::uint64_t, int> firstPairOnEdge;
+  for (int f = 0; f < nf; ++f)
+    if (doubleSided[f])
+      for (int k = 0; k < 3; ++k) {
+        const std::uint64_t e = edgeKey(faces[f][k], faces[f][(k + 1) % 3]);
+        if (uses[e].second < 2) continue;
+        auto [it, inserted] = firstPairOnEdge.emplace(e, f);
+        if (!inserted) sets.join(it->second, f);
+      }
+  std::unordered_map<int, char> setClosesNothing;  // root -> every outer edge where the rest is closed
+  for (int f = 0; f < nf; ++f)
+    if (doubleSided[f]) setClosesNothing.emplace(sets.find(f), 0);
+  std::unordered_map<int, int> outerEdges;
+  for (int f = 0; f < nf; ++f)
+    if (doubleSided[f]) {
+      const int root = sets.find(f);
+      for (int k = 0; k < 3; ++k) {
+        const auto& u = uses[edgeKey(faces[f][k], faces[f][(k + 1) % 3])];
+        if (u.second >= 2) continue;  // inside the set
+        ++outerEdges[root];
+        if (u.first == 0 || u.first % 2 != 0) setClosesNothing[root] = 2;  // needed, or a free border
+      }
+    }
+  for (int f = 0; f < nf; ++f) {
+    if (!keep[f]) continue;
+    if (doubleSided[f]) {
+      const int root = sets.find(f);
+      if (setClosesNothing[root] != 2 && outerEdges[root] > 0) {
+        ++out.droppedBoth;
+        continue;
+      }
+      ++out.keptOne;
+    }
+    out.faces.push_back(faces[f]);
+  }
+  return out;
+}
+
+std::string count(int n, const char* singular, const char* plural) {
+  return std::to_string(n) + " " + (n == 1 ? singular : plural);
+}
+
+}  // namespace
+
+MeshRepair repairMesh(const TriMesh& input, const RepairOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  MeshRepair r;
+  auto refuse = [&](StatusCode code, std::string message) {
+    r.status = Status::error(code, std::move(message));
+    r.mesh = TriMesh{};
+    return r;
+  };
+  const int nv = static_cast<int>(input.vertices.size());
+  if (input.faces.empty()) return refuse(StatusCode::EmptyMesh, "mesh has no faces");
+  for (int v = 0; v < nv; ++v)
+    if (!finite(input.vertices[v]))
+      return refuse(StatusCode::NonFiniteVertex, "vertex " + std::to_string(v) + " has a non-finite coordinate");
+  for (int f = 0; f < static_cast<int>(input.faces.size()); ++f)
+    for (int v : input.faces[f])
+      if (v < 0 || v >= nv)
+        return refuse(StatusCode::IndexOutOfRange, "face " + std::to_string(f) + " refers to vertex " +
+                                                       std::to_string(v) + " but the mesh has " + std::to_string(nv) +
+                                                       " vertices");
+  const TriMesh used = compact(input);
+  const Box3 box = boundingBox(used);
+  const double diagonal = box.size().norm();
+
+  // 1. Close vertices.
+  const std::vector<int> rep = mergeClose(used.vertices, box, options.mergeTolerance * diagonal);
+  for (int v = 0; v < static_cast<int>(rep.size()); ++v) r.mergedVertices += rep[v] != v;
+  std::vector<Face> faces;
+  faces.reserve(used.faces.size());
+  for (Face f : used.faces) {
+    for (int& v : f) v = rep[v];
+    if (f[0] == f[1] || f[1] == f[2] || f[2] == f[0]) {
+      ++r.droppedCollapsedFaces;
+      continue;
+    }
+    faces.push_back(f);
+  }
+  // 2. Copies and double-sided faces.
+  DuplicateOutcome dup = resolveDuplicates(faces);
+  r.droppedDuplicateFaces = dup.exactCopies;
+  r.doubleSidedKeptOne = dup.keptOne;
+  r.doubleSidedDroppedBoth = dup.droppedBoth;
+  faces = std::move(dup.faces);
+  if (faces.empty()) return refuse(StatusCode::EmptyMesh, "mesh has no faces left after dropping degenerate faces");
+  const TriMesh merged = compact(TriMesh{used.vertices, faces});  // the merged-away vertices go
+
+  // 3. Manifold and oriented (CGAL): points are copied where edges or vertices are non-manifold.
+  std::vector<Point> points;
+  points.reserve(merged.vertices.size());
+  for (const Vec3& p : merged.vertices) points.emplace_back(p.x(), p.y(), p.z());
+  std::vector<Polygon> polygons;
+  polygons.reserve(merged.faces.size());
+  for (const Face& f : merged.faces) polygons.push_back({std::size_t(f[0]), std::size_t(f[1]), std::size_t(f[2])});
+  const std::vector<Polygon> before = polygons;
+  std::string failure;
+  SurfaceMesh sm;
+  try {
+    const std::size_t pointsBefore = points.size();
+    PMP::orient_polygon_soup(points, polygons);
+    r.splitVertices = static_cast<int>(points.size() - pointsBefore);
+    // orient_polygon_soup keeps the polygon order; a polygon is flipped when its positions run backwards.
+    for (std::size_t i = 0; i < polygons.size(); ++i) {
+      const Point& a = points[polygons[i][0]];
+      const Polygon& b = before[i];
+      const int at = points[b[0]] == a ? 0 : points[b[1]] == a ? 1 : 2;
+      if (points[polygons[i][1]] != points[b[(at + 1) % 3]]) ++r.flippedFaces;
+    }
+    if (!PMP::is_polygon_soup_a_polygon_mesh(polygons)) throw std::runtime_error("the oriented soup is not a polygon mesh");
+    PMP::polygon_soup_to_polygon_mesh(points, polygons, sm);
+    // 4. Borders that run along each other.
+    r.stitchedEdges = static_cast<int>(PMP::stitch_borders(sm));
+    // 5. Degenerate faces: zero area (collinear corners) first, then needles and caps.
+    auto degenerateCount = [&]() {
+      int n = 0;
+      for (auto f : sm.faces()) n += PMP::is_degenerate_triangle_face(f, sm);
+      return n;
+    };
+    const int degenerateBefore = degenerateCount();
+    if (degenerateBefore > 0) PMP::remove_degenerate_faces(sm);
+    const double capCos = std::cos(options.capDegrees * std::acos(-1.0) / 180.0);
+    auto almostCount = [&]() {
+      int n = 0;
+      for (auto f : sm.faces())
+        n += PMP::is_needle_triangle_face(f, sm, options.needleRatio) != SurfaceMesh::null_halfedge() ||
+             PMP::is_cap_triangle_face(f, sm, capCos) != SurfaceMesh::null_halfedge();
+      return n;
+    };
+    const int almostBefore = almostCount();
+    if (almostBefore > 0)
+      PMP::experimental::remove_almost_degenerate_faces(sm, capCos, options.needleRatio,
+                                                        options.collapseLength * diagonal);
+    r.leftDegenerateFaces = degenerateCount();
+    r.removedDegenerateFaces = std::max(0, degenerateBefore + almostBefore - r.leftDegenerateFaces - almostCount());
+    // 6. Collapses can pinch the surface at a vertex: one copy per fan.
+    r.splitVertices += static_cast<int>(PMP::duplicate_non_manifold_vertices(sm));
+    sm.collect_garbage();
+  } catch (const std::exception& e) {
+    failure = e.what();
+  }
+
+  if (failure.empty()) {
+    r.mesh.vertices.reserve(sm.number_of_vertices());
+    for (auto v : sm.vertices()) {
+      const Point& p = sm.point(v);
+      r.mesh.vertices.emplace_back(p.x(), p.y(), p.z());
+    }
+    for (auto f : sm.faces()) {
+      const auto h = sm.halfedge(f);
+      r.mesh.faces.push_back({static_cast<int>(sm.source(h)), static_cast<int>(sm.target(h)),
+                              static_cast<int>(sm.target(sm.next(h)))});
+    }
+  } else {
+    // CGAL gave up (it should not): keep what the steps before it did; the checks that follow
+    // (prepareSolid) refuse or send the mesh to the wrap.
+    r.mesh = merged;
+    r.repairs.push_back("mesh repair stopped early (" + failure + "); later checks decide");
+  }
+
+  if (r.mergedVertices > 0)
+    r.repairs.push_back("merged " + count(r.mergedVertices, "vertex", "vertices") + " lying within " +
+                        std::to_string(options.mergeTolerance) + " of the model's diagonal of another vertex");
+  if (r.droppedCollapsedFaces > 0)
+    r.repairs.push_back("dropped " + count(r.droppedCollapsedFaces, "zero-area face", "zero-area faces") +
+                        " with a repeated vertex");
+  if (r.droppedDuplicateFaces > 0)
+    r.repairs.push_back("dropped " + count(r.droppedDuplicateFaces, "duplicate face", "duplicate faces") +
+                        " (the same triangle twice)");
+  if (r.doubleSidedKeptOne > 0)
+    r.repairs.push_back("double-sided faces: dropped the reverse side of " +
+                        count(r.doubleSidedKeptOne, "face", "faces") + " given in both orientations");
+  if (r.doubleSidedDroppedBoth > 0)
+    r.repairs.push_back("double-sided faces: dropped both sides of " + count(r.doubleSidedDroppedBoth, "face", "faces") +
+                        " given in both orientations that close nothing (an inner wall)");
+  if (r.splitVertices > 0)
+    r.repairs.push_back("split non-manifold edges and vertices: " + count(r.splitVertices, "vertex", "vertices") +
+                        " copied so that each sheet has its own");
+  if (r.flippedFaces > 0)
+    r.repairs.push_back("oriented: flipped " + count(r.flippedFaces, "face", "faces") + " to agree with their neighbours");
+  if (r.stitchedEdges > 0)
+    r.repairs.push_back("stitched " + count(r.stitchedEdges, "pair", "pairs") + " of boundary edges");
+  if (r.removedDegenerateFaces > 0)
+    r.repairs.push_back("removed " + count(r.removedDegenerateFaces, "zero-area or needle face", "zero-area or needle faces") +
+                        " by edge collapse or flip");
+  if (r.leftDegenerateFaces > 0)
+    r.repairs.push_back(count(r.leftDegenerateFaces, "zero-area face", "zero-area faces") + " could not be removed");
+  r.status = Status::success();
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+}  // namespace acd
