@@ -380,6 +380,7 @@ TEST(Decompose, RejectsInvalidParametersAndInput) {
   open.faces.pop_back();
   DecomposeOptions refuseOpen = withTau(0.05);
   refuseOpen.fillHoles = false;  // by default the hole is closed first (test_open_surface_holes.cpp)
+  refuseOpen.wrap = false;       // and what stays open is wrapped (test_robust.cpp)
   const Decomposition d = decompose(open, refuseOpen);
   EXPECT_EQ(d.status.code, StatusCode::OpenMesh);
   EXPECT_TRUE(d.components.empty());

@@ -1,5 +1,7 @@
 #include "batch_inputs.hpp"
 
+#include <acd/scene_io.hpp>
+
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -87,7 +89,7 @@ void addEntry(const fs::path& p, std::vector<Found>& out, int depth) {
 
 bool isMeshFile(const std::string& path) {
   const std::string ext = lower(fs::path(path).extension().string());
-  return ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".stl";
+  return ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".stl" || acd::isSceneFormat(path);
 }
 
 bool resolveBatchInputs(const std::vector<std::string>& inputs, std::vector<BatchInput>& meshes, std::string& error) {

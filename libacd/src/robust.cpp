@@ -91,25 +91,31 @@ PreparedModel prepareModel(const TriMesh& mesh, const DecomposeOptions& options,
     // The copies repairMesh made of non-manifold vertices share a position: prepareSolid merges
     // and splits them again; those lines would only repeat repairMesh's.
     for (const std::string& line : whole.repairs)
-      if (line.rfind("merged ", 0) != 0 && line.rfind("split ", 0) != 0 && line.find("not used by any face") == std::string::npos)
+      if (line.rfind("merged ", 0) != 0 && line.find("non-manifold vertices") == std::string::npos &&
+          line.find("not used by any face") == std::string::npos)
         out.repairs.push_back(line);
   } else {
     // Piece by piece: the pieces that can be made solid stay exact, the rest go to the wrap.
+    // (The whole can fail where no piece does: the copies repairMesh made of a non-manifold
+    // vertex share its position, and prepareSolid merges exact copies again.)
     const std::vector<TriMesh> pieces = splitEdgeConnected(repaired.mesh);
+    Status firstFailure;
     for (const TriMesh& piece : pieces) {
       PreparedSolid p = prepareSolid(piece, po);
       if (!p.status.ok()) {
+        if (unclosable.empty()) firstFailure = p.status;
         unclosable.push_back(piece);
         continue;
       }
       out.holesFilled += p.holesFilled;
       for (TriMesh& c : p.components) out.shells.push_back(std::move(c));
     }
-    if (!options.wrap) return refuse(whole.status);  // today's refusal, with today's message
+    if (!unclosable.empty() && !options.wrap) return refuse(firstFailure);  // today's refusal and message
     if (out.holesFilled > 0) out.repairs.push_back("filled " + plural(out.holesFilled, "hole", "holes"));
-    out.wrapReason = plural(static_cast<int>(unclosable.size()), "piece", "pieces") + " of " +
-                     std::to_string(pieces.size()) + " cannot be made a clean solid (first: " + whole.status.message +
-                     ")";
+    if (!unclosable.empty())
+      out.wrapReason = plural(static_cast<int>(unclosable.size()), "piece", "pieces") + " of " +
+                       std::to_string(pieces.size()) + " cannot be made a clean solid (first: " + firstFailure.message +
+                       ")";
   }
   out.isWrap.assign(out.shells.size(), 0);
   if (!unclosable.empty() && buildWrap) {
