@@ -335,11 +335,12 @@ TEST(BadMeshes, SelfIntersectingCowEndsWithinTauOfItsWrap) {
   for (const Component& c : d.components) {
     EXPECT_FALSE(c.unresolved) << c.note;
     ofWrap += c.ofWrap;
-    // Every vertex of a wrap component lies on the wrap (cuts add no inner vertices), so within
-    // the wrap-to-input distance of the cow, measured here with the tests' own code.
+    // Vertices of a wrap component lie on the wrap or on its cut caps: within the wrap's distance
+    // to the cow plus tau (measured 0.090 against 0.068 + 0.05; the caps' vertices are not all on
+    // the wrap's surface, so the sampled Hausdorff distance alone does not bound them).
     double far = 0;
     for (const Vec3& p : c.mesh.vertices) far = std::max(far, input.distance(p));
-    EXPECT_LE(far * d.normalization.scale, d.wrap.hausdorff + 1e-9);
+    EXPECT_LE(far * d.normalization.scale, d.wrap.hausdorff + d.options.tau);
   }
   EXPECT_EQ(ofWrap, static_cast<int>(d.components.size()));
   EXPECT_LT(d.wrap.hausdorff, 0.1);
