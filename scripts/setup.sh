@@ -24,6 +24,7 @@ CORE_PKGS=(
     libtinyxml2-dev libtinygltf-dev
     liburdfdom-dev libsdformat-dev libbullet-dev
     clang libclang-rt-14-dev
+    pybind11-dev python3-pybind11 python3-dev python3-numpy python3-pytest dpkg-dev
 )
 # Optional: off-screen pictures (scripts/render.sh). Failure here is not fatal.
 PICTURE_PKGS=(f3d xvfb xauth)

@@ -10,6 +10,7 @@
 #include <acd/io.hpp>
 #include <acd/normalize.hpp>
 #include <acd/surface_exact.hpp>
+#include <acd/version.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -104,6 +105,7 @@ int runSolid(const std::string& model, const std::string& out, bool quiet) {
   const double inputVolume = diagnosis.volume;
   json j;
   j["model"] = model;
+  j["version"] = ACD_VERSION;
   j["method"] = "solid ECD (CGAL convex_decomposition_3 on an exact Nef polyhedron)";
   j["parameters"] = {{"time_limit_seconds", flags.timeLimit}, {"memory_limit_gib", flags.memoryGiB}};
   j["input"] = inputJson(r.mesh, diagnosis);
@@ -189,6 +191,7 @@ int runSurface(const std::string& model, const std::string& out, bool quiet) {
   }
   json j;
   j["model"] = model;
+  j["version"] = ACD_VERSION;
   j["method"] = "surface ECD (flood-and-retract convex patches)";
   j["parameters"] = {{"tolerance", flags.tolerance}, {"units", "normalised: minimum enclosing sphere radius 1"}};
   j["input"] = inputJson(r.mesh, diagnosis);

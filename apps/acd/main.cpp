@@ -14,6 +14,8 @@
 #include <acd/io.hpp>
 #include <acd/robust.hpp>
 #include <acd/scene_io.hpp>
+#include <acd/report.hpp>
+#include <acd/version.hpp>
 
 #include <CLI/CLI.hpp>
 #include "batch.hpp"
@@ -114,88 +116,6 @@ struct DecomposeArgs {
   std::string mesh;  // with --per-mesh: the name of the scene mesh being decomposed
 };
 
-json reportJson(const DecomposeArgs& a, const acd::Decomposition& d, const acd::MeshDiagnosis& input,
-               int selfIntersections) {
-  json j;
-  j["model"] = a.model;
-  if (!a.mesh.empty()) j["mesh"] = a.mesh;
-  j["parameters"] = {{"tau", d.options.tau},
-                     {"epsilon", d.options.epsilon},
-                     {"delta", d.options.delta},
-                     {"feature_grouping", d.options.featureGrouping},
-                     {"merge", d.options.merge},
-                     {"threads", d.options.threads},
-                     {"units", "normalised: minimum enclosing sphere radius 1"}};
-  const int edges = d.stats.inputEdges;
-  j["input"] = {{"vertices", input.vertices},
-                {"faces", input.faces},
-                {"edges", edges},
-                {"notches", d.stats.inputNotches},
-                {"notch_fraction", edges > 0 ? double(d.stats.inputNotches) / edges : 0.0},
-                {"volume", d.stats.inputVolume},
-                {"genus", input.genus},
-                {"self_intersecting_face_pairs", selfIntersections},
-                {"normalization", {{"center", {d.normalization.center.x(), d.normalization.center.y(), d.normalization.center.z()}},
-                                   {"scale", d.normalization.scale}}},
-                {"repairs", d.repairs},
-                {"holes_filled", d.stats.holesFilled},
-                {"wrap", {{"used", d.wrap.used},
-                          {"reason", d.wrap.reason},
-                          {"wrapped_pieces", d.wrap.wrappedPieces},
-                          {"alpha", d.wrap.alpha},
-                          {"offset", d.wrap.offset},
-                          {"hausdorff", d.wrap.hausdorff},
-                          {"wrap_to_input", d.wrap.wrapToInput},
-                          {"input_to_wrap", d.wrap.inputToWrap},
-                          {"faces", d.wrap.faces}}}};
-  json comps = json::array();
-  double volume = 0, hullVolume = 0, maxConcavity = 0;
-  int unresolved = 0;
-  for (std::size_t i = 0; i < d.components.size(); ++i) {
-    const auto& c = d.components[i];
-    comps.push_back({{"id", i},
-                     {"volume", c.volume},
-                     {"hull_volume", c.hullVolume},
-                     {"concavity", c.concavity},
-                     {"vertices", c.mesh.vertices.size()},
-                     {"faces", c.mesh.faces.size()},
-                     {"hull_vertices", c.hull.vertices.size()},
-                     {"hull_faces", c.hull.faces.size()},
-                     {"depth", c.depth},
-                     {"source_piece", c.source},
-                     {"unresolved", c.unresolved},
-                     {"of", c.ofWrap ? "wrap" : "input"}});
-    if (c.unresolved) comps.back()["note"] = c.note;
-    volume += c.volume;
-    hullVolume += c.hullVolume;
-    maxConcavity = std::max(maxConcavity, c.concavity);
-    unresolved += c.unresolved;
-  }
-  j["components"] = comps;
-  j["totals"] = {{"components", d.components.size()},
-                 {"volume", volume},
-                 {"hull_volume", hullVolume},
-                 {"volume_relative_error", d.stats.inputVolume > 0 ? std::abs(volume - d.stats.inputVolume) / d.stats.inputVolume : 0.0},
-                 {"max_concavity", maxConcavity},
-                 {"unresolved", unresolved},
-                 {"cuts", d.stats.cuts},
-                 {"fallback_cuts", d.stats.fallbackCuts},
-                 {"rejected_planes", d.stats.failedCuts},
-                 {"bridges_measured", d.stats.bridges},
-                 {"bridge_refinements", d.stats.refinements},
-                 {"merges", d.stats.merges}};
-  j["timing"] = {{"prepare_seconds", d.times.prepare},
-                 {"repair_seconds", d.repairSeconds},
-                 {"wrap_seconds", d.wrap.seconds},
-                 {"concavity_cpu_seconds", d.times.concavity},
-                 {"grouping_cpu_seconds", d.times.grouping},
-                 {"cutting_cpu_seconds", d.times.cutting},
-                 {"merging_seconds", d.times.merging},
-                 {"hulls_seconds", d.times.hulls},
-                 {"total_seconds", d.times.total}};
-  return j;
-}
-
 void printSummary(const DecomposeArgs& a, const acd::Decomposition& d) {
   const auto& cs = d.components;
   double volume = 0, hullVolume = 0, maxConcavity = 0;
@@ -233,7 +153,6 @@ int decomposeMesh(DecomposeArgs& a, const acd::TriMesh& mesh) {
   if (const int code = resolveTauAbs(a.sim, mesh, a.options); code != kOk) return code;
   const acd::Status valid = acd::validate(a.options);
   if (!valid.ok()) return fail("invalid parameter", valid);
-  const acd::MeshDiagnosis diagnosis = acd::diagnose(mesh);
   const bool showProgress = !a.quiet && isatty(fileno(stderr));
   if (showProgress)
     a.options.progress = [](int done, int pending) {
@@ -254,7 +173,9 @@ int decomposeMesh(DecomposeArgs& a, const acd::TriMesh& mesh) {
   // A self-intersecting solid is decomposed anyway: every cut that succeeds yields closed pieces;
   // where a section crosses itself no clean cut exists, and such a shell is decomposed through its
   // wrap (or, with --no-wrap, its components are flagged, never hidden).
-  const int selfIntersections = acd::countSelfIntersections(mesh);
+  acd::ReportInput input = acd::describeInput(a.model, mesh);
+  input.mesh = a.mesh;
+  const int selfIntersections = input.selfIntersections;
   if (selfIntersections > 0)
     std::fprintf(stderr, "acd: warning: %s intersects itself (%d face pairs); %s\n", a.model.c_str(), selfIntersections,
                  a.options.wrap ? "a shell left above tau there is decomposed through its wrap"
@@ -279,7 +200,8 @@ int decomposeMesh(DecomposeArgs& a, const acd::TriMesh& mesh) {
   if (const int code = writeSimulatorOutputs(a.sim, d, mesh, a.model, a.out, simReport); code != kOk) return code;
   std::ofstream report(fs::path(a.out) / "report.json");
   const bool anyUnresolved = std::any_of(d.components.begin(), d.components.end(), [](const auto& c) { return c.unresolved; });
-  json j = reportJson(a, d, diagnosis, selfIntersections);
+  // The library's report, plus the sections of the simulator post-passes (simulator.cpp).
+  json j = json::parse(acd::reportJson(input, d));
   for (std::size_t i = 0; i < simComponents.size() && i < j["components"].size(); ++i) j["components"][i].update(simComponents[i]);
   j.update(simReport);
   report << j.dump(2) << "\n";
@@ -352,24 +274,10 @@ int runEvaluate(const std::string& modelPath, const std::string& hullPath, acd::
   if (!r.status.ok()) return fail(modelPath, r.status);
   acd::ObjObjects hulls = acd::readObjObjects(hullPath);
   if (!hulls.status.ok()) return fail(hullPath, hulls.status);
-  const acd::PreparedSolid p = acd::prepareSolid(r.mesh);
-  if (!p.status.ok()) return fail(modelPath, p.status);
-  acd::TriMesh model;
-  for (const auto& c : p.components) {
-    const int base = static_cast<int>(model.vertices.size());
-    model.vertices.insert(model.vertices.end(), c.vertices.begin(), c.vertices.end());
-    for (auto f : c.faces) model.faces.push_back({f[0] + base, f[1] + base, f[2] + base});
-  }
-  const acd::Evaluation e = acd::evaluate(model, hulls.objects, options);
+  const acd::Evaluation e = acd::evaluateModel(r.mesh, hulls.objects, options);
   if (!e.status.ok()) return fail("evaluate", e.status);
   if (asJson) {
-    json j = {{"model", modelPath}, {"hulls_file", hullPath}, {"hulls", e.hulls}, {"model_volume", e.modelVolume},
-              {"union_volume", e.unionVolume}, {"union_volume_stderr", e.unionVolumeStdErr},
-              {"union_to_model", e.unionToModelRatio}, {"misclassified_share", e.misclassifiedShare},
-              {"iou", e.iou}, {"iou_stderr", e.iouStdErr}, {"hull_outside_max", e.hullOutsideMax},
-              {"hull_outside_mean", e.hullOutsideMean}, {"model_to_hulls_max", e.modelToHullsMax},
-              {"model_to_hulls_mean", e.modelToHullsMean}, {"seconds", e.seconds}};
-    std::cout << j.dump(2) << "\n";
+    std::cout << acd::evaluationJson(modelPath, hullPath, e);
     return kOk;
   }
   std::printf("  model            %s\n  hulls            %s (%d hulls)\n", modelPath.c_str(), hullPath.c_str(), e.hulls);
@@ -390,6 +298,7 @@ int main(int argc, char** argv) {
                "Lengths (tau, epsilon, delta) are in normalised units: the model scaled so that its\n"
                "minimum enclosing sphere has radius 1. Output meshes are in the input's coordinates."};
   app.footer(exitCodes());
+  app.set_version_flag("--version", std::string("acd ") + ACD_VERSION);
   app.require_subcommand(1);
 
   DecomposeArgs da;

@@ -5,8 +5,7 @@
 
 #include <acd/diagnosis.hpp>
 #include <acd/io.hpp>
-
-#include <nlohmann/json.hpp>
+#include <acd/report.hpp>
 
 #include <unistd.h>
 
@@ -16,7 +15,6 @@
 #include <fstream>
 
 namespace fs = std::filesystem;
-using json = nlohmann::json;
 
 namespace acdcli {
 
@@ -26,74 +24,6 @@ std::uintmax_t fileSize(const fs::path& p) {
   std::error_code ec;
   const auto n = fs::file_size(p, ec);
   return ec ? 0 : n;
-}
-
-json reportJson(const SurfaceArgs& a, const acd::SurfaceDecomposition& d, const acd::MeshDiagnosis& input,
-                int selfIntersections, std::uintmax_t bytes) {
-  const auto& o = d.options;
-  json j;
-  j["model"] = a.model;
-  j["method"] = "surface ACD";
-  j["parameters"] = {{"tau", o.tau},
-                     {"epsilon", o.epsilon},
-                     {"delta", o.delta},
-                     {"feature_grouping", o.featureGrouping},
-                     {"merge", o.merge},
-                     {"threads", o.threads},
-                     {"units", "normalised: minimum enclosing sphere radius 1"}};
-  const int edges = d.stats.inputEdges;
-  j["input"] = {{"vertices", input.vertices},
-                {"faces", input.faces},
-                {"edges", edges},
-                {"boundary_edges", d.stats.boundaryEdges},
-                {"notches", d.stats.inputNotches},
-                {"notch_fraction", edges > 0 ? double(d.stats.inputNotches) / edges : 0.0},
-                {"area", d.stats.inputArea},
-                {"genus", input.genus},
-                {"concave_hull_vertices", d.stats.concaveHullVertices},
-                {"self_intersecting_face_pairs", selfIntersections},
-                {"normalization", {{"center", {d.normalization.center.x(), d.normalization.center.y(), d.normalization.center.z()}},
-                                   {"scale", d.normalization.scale}}},
-                {"repairs", d.repairs}};
-  json comps = json::array();
-  double maxConcavity = 0, area = 0;
-  int unresolved = 0;
-  for (std::size_t i = 0; i < d.patches.size(); ++i) {
-    const auto& p = d.patches[i];
-    comps.push_back({{"id", i},
-                     {"faces", p.faces.size()},
-                     {"vertices", p.mesh.vertices.size()},
-                     {"area", p.area},
-                     {"concavity", p.concavity},
-                     {"hull_vertices", p.hull.vertices.size()},
-                     {"hull_faces", p.hull.faces.size()},
-                     {"depth", p.depth},
-                     {"source_piece", p.source},
-                     {"unresolved", p.unresolved}});
-    if (p.unresolved) comps.back()["note"] = p.note;
-    maxConcavity = std::max(maxConcavity, p.concavity);
-    area += p.area;
-    unresolved += p.unresolved;
-  }
-  j["components"] = comps;
-  j["totals"] = {{"finished", true},
-                 {"components", d.patches.size()},
-                 {"area", area},
-                 {"max_concavity", maxConcavity},
-                 {"unresolved", unresolved},
-                 {"splits", d.stats.splits},
-                 {"global_cut_splits", d.stats.globalCutSplits},
-                 {"plane_splits", d.stats.planeSplits},
-                 {"geodesic_splits", d.stats.geodesicSplits},
-                 {"merges", d.stats.merges},
-                 {"output_bytes", bytes}};
-  j["timing"] = {{"prepare_seconds", d.times.prepare},
-                 {"concavity_cpu_seconds", d.times.concavity},
-                 {"splitting_cpu_seconds", d.times.splitting},
-                 {"merging_seconds", d.times.merging},
-                 {"hulls_seconds", d.times.hulls},
-                 {"total_seconds", d.times.total}};
-  return j;
 }
 
 void printSummary(const SurfaceArgs& a, const acd::SurfaceDecomposition& d, std::uintmax_t bytes) {
@@ -132,7 +62,6 @@ int runSurfaceDecompose(SurfaceArgs& a) {
   if (!valid.ok()) return fail("invalid parameter", valid);
   acd::ReadResult r = acd::readMesh(a.model);
   if (!r.status.ok()) return fail(a.model, r.status);
-  const acd::MeshDiagnosis diagnosis = acd::diagnose(r.mesh);
   const bool showProgress = !a.quiet && isatty(fileno(stderr));
   if (showProgress)
     a.options.progress = [](int done, int pending) {
@@ -144,7 +73,8 @@ int runSurfaceDecompose(SurfaceArgs& a) {
   if (!d.status.ok()) return fail(a.model, d.status);
   // Splitting never cuts through the surface, so a surface that passes through itself is split
   // like any other; the patches then pass through each other where the input did.
-  const int selfIntersections = acd::countSelfIntersections(r.mesh);
+  const acd::ReportInput input = acd::describeInput(a.model, r.mesh);
+  const int selfIntersections = input.selfIntersections;
   if (selfIntersections > 0)
     std::fprintf(stderr, "acd: warning: %s intersects itself (%d face pairs); the patches intersect where it does\n",
                  a.model.c_str(), selfIntersections);
@@ -169,7 +99,7 @@ int runSurfaceDecompose(SurfaceArgs& a) {
   if (!acd::writeObjObjects(hullPath.string(), hulls, hullNames).ok()) return outputFailed(hullPath.string());
   const std::uintmax_t bytes = fileSize(patchPath);
   std::ofstream report(fs::path(a.out) / "report.json");
-  report << reportJson(a, d, diagnosis, selfIntersections, bytes).dump(2) << "\n";
+  report << acd::reportJson(input, d, bytes);
   if (!report) return outputFailed((fs::path(a.out) / "report.json").string());
   if (!a.quiet) printSummary(a, d, bytes);
   const bool anyUnresolved = std::any_of(d.patches.begin(), d.patches.end(), [](const auto& p) { return p.unresolved; });

@@ -10,6 +10,7 @@
 // Hulls: the convex hull of each input hull's vertices (so any input orientation or
 // non-convexity is harmless), as half-spaces n.x <= d for the volume test, as triangles
 // (a canonical fan per planar facet) for surface sampling and exact point-to-hull distances.
+#include <acd/diagnosis.hpp>
 #include <acd/evaluate.hpp>
 #include <acd/inside.hpp>
 #include <acd/normalize.hpp>
@@ -662,6 +663,22 @@ Evaluation evaluate(const TriMesh& model, const std::vector<TriMesh>& hulls, con
                         " hulls with fewer than 4 non-coplanar vertices";
   ev.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return ev;
+}
+
+Evaluation evaluateModel(const TriMesh& model, const std::vector<TriMesh>& hulls, const EvaluateOptions& options) {
+  const PreparedSolid prepared = prepareSolid(model);
+  if (!prepared.status.ok()) {
+    Evaluation failed;
+    failed.status = prepared.status;
+    return failed;
+  }
+  TriMesh joined;  // the repaired pieces, one mesh again
+  for (const TriMesh& piece : prepared.components) {
+    const int base = static_cast<int>(joined.vertices.size());
+    joined.vertices.insert(joined.vertices.end(), piece.vertices.begin(), piece.vertices.end());
+    for (const Face& f : piece.faces) joined.faces.push_back({f[0] + base, f[1] + base, f[2] + base});
+  }
+  return evaluate(joined, hulls, options);
 }
 
 }  // namespace acd

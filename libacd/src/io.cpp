@@ -949,26 +949,28 @@ Status writeMesh(const std::string& path, const TriMesh& mesh) {
   });
 }
 
+std::string objObjectsText(const std::vector<TriMesh>& meshes, const std::vector<std::string>& names) {
+  std::string out;
+  long long firstVertex = 0;
+  for (size_t i = 0; i < meshes.size() && i < names.size(); ++i) {
+    // A name is the rest of its line: no line breaks, and never empty.
+    std::string name = names[i];
+    std::replace(name.begin(), name.end(), '\n', ' ');
+    std::replace(name.begin(), name.end(), '\r', ' ');
+    if (name.find_first_not_of(" \t") == std::string::npos) name = "object_" + std::to_string(i);
+    out += "o " + name + "\n";
+    appendObjBody(out, meshes[i], firstVertex);
+    firstVertex += static_cast<long long>(meshes[i].vertices.size());
+  }
+  return out;
+}
+
 Status writeObjObjects(const std::string& path, const std::vector<TriMesh>& meshes,
                        const std::vector<std::string>& names) {
   if (meshes.size() != names.size())
     return Status::error(StatusCode::InvalidParameter, path + ": " + std::to_string(meshes.size()) + " meshes but " +
                                                            std::to_string(names.size()) + " names");
-  return guarded(path, [&]() -> Status {
-    std::string out;
-    long long firstVertex = 0;
-    for (size_t i = 0; i < meshes.size(); ++i) {
-      // A name is the rest of its line: no line breaks, and never empty.
-      std::string name = names[i];
-      std::replace(name.begin(), name.end(), '\n', ' ');
-      std::replace(name.begin(), name.end(), '\r', ' ');
-      if (name.find_first_not_of(" \t") == std::string::npos) name = "object_" + std::to_string(i);
-      out += "o " + name + "\n";
-      appendObjBody(out, meshes[i], firstVertex);
-      firstVertex += static_cast<long long>(meshes[i].vertices.size());
-    }
-    return writeWholeFile(path, out);
-  });
+  return guarded(path, [&]() -> Status { return writeWholeFile(path, objObjectsText(meshes, names)); });
 }
 
 ObjObjects readObjObjects(const std::string& path) {

@@ -45,4 +45,9 @@ struct Evaluation {
 Evaluation evaluate(const TriMesh& model, const std::vector<TriMesh>& hulls,
                     const EvaluateOptions& options = {});
 
+/// evaluate() on a mesh as read (what `acd evaluate` does): the model is first checked and
+/// repaired by prepareSolid (open meshes refused); a model it refuses comes back in `status`.
+Evaluation evaluateModel(const TriMesh& model, const std::vector<TriMesh>& hulls,
+                         const EvaluateOptions& options = {});
+
 }  // namespace acd

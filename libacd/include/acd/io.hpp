@@ -32,6 +32,9 @@ Status writeMesh(const std::string& path, const TriMesh& mesh);
 Status writeObjObjects(const std::string& path, const std::vector<TriMesh>& meshes,
                        const std::vector<std::string>& names);
 
+/// The text writeObjObjects writes (meshes.size() must equal names.size()).
+std::string objObjectsText(const std::vector<TriMesh>& meshes, const std::vector<std::string>& names);
+
 struct ObjObjects {
   Status status;
   std::vector<TriMesh> objects;  // one per `o` or `g` group, vertices compacted

@@ -1,0 +1,38 @@
+// report.json: the one description of a decomposition run. `acd decompose` writes it, the Python
+// module returns it as a dict; both get it from here, so the two can never disagree.
+#pragma once
+
+#include <acd/decompose.hpp>
+#include <acd/diagnosis.hpp>
+#include <acd/evaluate.hpp>
+#include <acd/surface_decompose.hpp>
+
+#include <cstdint>
+#include <string>
+
+namespace acd {
+
+/// What a report says about the input besides what the decomposition measured.
+struct ReportInput {
+  std::string model;          // the file as named by the caller (or a description of in-memory input)
+  std::string mesh;           // the scene mesh decomposed (acd decompose --per-mesh); empty: the whole file
+  MeshDiagnosis diagnosis;    // of the mesh as read, before repairs
+  int selfIntersections = 0;  // face pairs (countSelfIntersections); explains unresolved components
+};
+
+/// Diagnosis and self-intersection count of a mesh as read. Call it once the decomposition has
+/// accepted the mesh: counting self-intersections assumes valid indices and finite coordinates.
+ReportInput describeInput(const std::string& model, const TriMesh& mesh);
+
+/// report.json of a solid decomposition: JSON text, keys sorted, indented by 2, newline at the end.
+/// Every number is in normalised units except where the key says otherwise; see README.md.
+std::string reportJson(const ReportInput& input, const Decomposition& d);
+
+/// report.json of a surface decomposition; `outputBytes` is the size of patches.obj
+/// (objObjectsText(...).size() when nothing is written).
+std::string reportJson(const ReportInput& input, const SurfaceDecomposition& d, std::uintmax_t outputBytes);
+
+/// What `acd evaluate --json` prints, same conventions.
+std::string evaluationJson(const std::string& model, const std::string& hullsFile, const Evaluation& e);
+
+}  // namespace acd

@@ -1,0 +1,200 @@
+#include <acd/report.hpp>
+#include <acd/version.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace acd {
+
+using json = nlohmann::json;
+
+namespace {
+
+const char* const kUnits = "normalised: minimum enclosing sphere radius 1";
+
+json normalizationJson(const Normalization& n) {
+  return {{"center", {n.center.x(), n.center.y(), n.center.z()}}, {"scale", n.scale}};
+}
+
+std::string text(const json& j) { return j.dump(2) + "\n"; }
+
+}  // namespace
+
+ReportInput describeInput(const std::string& model, const TriMesh& mesh) {
+  ReportInput in;
+  in.model = model;
+  in.diagnosis = diagnose(mesh);
+  in.selfIntersections = countSelfIntersections(mesh);
+  return in;
+}
+
+std::string reportJson(const ReportInput& in, const Decomposition& d) {
+  json j;
+  j["model"] = in.model;
+  if (!in.mesh.empty()) j["mesh"] = in.mesh;
+  j["version"] = ACD_VERSION;
+  j["parameters"] = {{"tau", d.options.tau},
+                     {"epsilon", d.options.epsilon},
+                     {"delta", d.options.delta},
+                     {"feature_grouping", d.options.featureGrouping},
+                     {"merge", d.options.merge},
+                     {"threads", d.options.threads},
+                     {"units", kUnits}};
+  const int edges = d.stats.inputEdges;
+  j["input"] = {{"vertices", in.diagnosis.vertices},
+                {"faces", in.diagnosis.faces},
+                {"edges", edges},
+                {"notches", d.stats.inputNotches},
+                {"notch_fraction", edges > 0 ? double(d.stats.inputNotches) / edges : 0.0},
+                {"volume", d.stats.inputVolume},
+                {"genus", in.diagnosis.genus},
+                {"self_intersecting_face_pairs", in.selfIntersections},
+                {"normalization", normalizationJson(d.normalization)},
+                {"repairs", d.repairs},
+                {"holes_filled", d.stats.holesFilled},
+                {"wrap", {{"used", d.wrap.used},
+                          {"reason", d.wrap.reason},
+                          {"wrapped_pieces", d.wrap.wrappedPieces},
+                          {"alpha", d.wrap.alpha},
+                          {"offset", d.wrap.offset},
+                          {"hausdorff", d.wrap.hausdorff},
+                          {"wrap_to_input", d.wrap.wrapToInput},
+                          {"input_to_wrap", d.wrap.inputToWrap},
+                          {"faces", d.wrap.faces}}}};
+  json comps = json::array();
+  double volume = 0, hullVolume = 0, maxConcavity = 0;
+  int unresolved = 0;
+  for (std::size_t i = 0; i < d.components.size(); ++i) {
+    const auto& c = d.components[i];
+    comps.push_back({{"id", i},
+                     {"volume", c.volume},
+                     {"hull_volume", c.hullVolume},
+                     {"concavity", c.concavity},
+                     {"vertices", c.mesh.vertices.size()},
+                     {"faces", c.mesh.faces.size()},
+                     {"hull_vertices", c.hull.vertices.size()},
+                     {"hull_faces", c.hull.faces.size()},
+                     {"depth", c.depth},
+                     {"source_piece", c.source},
+                     {"unresolved", c.unresolved},
+                     {"of", c.ofWrap ? "wrap" : "input"}});
+    if (c.unresolved) comps.back()["note"] = c.note;
+    volume += c.volume;
+    hullVolume += c.hullVolume;
+    maxConcavity = std::max(maxConcavity, c.concavity);
+    unresolved += c.unresolved;
+  }
+  j["components"] = comps;
+  j["totals"] = {{"components", d.components.size()},
+                 {"volume", volume},
+                 {"hull_volume", hullVolume},
+                 {"volume_relative_error", d.stats.inputVolume > 0 ? std::abs(volume - d.stats.inputVolume) / d.stats.inputVolume : 0.0},
+                 {"max_concavity", maxConcavity},
+                 {"unresolved", unresolved},
+                 {"cuts", d.stats.cuts},
+                 {"fallback_cuts", d.stats.fallbackCuts},
+                 {"rejected_planes", d.stats.failedCuts},
+                 {"bridges_measured", d.stats.bridges},
+                 {"bridge_refinements", d.stats.refinements},
+                 {"merges", d.stats.merges}};
+  j["timing"] = {{"prepare_seconds", d.times.prepare},
+                 {"repair_seconds", d.repairSeconds},
+                 {"wrap_seconds", d.wrap.seconds},
+                 {"concavity_cpu_seconds", d.times.concavity},
+                 {"grouping_cpu_seconds", d.times.grouping},
+                 {"cutting_cpu_seconds", d.times.cutting},
+                 {"merging_seconds", d.times.merging},
+                 {"hulls_seconds", d.times.hulls},
+                 {"total_seconds", d.times.total}};
+  return text(j);
+}
+
+std::string reportJson(const ReportInput& in, const SurfaceDecomposition& d, std::uintmax_t outputBytes) {
+  const auto& o = d.options;
+  json j;
+  j["model"] = in.model;
+  j["version"] = ACD_VERSION;
+  j["method"] = "surface ACD";
+  j["parameters"] = {{"tau", o.tau},
+                     {"epsilon", o.epsilon},
+                     {"delta", o.delta},
+                     {"feature_grouping", o.featureGrouping},
+                     {"merge", o.merge},
+                     {"threads", o.threads},
+                     {"units", kUnits}};
+  const int edges = d.stats.inputEdges;
+  j["input"] = {{"vertices", in.diagnosis.vertices},
+                {"faces", in.diagnosis.faces},
+                {"edges", edges},
+                {"boundary_edges", d.stats.boundaryEdges},
+                {"notches", d.stats.inputNotches},
+                {"notch_fraction", edges > 0 ? double(d.stats.inputNotches) / edges : 0.0},
+                {"area", d.stats.inputArea},
+                {"genus", in.diagnosis.genus},
+                {"concave_hull_vertices", d.stats.concaveHullVertices},
+                {"self_intersecting_face_pairs", in.selfIntersections},
+                {"normalization", normalizationJson(d.normalization)},
+                {"repairs", d.repairs}};
+  json comps = json::array();
+  double maxConcavity = 0, area = 0;
+  int unresolved = 0;
+  for (std::size_t i = 0; i < d.patches.size(); ++i) {
+    const auto& p = d.patches[i];
+    comps.push_back({{"id", i},
+                     {"faces", p.faces.size()},
+                     {"vertices", p.mesh.vertices.size()},
+                     {"area", p.area},
+                     {"concavity", p.concavity},
+                     {"hull_vertices", p.hull.vertices.size()},
+                     {"hull_faces", p.hull.faces.size()},
+                     {"depth", p.depth},
+                     {"source_piece", p.source},
+                     {"unresolved", p.unresolved}});
+    if (p.unresolved) comps.back()["note"] = p.note;
+    maxConcavity = std::max(maxConcavity, p.concavity);
+    area += p.area;
+    unresolved += p.unresolved;
+  }
+  j["components"] = comps;
+  j["totals"] = {{"finished", true},
+                 {"components", d.patches.size()},
+                 {"area", area},
+                 {"max_concavity", maxConcavity},
+                 {"unresolved", unresolved},
+                 {"splits", d.stats.splits},
+                 {"global_cut_splits", d.stats.globalCutSplits},
+                 {"plane_splits", d.stats.planeSplits},
+                 {"geodesic_splits", d.stats.geodesicSplits},
+                 {"merges", d.stats.merges},
+                 {"output_bytes", outputBytes}};
+  j["timing"] = {{"prepare_seconds", d.times.prepare},
+                 {"concavity_cpu_seconds", d.times.concavity},
+                 {"splitting_cpu_seconds", d.times.splitting},
+                 {"merging_seconds", d.times.merging},
+                 {"hulls_seconds", d.times.hulls},
+                 {"total_seconds", d.times.total}};
+  return text(j);
+}
+
+std::string evaluationJson(const std::string& model, const std::string& hullsFile, const Evaluation& e) {
+  const json j = {{"model", model},
+                  {"hulls_file", hullsFile},
+                  {"hulls", e.hulls},
+                  {"model_volume", e.modelVolume},
+                  {"union_volume", e.unionVolume},
+                  {"union_volume_stderr", e.unionVolumeStdErr},
+                  {"union_to_model", e.unionToModelRatio},
+                  {"misclassified_share", e.misclassifiedShare},
+                  {"iou", e.iou},
+                  {"iou_stderr", e.iouStdErr},
+                  {"hull_outside_max", e.hullOutsideMax},
+                  {"hull_outside_mean", e.hullOutsideMean},
+                  {"model_to_hulls_max", e.modelToHullsMax},
+                  {"model_to_hulls_mean", e.modelToHullsMean},
+                  {"seconds", e.seconds}};
+  return text(j);
+}
+
+}  // namespace acd

@@ -1,0 +1,126 @@
+"""The functions of the acd package: decompose, decompose_surface, evaluate, diagnose."""
+import json
+import os
+import warnings
+from typing import List, NamedTuple
+
+import numpy as np
+
+from . import _core
+from ._meshes import Mesh, meshes, resolve
+from ._options import build, with_options
+
+
+class Decomposition(NamedTuple):
+    """Solid ACD: ``components`` (closed, outward Mesh each, input coordinates), ``hulls``
+    (their convex hulls, same order) and ``report`` (report.json of ``acd decompose`` as a dict)."""
+
+    components: List[Mesh]
+    hulls: List[Mesh]
+    report: dict
+
+
+class SurfaceDecomposition(NamedTuple):
+    """Surface ACD: ``components`` (the patches, open meshes in input coordinates), ``hulls``
+    (one per patch; empty arrays for a flat patch), ``report`` (report.json of
+    ``acd decompose --surface``), ``surface`` (the input after repairs) and ``patch_faces``
+    (each patch's face indices into ``surface``; together every face once)."""
+
+    components: List[Mesh]
+    hulls: List[Mesh]
+    report: dict
+    surface: Mesh
+    patch_faces: List[np.ndarray]
+
+
+def _report(text, path):
+    report = json.loads(text)
+    report["model"] = path  # None for arrays
+    return report
+
+
+def _warn(report, what):
+    # The command line's warnings, as Python warnings.
+    pairs = report["input"]["self_intersecting_face_pairs"]
+    if pairs > 0:
+        warnings.warn(f"the model intersects itself ({pairs} face pairs); {what} where it does", RuntimeWarning,
+                      stacklevel=3)
+    if report["totals"]["unresolved"] > 0:
+        warnings.warn(f"{report['totals']['unresolved']} component(s) still exceed tau "
+                      "(marked unresolved in the report)", RuntimeWarning, stacklevel=3)
+
+
+@with_options(_core.DecomposeOptions)
+def decompose(mesh, faces=None, *, progress=None, **options) -> Decomposition:
+    """Solid approximate convex decomposition: every component ends with concavity <= tau
+    (normalised units: the model scaled so that its minimum enclosing sphere has radius 1).
+
+    ``mesh``: a path (OFF, OBJ, PLY, STL), a Mesh or (vertices, faces) pair, an object with
+    ``vertices`` and ``faces`` (a trimesh.Trimesh), or an (n, 3) float array with ``faces`` an
+    (m, 3) int array. ``progress(done, pending)`` is called after each round of cuts.
+    The GIL is released while the library works. Bad input or parameters raise acd.Error (a
+    ValueError) with the library's message; an exception from ``progress`` is raised when the
+    decomposition finishes.
+    """
+    settings = build(_core.DecomposeOptions, options, "decompose")
+    _core.validate(settings)  # before reading the model, as the command does
+    vertices, faces, path = resolve(mesh, faces)
+    parts, hulls, text = _core.decompose(vertices, faces, settings, path or "", progress)
+    report = _report(text, path)
+    _warn(report, "pieces whose sections cross themselves may stay above tau")
+    return Decomposition(meshes(parts), meshes(hulls), report)
+
+
+@with_options(_core.SurfaceDecomposeOptions)
+def decompose_surface(mesh, faces=None, *, progress=None, **options) -> SurfaceDecomposition:
+    """Surface ACD (Section 4.3 of the paper): the surface is split along global cuts into
+    patches whose concavity is at most tau; open meshes stay open. Arguments as for decompose.
+    """
+    settings = build(_core.SurfaceDecomposeOptions, options, "decompose_surface")
+    _core.validate(settings)
+    vertices, faces, path = resolve(mesh, faces)
+    patches, hulls, text, surface, patch_faces = _core.decompose_surface(vertices, faces, settings, path or "",
+                                                                          progress)
+    report = _report(text, path)
+    _warn(report, "the patches intersect")
+    return SurfaceDecomposition(meshes(patches), meshes(hulls), report, Mesh(*surface), list(patch_faces))
+
+
+@with_options(_core.EvaluateOptions)
+def evaluate(model, hulls, *, model_faces=None, **options) -> dict:
+    """How well a set of convex hulls approximates a closed model, as ``acd evaluate --json``
+    (normalised units; volumes are Monte-Carlo estimates with standard errors).
+
+    ``model``: as ``mesh`` for decompose (``model_faces`` with a vertex array). ``hulls``: an OBJ
+    path (one object per hull), a Decomposition, or a sequence of meshes; every hull is replaced by
+    the convex hull of its vertices.
+    """
+    settings = build(_core.EvaluateOptions, options, "evaluate")
+    vertices, faces, path = resolve(model, model_faces)
+    hulls_file = None
+    if isinstance(hulls, (str, os.PathLike)):
+        hulls_file = os.fspath(hulls)
+        pairs = _core.read_obj_objects(hulls_file)
+    else:
+        if isinstance(hulls, (Decomposition, SurfaceDecomposition)):
+            hulls = [h for h in hulls.hulls if len(h.faces) > 0]
+        pairs = [resolve(h)[:2] for h in hulls]
+    result = json.loads(_core.evaluate(vertices, faces, pairs, settings, path or "", hulls_file or ""))
+    result["model"], result["hulls_file"] = path, hulls_file
+    return result
+
+
+def diagnose(mesh, faces=None) -> dict:
+    """What ``acd info`` prints, as a dict: counts of vertices, faces, edges, boundary and
+    non-manifold elements, degenerate and duplicate faces, orientation, closedness, genus (None when
+    undefined), volume and area (input units), bbox, the first problem found, self-intersecting face
+    pairs (None when not counted), whether a solid decomposition is possible and the repairs it needs.
+    Never raises for a bad mesh: that is what it reports.
+    """
+    vertices, faces, path = resolve(mesh, faces)
+    result = _core.diagnose(vertices, faces)
+    result["model"] = path
+    return result
+
+
+__all__ = ["Decomposition", "SurfaceDecomposition", "decompose", "decompose_surface", "evaluate", "diagnose"]

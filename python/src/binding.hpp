@@ -1,0 +1,42 @@
+// Shared pieces of the Python extension acd._core: numpy <-> TriMesh, and library Status -> acd.Error.
+#pragma once
+
+#include <acd/mesh.hpp>
+#include <acd/status.hpp>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <cstdint>
+#include <exception>
+#include <string>
+
+namespace acdpy {
+
+namespace py = pybind11;
+
+using Vertices = py::array_t<double, py::array::c_style | py::array::forcecast>;
+using Faces = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
+
+/// A failed acd::Status on its way to Python, where it becomes acd.Error (a ValueError).
+struct StatusError : std::exception {
+  acd::Status status;
+  explicit StatusError(acd::Status s) : status(std::move(s)) {}
+  const char* what() const noexcept override { return status.message.c_str(); }
+};
+
+inline void check(const acd::Status& s) {
+  if (!s.ok()) throw StatusError(s);
+}
+
+/// (n,3) float64 and (m,3) int64 arrays (the Python layer checks shapes and dtypes first) to a mesh.
+/// An index that does not fit an int raises IndexOutOfRange; other bad indices are the library's to report.
+acd::TriMesh toMesh(const Vertices& vertices, const Faces& faces);
+
+/// (vertices (n,3) float64, faces (m,3) int64), the layout trimesh and numpy code expect.
+py::tuple toArrays(const acd::TriMesh& mesh);
+
+void bindErrors(py::module_& m);   // acd._core.Error, acd._core.StatusCode
+void bindOptions(py::module_& m);  // option classes with the CLI's keywords and defaults
+
+}  // namespace acdpy
