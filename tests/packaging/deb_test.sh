@@ -24,7 +24,7 @@ dpkg-deb -x "$deb" "$ROOT"
 echo "acd --version: acd $VERSION"
 
 # A unit cube: one component.
-cat >"$TMP/cube.off" <<'OFF'
+cat >"$TMP/cube.off" <<'MESH'
 OFF
 8 12 0
 0 0 0
@@ -47,7 +47,7 @@ OFF
 3 2 7 6
 3 3 0 4
 3 3 4 7
-OFF
+MESH
 "$ROOT/usr/bin/acd" decompose "$TMP/cube.off" -q -o "$TMP/out"
 grep -q "\"version\": \"$VERSION\"" "$TMP/out/report.json"
 
