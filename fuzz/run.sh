@@ -18,7 +18,7 @@ case "$name" in
     *) echo "run.sh: unknown harness $name" >&2; exit 2 ;;
 esac
 if [[ "$kind" == decompose ]]; then
-    # A few dozen faces and at most 24 components: the slowest input seen took 0.8 s in the
+    # A few dozen faces, at most 24 components, the wrap only at tau >= 0.1: the slowest input seen took 0.8 s in the
     # Release build and about 30 s under the sanitizers on a loaded machine; 120 s means a hang.
     settings=(-timeout=120 -max_len=256)
 else
