@@ -163,9 +163,8 @@ int decomposeMesh(DecomposeArgs& a, const acd::TriMesh& mesh) {
   if (showProgress) std::fprintf(stderr, "\r%60s\r", "");
   for (const auto& line : d.repairs) std::fprintf(stderr, "acd: %s: repaired: %s\n", a.model.c_str(), line.c_str());
   if (!d.status.ok()) return fail(a.model, d.status);
-  json simReport = json::object();
-  std::vector<json> simComponents;
-  if (const int code = applyPostPasses(a.sim, d, a.quiet, simReport, simComponents); code != kOk) return code;
+  acd::PostPassResult post;  // --max-hulls, --max-hull-vertices, the mass properties (simulator.cpp)
+  if (const int code = applyPostPasses(a.sim, d, a.quiet, post); code != kOk) return code;
   if (d.wrap.used)
     std::fprintf(stderr, "acd: %s: decomposed through a watertight wrap (%d pieces; alpha %g, offset %g; Hausdorff distance "
                  "to the input %.4g, wrap to input %.4g; normalised units)\n", a.model.c_str(), d.wrap.wrappedPieces,
@@ -197,13 +196,13 @@ int decomposeMesh(DecomposeArgs& a, const acd::TriMesh& mesh) {
   }
   acd::Status s = acd::writeObjObjects((fs::path(a.out) / "hulls.obj").string(), hulls, names);
   if (!s.ok()) return (void)fail("output", s), kOutputFailed;
-  if (const int code = writeSimulatorOutputs(a.sim, d, mesh, a.model, a.out, simReport); code != kOk) return code;
+  json outputs = json::object();  // --format: the files written
+  if (const int code = writeSimulatorOutputs(a.sim, d, mesh, a.model, a.out, outputs); code != kOk) return code;
   std::ofstream report(fs::path(a.out) / "report.json");
   const bool anyUnresolved = std::any_of(d.components.begin(), d.components.end(), [](const auto& c) { return c.unresolved; });
-  // The library's report, plus the sections of the simulator post-passes (simulator.cpp).
-  json j = json::parse(acd::reportJson(input, d));
-  for (std::size_t i = 0; i < simComponents.size() && i < j["components"].size(); ++i) j["components"][i].update(simComponents[i]);
-  j.update(simReport);
+  // The library's report with the post-passes' sections, plus the simulator files written.
+  json j = json::parse(acd::reportJson(input, d, post));
+  j.update(outputs);
   report << j.dump(2) << "\n";
   if (!report) return (void)fail("output", acd::Status::error(acd::StatusCode::FileUnreadable, "cannot write report.json")), kOutputFailed;
   if (!a.quiet) printSummary(a, d);

@@ -1,8 +1,10 @@
-// acd decompose, simulator-ready output (simulator.cpp): --tau-abs, --max-hulls,
-// --max-hull-vertices, --density and --format, applied as post-passes on the decomposition.
+// acd decompose, simulator-ready output (simulator.cpp): the options --tau-abs, --max-hulls,
+// --max-hull-vertices and --density of the post-passes (libacd: acd/post_passes.hpp), and
+// --format, the simulator files written from the result.
 #pragma once
 
 #include <acd/decompose.hpp>
+#include <acd/post_passes.hpp>
 #include <acd/simulator_export.hpp>
 
 #include <CLI/CLI.hpp>
@@ -20,6 +22,7 @@ struct SimulatorArgs {
   double density = 1000.0;         // mass per unit length cubed (kg/m^3 for a model in metres)
   std::vector<std::string> formats;
   std::vector<acd::SimFormat> parsed;
+  acd::PostPassOptions post;       // the options given, for the library (validateSimulatorArgs)
   CLI::Option* tauOption = nullptr;  // -t, to refuse -t together with --tau-abs
 };
 
@@ -29,18 +32,17 @@ void addSimulatorOptions(CLI::App& decompose, SimulatorArgs& args);
 /// Whether any simulator option was given (they apply to solid decomposition only).
 bool simulatorRequested(const SimulatorArgs& args);
 
-/// Checks the values before any work; returns an exit code (0: fine), the reason on stderr.
+/// Checks the values before any work and fills `post` and `parsed`; returns an exit code (0:
+/// fine), the reason on stderr.
 int validateSimulatorArgs(SimulatorArgs& args, const CLI::App& decompose);
 
 /// --tau-abs: sets options.tau to D in the normalised units of `mesh` (as decompose() will
 /// normalise it). Returns an exit code.
 int resolveTauAbs(const SimulatorArgs& args, const acd::TriMesh& mesh, acd::DecomposeOptions& options);
 
-/// After decompose(): the hull budget, then the vertex cap (d's hulls replaced). `report`
-/// gets the sections "tau_abs", "hull_budget", "hull_vertex_cap" and "mass_properties", and
-/// `perComponent[i]` extra fields of component i. Returns an exit code; messages on stderr.
-int applyPostPasses(const SimulatorArgs& args, acd::Decomposition& d, bool quiet, nlohmann::json& report,
-                    std::vector<nlohmann::json>& perComponent);
+/// After decompose(): acd::applyPostPasses (d's components and hulls replaced), with the
+/// budget's note on stderr. Returns an exit code; a failure's message on stderr.
+int applyPostPasses(const SimulatorArgs& args, acd::Decomposition& d, bool quiet, acd::PostPassResult& result);
 
 /// Writes the --format files into `out`: the hulls of `d`, the input mesh as the visual, the
 /// model named after its file; adds "outputs" to `report`. Returns an exit code.

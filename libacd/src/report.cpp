@@ -30,7 +30,9 @@ ReportInput describeInput(const std::string& model, const TriMesh& mesh) {
   return in;
 }
 
-std::string reportJson(const ReportInput& in, const Decomposition& d) {
+namespace {
+
+json solidReport(const ReportInput& in, const Decomposition& d) {
   json j;
   j["model"] = in.model;
   if (!in.mesh.empty()) j["mesh"] = in.mesh;
@@ -108,6 +110,77 @@ std::string reportJson(const ReportInput& in, const Decomposition& d) {
                  {"merging_seconds", d.times.merging},
                  {"hulls_seconds", d.times.hulls},
                  {"total_seconds", d.times.total}};
+  return j;
+}
+
+json vec(const Vec3& v) { return json::array({v.x(), v.y(), v.z()}); }
+
+json matrix(const Eigen::Matrix3d& m) {
+  json rows = json::array();
+  for (int r = 0; r < 3; ++r) rows.push_back(json::array({m(r, 0), m(r, 1), m(r, 2)}));
+  return rows;
+}
+
+/// The sections of the post-passes, and their fields of each component, added to `j`.
+void addPostPasses(json& j, const Decomposition& d, const PostPassResult& p) {
+  const double radius = 1.0 / d.normalization.scale;  // one normalised unit in input units
+  if (p.tauAbs)
+    j["tau_abs"] = {{"given", *p.tauAbs}, {"tau", d.options.tau}, {"tau_input_units", d.options.tau * radius},
+                    {"normalised_unit_in_input_units", radius}};
+  if (p.budget) {
+    const HullBudgetSummary& b = *p.budget;
+    j["hull_budget"] = {{"max_hulls", b.maxHulls},
+                        {"components_before", b.before},
+                        {"components_after", b.after},
+                        {"glued_merges", b.gluedMerges},
+                        {"joined_merges", b.joinedMerges},
+                        {"max_concavity", b.maxConcavity},
+                        {"max_concavity_input_units", b.maxConcavity * radius},
+                        {"tau", b.tau},
+                        {"exceeds_tau", b.exceedsTau},
+                        {"seconds", b.seconds}};
+  }
+  if (p.cap) {
+    const HullVertexCapSummary& c = *p.cap;
+    j["hull_vertex_cap"] = {{"max_hull_vertices", c.maxHullVertices},
+                            {"hulls", c.hulls},
+                            {"within_cap", c.withinCap},
+                            {"unchanged", c.unchanged},
+                            {"most_vertices", c.mostVertices},
+                            {"uncapped_hull_volume", c.uncappedHullVolume},
+                            {"added_volume", c.addedVolume},
+                            {"added_volume_input_units", c.addedVolume * std::pow(radius, 3)},
+                            {"added_relative", c.uncappedHullVolume > 0 ? c.addedVolume / c.uncappedHullVolume : 0.0},
+                            {"units", "normalised (volumes); see normalization"}};
+  }
+  j["mass_properties"] = {{"units", "input units; mass = density x volume"},
+                          {"density", p.density},
+                          {"volume", p.mass.volume},
+                          {"mass", p.mass.mass},
+                          {"center_of_mass", vec(p.mass.centerOfMass)},
+                          {"inertia_about_center_of_mass", matrix(p.mass.inertia)},
+                          {"principal_moments", vec(p.mass.principalMoments)}};
+  json& components = j["components"];
+  for (std::size_t i = 0; i < p.components.size() && i < components.size(); ++i) {
+    const ComponentPostPass& c = p.components[i];
+    json& out = components[i];
+    if (c.hullGapMeasure) {
+      out["merged_from"] = c.mergedFrom;
+      out["concavity_measure"] = *c.hullGapMeasure ? "hull_gap" : "concavity";
+    }
+    if (c.uncappedHullVertices) out["uncapped_hull_vertices"] = *c.uncappedHullVertices;
+    if (c.uncappedHullVolume) out["uncapped_hull_volume"] = *c.uncappedHullVolume;
+    if (c.addedVolume) out["added_volume"] = *c.addedVolume;
+  }
+}
+
+}  // namespace
+
+std::string reportJson(const ReportInput& in, const Decomposition& d) { return text(solidReport(in, d)); }
+
+std::string reportJson(const ReportInput& in, const Decomposition& d, const PostPassResult& post) {
+  json j = solidReport(in, d);
+  addPostPasses(j, d, post);
   return text(j);
 }
 

@@ -5,6 +5,7 @@
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/evaluate.hpp>
+#include <acd/post_passes.hpp>
 #include <acd/surface_decompose.hpp>
 
 #include <cstdint>
@@ -27,6 +28,10 @@ ReportInput describeInput(const std::string& model, const TriMesh& mesh);
 /// report.json of a solid decomposition: JSON text, keys sorted, indented by 2, newline at the end.
 /// Every number is in normalised units except where the key says otherwise; see README.md.
 std::string reportJson(const ReportInput& input, const Decomposition& d);
+
+/// The same with the sections of the post-passes that ran (acd/post_passes.hpp): "tau_abs",
+/// "hull_budget", "hull_vertex_cap", "mass_properties", and their fields of each component.
+std::string reportJson(const ReportInput& input, const Decomposition& d, const PostPassResult& post);
 
 /// report.json of a surface decomposition; `outputBytes` is the size of patches.obj
 /// (objObjectsText(...).size() when nothing is written).
