@@ -1,4 +1,4 @@
-"""The functions of the acd package: decompose, decompose_surface, evaluate, diagnose."""
+"""The functions of the acd package: decompose, write_simulator_files, decompose_surface, evaluate, diagnose."""
 import json
 import os
 import warnings
@@ -48,6 +48,11 @@ def _warn(report, what):
     if report["totals"]["unresolved"] > 0:
         warnings.warn(f"{report['totals']['unresolved']} component(s) still exceed tau "
                       "(marked unresolved in the report)", RuntimeWarning, stacklevel=3)
+    budget = report.get("hull_budget")
+    if budget and budget["exceeds_tau"] and budget["components_after"] < budget["components_before"]:
+        warnings.warn(f"max_hulls={budget['max_hulls']}: merging {budget['components_before']} components into "
+                      f"{budget['components_after']} reached concavity {budget['max_concavity']:.4g}, above "
+                      f"tau = {budget['tau']:g} (report['hull_budget'])", RuntimeWarning, stacklevel=3)
 
 
 @with_options(_core.DecomposeOptions)
@@ -61,6 +66,12 @@ def decompose(mesh, faces=None, *, progress=None, **options) -> Decomposition:
     The GIL is released while the library works. Bad input or parameters raise acd.Error (a
     ValueError) with the library's message; an exception from ``progress`` is raised when the
     decomposition finishes.
+
+    For simulators, as on the command line: ``tau_abs`` (tau as a length in the input's units,
+    instead of ``tau``), ``max_hulls`` (merge components until at most N remain),
+    ``max_hull_vertices`` (every hull replaced by a containing polytope of at most K >= 4
+    corners) and ``density`` (report["mass_properties"]); None: not applied.
+    ``write_simulator_files`` writes the result as URDF, MJCF, SDF, glTF, OBJ or STL.
     """
     settings = build(_core.DecomposeOptions, options, "decompose")
     _core.validate(settings)  # before reading the model, as the command does
@@ -69,6 +80,27 @@ def decompose(mesh, faces=None, *, progress=None, **options) -> Decomposition:
     report = _report(text, path)
     _warn(report, "pieces whose sections cross themselves may stay above tau")
     return Decomposition(meshes(parts), meshes(hulls), report)
+
+
+def write_simulator_files(folder, decomposition, model, formats=("urdf",), *, name=None, model_faces=None):
+    """The files of ``acd decompose --format`` for a Decomposition, written into ``folder``
+    (created if needed): ``formats`` among "obj", "stl" (one file per hull), "glb", "gltf",
+    "urdf", "mjcf", "sdf" (docs/SIMULATORS.md has the layout). ``model``: the mesh that was
+    decomposed, as for decompose (``model_faces`` with a vertex array), the visual of URDF, MJCF
+    and SDF; ``name``: the body's name (default: the model file's name, else "model"). Mass and
+    inertia are the components' at the density the decomposition used. Returns the paths written,
+    relative to ``folder``.
+    """
+    if isinstance(formats, str):
+        formats = formats.split(",")
+    vertices, faces, path = resolve(model, model_faces)
+    if name is None:
+        name = os.path.splitext(os.path.basename(path))[0] if path else "model"
+    density = decomposition.report["mass_properties"]["density"]
+    folder = os.fspath(folder)
+    os.makedirs(folder, exist_ok=True)
+    return _core.write_simulator_files(folder, name, (vertices, faces), [tuple(h) for h in decomposition.hulls],
+                                       [tuple(c) for c in decomposition.components], density, list(formats))
 
 
 @with_options(_core.SurfaceDecomposeOptions)
@@ -123,4 +155,5 @@ def diagnose(mesh, faces=None) -> dict:
     return result
 
 
-__all__ = ["Decomposition", "SurfaceDecomposition", "decompose", "decompose_surface", "evaluate", "diagnose"]
+__all__ = ["Decomposition", "SurfaceDecomposition", "decompose", "decompose_surface", "evaluate", "diagnose",
+           "write_simulator_files"]

@@ -1,7 +1,9 @@
 // Shared pieces of the Python extension acd._core: numpy <-> TriMesh, and library Status -> acd.Error.
 #pragma once
 
+#include <acd/decompose.hpp>
 #include <acd/mesh.hpp>
+#include <acd/post_passes.hpp>
 #include <acd/status.hpp>
 
 #include <pybind11/numpy.h>
@@ -28,6 +30,17 @@ struct StatusError : std::exception {
 inline void check(const acd::Status& s) {
   if (!s.ok()) throw StatusError(s);
 }
+
+/// acd.decompose's keywords: the options of the decomposition and of the post-passes that follow
+/// it, as `acd decompose` has both.
+struct SolidOptions {
+  acd::DecomposeOptions decompose;
+  acd::PostPassOptions post;
+  bool tauGiven = false;  // tau and tau_abs together are refused, as -t and --tau-abs are
+};
+
+/// The checks `acd decompose` makes before reading the model (tau itself waits for tau_abs).
+acd::Status validate(const SolidOptions& options);
 
 /// (n,3) float64 and (m,3) int64 arrays (the Python layer checks shapes and dtypes first) to a mesh.
 /// An index that does not fit an int raises IndexOutOfRange; other bad indices are the library's to report.

@@ -7,11 +7,14 @@
 #include <acd/evaluate.hpp>
 #include <acd/io.hpp>
 #include <acd/report.hpp>
+#include <acd/simulator_export.hpp>
 #include <acd/surface_decompose.hpp>
 #include <acd/version.hpp>
 
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -86,27 +89,63 @@ py::list readObjObjects(const std::string& path) {
   return arraysOf(r.objects);
 }
 
-/// (components [(V, F)], hulls [(V, F)], report.json text)
-py::tuple decompose(const Vertices& vertices, const Faces& faces, acd::DecomposeOptions options,
+/// (components [(V, F)], hulls [(V, F)], report.json text): the decomposition and its
+/// post-passes, as `acd decompose` runs them.
+py::tuple decompose(const Vertices& vertices, const Faces& faces, const SolidOptions& settings,
                     const std::string& model, py::object progress) {
   const acd::TriMesh mesh = toMesh(vertices, faces);
   ProgressRelay relay(std::move(progress));
+  acd::DecomposeOptions options = settings.decompose;
   options.progress = relay.function();
   acd::Decomposition d;
+  acd::PostPassResult post;
   std::string report;
   {
     py::gil_scoped_release free;
-    d = acd::decompose(mesh, options);
-    if (d.status.ok()) report = acd::reportJson(acd::describeInput(model, mesh), d);
+    d.status = acd::resolveTauAbs(mesh, settings.post, options);
+    if (d.status.ok()) d.status = acd::validate(options);
+    if (d.status.ok()) d = acd::decompose(mesh, options);
+    if (d.status.ok()) post = acd::applyPostPasses(d, settings.post);
+    if (d.status.ok() && post.status.ok()) report = acd::reportJson(acd::describeInput(model, mesh), d, post);
   }
   relay.raiseIfFailed();
   check(d.status);
+  check(post.status);
   py::list components, hulls;
   for (const auto& c : d.components) {
     components.append(toArrays(c.mesh));
     hulls.append(toArrays(c.hull));
   }
   return py::make_tuple(components, hulls, report);
+}
+
+/// `acd decompose --format`: the files a simulator loads, written into `folder` (which exists);
+/// their paths relative to it. The mass properties are the components' at `density`.
+std::vector<std::string> writeSimulatorFiles(const std::string& folder, const std::string& name,
+                                             const py::tuple& visual, const py::list& hullPairs,
+                                             const py::list& componentPairs, double density,
+                                             const std::vector<std::string>& formatNames) {
+  std::vector<acd::SimFormat> formats;
+  for (const std::string& f : formatNames) {
+    acd::SimFormat format;
+    if (!acd::parseSimFormat(f, format))
+      check(acd::Status::error(acd::StatusCode::InvalidParameter,
+                               "unknown format '" + f + "' (expected obj, stl, glb, gltf, urdf, mjcf or sdf)"));
+    if (std::find(formats.begin(), formats.end(), format) == formats.end()) formats.push_back(format);
+  }
+  if (!(density > 0) || !std::isfinite(density))
+    check(acd::Status::error(acd::StatusCode::InvalidParameter, "density must be positive"));
+  acd::SimulatorModel model;
+  model.name = acd::simulatorName(name);
+  model.visual = meshOf(visual);
+  for (const auto& pair : hullPairs) model.hulls.push_back(meshOf(pair));
+  std::vector<acd::TriMesh> components;
+  for (const auto& pair : componentPairs) components.push_back(meshOf(pair));
+  std::vector<std::string> written;
+  py::gil_scoped_release free;
+  model.mass = acd::massProperties(components, density);
+  check(acd::writeSimulatorFiles(folder, model, formats, &written));
+  return written;
 }
 
 /// (patches [(V, F)], hulls [(V, F)] with empty arrays for flat patches, report.json text,
@@ -215,13 +254,15 @@ PYBIND11_MODULE(_core, m) {
   bindErrors(m);
   bindOptions(m);
   // Parameters are checked before the model is read, as the command does.
-  m.def("validate", [](const acd::DecomposeOptions& o) { check(acd::validate(o)); }, py::arg("options"));
+  m.def("validate", [](const SolidOptions& o) { check(validate(o)); }, py::arg("options"));
   m.def("validate", [](const acd::SurfaceDecomposeOptions& o) { check(acd::validate(o)); }, py::arg("options"));
   m.def("read_mesh", &readMesh, py::arg("path"));
   m.def("write_mesh", &writeMesh, py::arg("path"), py::arg("vertices"), py::arg("faces"));
   m.def("read_obj_objects", &readObjObjects, py::arg("path"));
   m.def("decompose", &decompose, py::arg("vertices"), py::arg("faces"), py::arg("options"), py::arg("model"),
         py::arg("progress"));
+  m.def("write_simulator_files", &writeSimulatorFiles, py::arg("folder"), py::arg("name"), py::arg("visual"),
+        py::arg("hulls"), py::arg("components"), py::arg("density"), py::arg("formats"));
   m.def("decompose_surface", &decomposeSurface, py::arg("vertices"), py::arg("faces"), py::arg("options"),
         py::arg("model"), py::arg("progress"));
   m.def("evaluate", &evaluate, py::arg("vertices"), py::arg("faces"), py::arg("hulls"), py::arg("options"),

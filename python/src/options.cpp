@@ -4,59 +4,80 @@
 // `acd decompose` or `acd evaluate` is one line here.
 #include "binding.hpp"
 
-#include <acd/decompose.hpp>
 #include <acd/evaluate.hpp>
 #include <acd/surface_decompose.hpp>
 
 #include <pybind11/stl.h>
 
 #include <optional>
+#include <type_traits>
 
 namespace acdpy {
 
 namespace {
 
-/// --no-X: the negation of a library flag.
-template <class Options>
-void negated(py::class_<Options>& c, const char* keyword, bool Options::*member) {
+/// An attribute read and written through `field(options)`, a reference into the options.
+template <class Options, class Field>
+void plain(py::class_<Options>& c, const char* keyword, Field field) {
+  using Value = std::decay_t<std::invoke_result_t<Field, Options&>>;
   c.def_property(
-      keyword, [member](const Options& o) { return !(o.*member); }, [member](Options& o, bool v) { o.*member = !v; });
+      keyword, [field](Options& o) { return Value(field(o)); }, [field](Options& o, Value v) { field(o) = v; });
+}
+
+/// --no-X: the negation of a library flag.
+template <class Options, class Field>
+void negated(py::class_<Options>& c, const char* keyword, Field field) {
+  c.def_property(
+      keyword, [field](Options& o) { return !field(o); }, [field](Options& o, bool v) { field(o) = !v; });
 }
 
 /// A length whose default depends on tau (negative in the library): None in Python.
-template <class Options>
-void tauDerived(py::class_<Options>& c, const char* keyword, double Options::*member) {
+template <class Options, class Field>
+void tauDerived(py::class_<Options>& c, const char* keyword, Field field) {
   c.def_property(
       keyword,
-      [member](const Options& o) { return o.*member < 0 ? std::optional<double>() : std::optional<double>(o.*member); },
-      [member](Options& o, std::optional<double> v) { o.*member = v ? *v : -1.0; });
+      [field](Options& o) { return field(o) < 0 ? std::optional<double>() : std::optional<double>(field(o)); },
+      [field](Options& o, std::optional<double> v) { field(o) = v ? *v : -1.0; });
 }
 
 }  // namespace
 
+acd::Status validate(const SolidOptions& o) {
+  if (o.post.tauAbs && o.tauGiven)
+    return acd::Status::error(acd::StatusCode::InvalidParameter, "give either tau or tau_abs, not both");
+  if (const acd::Status s = acd::validate(o.post); !s.ok()) return s;
+  return o.post.tauAbs ? acd::Status::success() : acd::validate(o.decompose);
+}
+
 void bindOptions(py::module_& m) {
-  using Solid = acd::DecomposeOptions;
-  py::class_<Solid> solid(m, "DecomposeOptions", "Options of `acd decompose` (solid ACD)");
+  py::class_<SolidOptions> solid(m, "DecomposeOptions", "Options of `acd decompose` (solid ACD and its post-passes)");
   solid.def(py::init<>());
-  solid.def_readwrite("tau", &Solid::tau);             // -t, --tau
-  tauDerived(solid, "epsilon", &Solid::epsilon);       // --epsilon (None: tau / 2)
-  tauDerived(solid, "delta", &Solid::delta);           // --delta (None: tau / 20)
-  negated(solid, "no_grouping", &Solid::featureGrouping);
-  negated(solid, "no_merge", &Solid::merge);
-  negated(solid, "no_fill_holes", &Solid::fillHoles);
-  negated(solid, "no_wrap", &Solid::wrap);
-  negated(solid, "no_repair", &Solid::repair);
-  solid.def_readwrite("threads", &Solid::threads);     // --threads (0: all cores)
+  solid.def_property(  // -t, --tau
+      "tau", [](const SolidOptions& o) { return o.decompose.tau; },
+      [](SolidOptions& o, double v) { o.decompose.tau = v, o.tauGiven = true; });
+  tauDerived(solid, "epsilon", [](SolidOptions& o) -> double& { return o.decompose.epsilon; });  // None: tau / 2
+  tauDerived(solid, "delta", [](SolidOptions& o) -> double& { return o.decompose.delta; });      // None: tau / 20
+  negated(solid, "no_grouping", [](SolidOptions& o) -> bool& { return o.decompose.featureGrouping; });
+  negated(solid, "no_merge", [](SolidOptions& o) -> bool& { return o.decompose.merge; });
+  negated(solid, "no_fill_holes", [](SolidOptions& o) -> bool& { return o.decompose.fillHoles; });
+  negated(solid, "no_wrap", [](SolidOptions& o) -> bool& { return o.decompose.wrap; });
+  negated(solid, "no_repair", [](SolidOptions& o) -> bool& { return o.decompose.repair; });
+  plain(solid, "threads", [](SolidOptions& o) -> int& { return o.decompose.threads; });  // 0: all cores
+  // The post-passes (acd/post_passes.hpp); None: not given, as an option absent from the command line.
+  plain(solid, "tau_abs", [](SolidOptions& o) -> std::optional<double>& { return o.post.tauAbs; });
+  plain(solid, "max_hulls", [](SolidOptions& o) -> std::optional<int>& { return o.post.maxHulls; });
+  plain(solid, "max_hull_vertices", [](SolidOptions& o) -> std::optional<int>& { return o.post.maxHullVertices; });
+  plain(solid, "density", [](SolidOptions& o) -> double& { return o.post.density; });
 
   using Surface = acd::SurfaceDecomposeOptions;
   py::class_<Surface> surface(m, "SurfaceDecomposeOptions", "Options of `acd decompose --surface`");
   surface.def(py::init<>());
-  surface.def_readwrite("tau", &Surface::tau);
-  tauDerived(surface, "epsilon", &Surface::epsilon);
-  tauDerived(surface, "delta", &Surface::delta);
-  negated(surface, "no_grouping", &Surface::featureGrouping);
-  negated(surface, "no_merge", &Surface::merge);
-  surface.def_readwrite("threads", &Surface::threads);
+  plain(surface, "tau", [](Surface& o) -> double& { return o.tau; });
+  tauDerived(surface, "epsilon", [](Surface& o) -> double& { return o.epsilon; });
+  tauDerived(surface, "delta", [](Surface& o) -> double& { return o.delta; });
+  negated(surface, "no_grouping", [](Surface& o) -> bool& { return o.featureGrouping; });
+  negated(surface, "no_merge", [](Surface& o) -> bool& { return o.merge; });
+  plain(surface, "threads", [](Surface& o) -> int& { return o.threads; });
 
   using Eval = acd::EvaluateOptions;
   py::class_<Eval> eval(m, "EvaluateOptions", "Options of `acd evaluate`");

@@ -8,8 +8,8 @@ from conftest import run_cli
 # Options of the command with no keyword, and why: where files go and what is printed (the
 # functions return arrays and a dict and print nothing), and modes served by another function.
 CLI_ONLY = {"help", "out", "quiet", "surface", "exact", "exact-time-limit", "exact-memory", "exact-tolerance", "json"}
-# Not bound yet: the simulator post-passes run in the command (apps/acd/simulator.cpp), not in libacd.
-CLI_ONLY |= {"tau-abs", "max-hulls", "max-hull-vertices", "density", "format"}
+# Simulator files: written by acd.write_simulator_files(folder, decomposition, model, formats).
+CLI_ONLY |= {"format"}
 # Scene files mesh by mesh into folders: the functions read a scene's meshes merged, as the default.
 CLI_ONLY |= {"per-mesh"}
 # Keyword arguments that are not options: the progress callback, the faces of a model given as arrays.
