@@ -97,18 +97,21 @@ py::tuple decompose(const Vertices& vertices, const Faces& faces, const SolidOpt
   ProgressRelay relay(std::move(progress));
   acd::DecomposeOptions options = settings.decompose;
   options.progress = relay.function();
+  acd::Status parameters;
   acd::Decomposition d;
   acd::PostPassResult post;
   std::string report;
   {
     py::gil_scoped_release free;
-    d.status = acd::resolveTauAbs(mesh, settings.post, options);
-    if (d.status.ok()) d.status = acd::validate(options);
-    if (d.status.ok()) d = acd::decompose(mesh, options);
-    if (d.status.ok()) post = acd::applyPostPasses(d, settings.post);
-    if (d.status.ok() && post.status.ok()) report = acd::reportJson(acd::describeInput(model, mesh), d, post);
+    parameters = acd::resolveTauAbs(mesh, settings.post, options);  // tau from tau_abs, then checked
+    if (parameters.ok()) parameters = acd::validate(options);
+    if (parameters.ok()) d = acd::decompose(mesh, options);
+    if (parameters.ok() && d.status.ok()) post = acd::applyPostPasses(d, settings.post);
+    if (parameters.ok() && d.status.ok() && post.status.ok())
+      report = acd::reportJson(acd::describeInput(model, mesh), d, post);
   }
   relay.raiseIfFailed();
+  check(parameters);
   check(d.status);
   check(post.status);
   py::list components, hulls;
