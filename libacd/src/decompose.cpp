@@ -8,6 +8,8 @@
 #include <acd/diagnosis.hpp>
 #include <acd/features.hpp>
 #include <acd/hull.hpp>
+#include <acd/hull_excess.hpp>
+#include <acd/canonical_frame.hpp>
 #include <acd/knot_graph.hpp>
 #include <acd/merge.hpp>
 #include <acd/robust.hpp>
@@ -21,6 +23,7 @@
 #include <cstdlib>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <sstream>
 
 namespace acd {
@@ -106,6 +109,22 @@ Plane splitCupPlane(const TriMesh& mesh, const ConcavityMap& map, int notch) {
   return Plane::through(x, axis.normalized());
 }
 
+/// A piece is final when its hull stands at most this share of tau off its surface, measured to
+/// within kExcessResolution * tau: 0.96 + 1/32 < 1, so a final hull is within tau of its piece.
+constexpr double kExcessLimit = 0.96;
+constexpr double kExcessResolution = 1.0 / 32;
+
+/// The vertex nearest to p; ties go to the smaller index (vertex order is canonical).
+int nearestVertex(const TriMesh& mesh, const Vec3& p) {
+  int best = 0;
+  double bestDistance = std::numeric_limits<double>::infinity();
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    const double d = (mesh.vertices[v] - p).squaredNorm();
+    if (d < bestDistance) bestDistance = d, best = static_cast<int>(v);
+  }
+  return best;
+}
+
 /// A merge may add at most this share of the union's volume to the hull volume beyond the two
 /// hulls it replaces (elephant at tau 0.05: 0.03 keeps IoU at the level without merging).
 constexpr double kMergeHullGrowth = 0.03;
@@ -125,17 +144,36 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
   c.depth = piece.depth;
   c.source = piece.source;
   c.concavity = map.concavity;
-  if (map.concavity <= o.tau || map.notch < 0) return out;
+  int notchIndex = map.notch;
+  double concavity = map.concavity;
+  Vec3 bridgeNormal = Vec3::Zero();
+  // The pocket measure can miss a thin or bent piece whose hull still stands far off its surface:
+  // a piece is final only when its hull, measured directly, is within tau too. If not, the cut
+  // goes through the surface point deepest below the hull, across the hull face above it.
+  bool fromExcess = false;
+  if (map.concavity <= o.tau || map.notch < 0) {
+    t = Clock::now();
+    const TriMesh hull = convexHull(piece.mesh.vertices).mesh;
+    const HullExcess e = measureHullExcess(piece.mesh, hull, kExcessLimit * o.tau, kExcessResolution * o.tau);
+    out.times.concavity += secondsSince(t);
+    c.concavity = std::max(c.concavity, e.distance);
+    if (!e.exceeds) return out;
+    fromExcess = true;
+    concavity = e.distance;
+    bridgeNormal = faceNormal(hull, e.hullFace).normalized();
+    notchIndex = nearestVertex(piece.mesh, e.surfacePoint);
+  } else {
+    bridgeNormal = map.bridges[map.vertexBridge[map.notch]].normal;
+  }
   if (piece.depth >= o.maxDepth) {
     c.unresolved = true;
     c.note = "maximum cut depth reached";
     return out;
   }
-  const Vec3 bridgeNormal = map.bridges[map.vertexBridge[map.notch]].normal;
-  const Vec3& notch = piece.mesh.vertices[map.notch];
+  const Vec3& notch = piece.mesh.vertices[notchIndex];
 
   // The estimate wobbles a little with the bridge clustering, so "unchanged" means within a tenth of tau.
-  const bool stalled = piece.parentConcavity >= 0 && map.concavity > piece.parentConcavity - 0.1 * o.tau &&
+  const bool stalled = piece.parentConcavity >= 0 && concavity > piece.parentConcavity - 0.1 * o.tau &&
                        (notch - piece.parentNotch).norm() < 0.5 * o.tau;
   const int stalls = stalled ? piece.stalls + 1 : 0;
   if (stalls > 8) {  // nothing we know resolves this notch: report it rather than loop
@@ -144,7 +182,7 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
     return out;
   }
   std::vector<Plane> candidates;
-  if (o.featureGrouping && stalls == 0) {
+  if (o.featureGrouping && stalls == 0 && !fromExcess) {
     t = Clock::now();
     // The paper's global cut: the minimum-weight cycle of the knot graph G_K through the root
     // pocket cut (Section 4.2.4). Four greedily grown cuts compete with it (they also reach
@@ -176,13 +214,13 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
     }
     out.times.grouping += secondsSince(t);
   }
-  if (stalls <= 1) candidates.push_back(bisectorPlane(piece.mesh, graph, map.notch, bridgeNormal));
+  if (stalls <= 1) candidates.push_back(bisectorPlane(piece.mesh, graph, notchIndex, bridgeNormal));
   // Planes through the notch that contain the bridge normal split the pocket between the bridge's
   // ends (two orthogonal ones; a different pair after each stall).
   const Vec3 u = bridgeNormal.unitOrthogonal(), w = bridgeNormal.cross(u);
   const double pi = std::acos(-1.0);
   // After repeated stalls, a wider fan (and the plane parallel to the bridge) compete by lookahead.
-  const int fan = stalls >= 2 ? 8 : 2;
+  const int fan = stalls >= 2 || fromExcess ? 8 : 2;
   if (stalls >= 2) candidates.push_back(Plane::through(notch, bridgeNormal));
   for (int k = 0; k < fan; ++k) {
     const double angle = pi * k / fan + 0.25 * pi * (stalls % 2);  // a different set on each stall
@@ -193,7 +231,7 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
   if ((!o.featureGrouping && stalls == 0) || candidates.size() == 1) {
     // The paper's baseline: the first plane that cuts cleanly.
     for (std::size_t i = 0; i < candidates.size(); ++i) {
-      if (tryCut(piece, candidates[i], notch, map.concavity, stalls, out.children)) {
+      if (tryCut(piece, candidates[i], notch, concavity, stalls, out.children)) {
         out.final = false;
         ++out.stats.cuts;
         if (o.featureGrouping && (i > 0 || stalls > 0)) ++out.stats.fallbackCuts;
@@ -210,7 +248,7 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
     std::vector<char> cutOk(candidates.size(), 0);
     std::vector<double> score(candidates.size(), 0.0);
     tbb::parallel_for(std::size_t(0), candidates.size(), [&](std::size_t i) {
-      cutOk[i] = tryCut(piece, candidates[i], notch, map.concavity, stalls, children[i]);
+      cutOk[i] = tryCut(piece, candidates[i], notch, concavity, stalls, children[i]);
       if (!cutOk[i]) return;
       for (const Piece& child : children[i]) {
         if (stalls > 0) {
@@ -320,19 +358,26 @@ Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options) {
   result.repairs = prepared.repairs;
   result.stats.holesFilled = prepared.holesFilled;
   if (!result.status.ok()) return result;
-  TriMesh all;
+  // Everything below works in the shape's own frame, on meshes in canonical order: the result does
+  // not depend on the input's pose or on the order of its vertices, faces and pieces.
+  result.normalization = canonicalFrame(prepared.components);
+  const double cube = std::pow(result.normalization.scale, 3);  // input volume -> normalised volume
+  CanonicalInverse inverse(result.normalization);
+  std::vector<CanonicalMesh> canonical;
   for (const TriMesh& c : prepared.components) {
-    const int base = static_cast<int>(all.vertices.size());
-    all.vertices.insert(all.vertices.end(), c.vertices.begin(), c.vertices.end());
-    for (Face f : c.faces) all.faces.push_back({f[0] + base, f[1] + base, f[2] + base});
+    canonical.push_back(canonicalMesh(c, result.normalization));
+    inverse.add(canonical.back(), c);
   }
-  result.normalization = minimumSphereNormalization(all);
+  std::vector<int> order(canonical.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return canonicalLess(canonical[a].mesh, canonical[b].mesh); });
   std::vector<Piece> pending;
-  for (std::size_t i = 0; i < prepared.components.size(); ++i) {
-    Piece p{applyNormalization(prepared.components[i], result.normalization), 0, static_cast<int>(i)};
+  for (int i : order) {
+    Piece p{std::move(canonical[i].mesh), 0, i};
     result.stats.inputEdges += static_cast<int>(p.mesh.faces.size() * 3 / 2);
     result.stats.inputNotches += countNotches(p.mesh);
-    result.stats.inputVolume += signedVolume(p.mesh);
+    result.stats.inputVolume += signedVolume(prepared.components[i]) * cube;
     pending.push_back(std::move(p));
   }
   result.times.prepare = secondsSince(t);
@@ -390,11 +435,16 @@ Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options) {
         const int i = id[pairs[k].a], j = id[pairs[k].b];
         if (!glueAlongSharedFaces(finals[i].mesh, finals[j].mesh, glued[k])) return;
         // The union's hull may not swell much beyond the two hulls: a merge must not cost fidelity.
+        const TriMesh hull = convexHull(glued[k].vertices).mesh;
         auto excess = [](const TriMesh& m) { return signedVolume(convexHull(m.vertices).mesh) - signedVolume(m); };
-        const double growth = excess(glued[k]) - excess(finals[i].mesh) - excess(finals[j].mesh);
+        const double growth = signedVolume(hull) - signedVolume(glued[k]) - excess(finals[i].mesh) - excess(finals[j].mesh);
         if (growth > kMergeHullGrowth * signedVolume(glued[k])) return;
         SurfaceGraph graph(glued[k]);
-        concavity[k] = measureConcavity(glued[k], graph, co).concavity;
+        const double measured = measureConcavity(glued[k], graph, co).concavity;
+        if (measured > o.tau) return;
+        // A union is held to the same promise as a final piece: its hull within tau of it.
+        const HullExcess e = measureHullExcess(glued[k], hull, kExcessLimit * o.tau, kExcessResolution * o.tau);
+        if (!e.exceeds) concavity[k] = std::max(measured, e.distance);
       });
       std::vector<char> changed(finals.size(), 0);
       for (std::size_t k = 0; k < pairs.size(); ++k) {
@@ -423,11 +473,12 @@ Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options) {
   tbb::parallel_for(std::size_t(0), finals.size(), [&](std::size_t i) {
     Component& c = result.components[i];
     c = finalInfo[i];
-    const TriMesh hull = convexHull(finals[i].mesh.vertices).mesh;
-    c.volume = signedVolume(finals[i].mesh);
-    c.hullVolume = signedVolume(hull);
-    c.mesh = undoNormalization(finals[i].mesh, result.normalization);
-    c.hull = undoNormalization(hull, result.normalization);
+    // Back in the input's coordinates, input vertices exactly; volumes measured there, so that
+    // they add up to the input's volume whatever the rounding to the canonical grid did.
+    c.mesh = inverse(finals[i].mesh);
+    c.hull = inverse(convexHull(finals[i].mesh.vertices).mesh);
+    c.volume = signedVolume(c.mesh) * cube;
+    c.hullVolume = signedVolume(c.hull) * cube;
   });
   result.times.hulls = secondsSince(t);
   result.times.total = secondsSince(start);

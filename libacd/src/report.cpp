@@ -15,7 +15,9 @@ namespace {
 const char* const kUnits = "normalised: minimum enclosing sphere radius 1";
 
 json normalizationJson(const Normalization& n) {
-  return {{"center", {n.center.x(), n.center.y(), n.center.z()}}, {"scale", n.scale}};
+  json rotation = json::array();
+  for (int r = 0; r < 3; ++r) rotation.push_back({n.rotation(r, 0), n.rotation(r, 1), n.rotation(r, 2)});
+  return {{"center", {n.center.x(), n.center.y(), n.center.z()}}, {"scale", n.scale}, {"rotation", rotation}};
 }
 
 std::string text(const json& j) { return j.dump(2) + "\n"; }

@@ -5,13 +5,14 @@
 
 namespace acd {
 
-/// x_normalised = (x - center) * scale.
+/// x_normalised = rotation * (x - center) * scale.
 struct Normalization {
   Vec3 center = Vec3::Zero();
   double scale = 1.0;  // 1 / radius of the minimum enclosing sphere
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // rows: the frame's axes (acd/canonical_frame.hpp)
 
-  Vec3 apply(const Vec3& p) const { return (p - center) * scale; }
-  Vec3 undo(const Vec3& p) const { return p / scale + center; }
+  Vec3 apply(const Vec3& p) const { return rotation * ((p - center) * scale); }
+  Vec3 undo(const Vec3& p) const { return rotation.transpose() * p / scale + center; }
 };
 
 /// Minimum enclosing sphere of the vertices (exact, Welzl-style via CGAL).

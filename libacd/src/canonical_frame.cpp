@@ -1,0 +1,158 @@
+// Canonical frame from the surface's moments (they integrate the whole surface, so a few ulps of
+// rounding in any vertex move the frame by a few ulps only), then rounding to a grid that absorbs
+// those ulps, then an order of vertices and faces that depends on coordinates only.
+#include <acd/canonical_frame.hpp>
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <numeric>
+#include <tuple>
+
+namespace acd {
+
+namespace {
+
+/// ∫ (e·x)^3 dA over a triangle whose corners project to p1, p2, p3 on e: A/10 times the complete
+/// homogeneous cubic h3(p1, p2, p3) (from ∫ λ^α dA = 2A α! / (|α|+2)!).
+double thirdMoment(double area, double p1, double p2, double p3) {
+  const double h3 = p1 * p1 * p1 + p2 * p2 * p2 + p3 * p3 * p3 + p1 * p1 * (p2 + p3) + p2 * p2 * (p1 + p3) +
+                    p3 * p3 * (p1 + p2) + p1 * p2 * p3;
+  return area / 10.0 * h3;
+}
+
+double roundToGrid(double x) { return std::nearbyint(x / kCanonicalGrid) * kCanonicalGrid; }
+
+bool lexLess(const Vec3& a, const Vec3& b) {
+  return std::tie(a.x(), a.y(), a.z()) < std::tie(b.x(), b.y(), b.z());
+}
+
+}  // namespace
+
+Normalization canonicalFrame(const std::vector<TriMesh>& pieces) {
+  const Normalization sphere = minimumSphereNormalization(concatenate(pieces));
+  Normalization frame = sphere;
+  // Moments in the sphere's units (translation and scale removed; rotation is what is sought).
+  double area = 0.0;
+  Vec3 centroid = Vec3::Zero();
+  for (const TriMesh& m : pieces)
+    for (const Face& f : m.faces) {
+      const Vec3 a = sphere.apply(m.vertices[f[0]]), b = sphere.apply(m.vertices[f[1]]), c = sphere.apply(m.vertices[f[2]]);
+      const double A = 0.5 * (b - a).cross(c - a).norm();
+      area += A;
+      centroid += A * (a + b + c) / 3.0;
+    }
+  if (!(area > 0.0)) return frame;
+  centroid /= area;
+  Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
+  for (const TriMesh& m : pieces)
+    for (const Face& f : m.faces) {
+      const Vec3 a = sphere.apply(m.vertices[f[0]]) - centroid, b = sphere.apply(m.vertices[f[1]]) - centroid,
+                 c = sphere.apply(m.vertices[f[2]]) - centroid;
+      const double A = 0.5 * (b - a).cross(c - a).norm();
+      const Vec3 s = a + b + c;
+      second += A / 12.0 * (a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose());
+    }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(second);
+  if (eig.info() != Eigen::Success) return frame;
+  const Vec3 e1 = eig.eigenvectors().col(2).normalized(), e2 = eig.eigenvectors().col(1).normalized();  // largest, middle
+  const Vec3 axes[3] = {e1, e2, e1.cross(e2).normalized()};
+  double third[3] = {0.0, 0.0, 0.0};
+  for (const TriMesh& m : pieces)
+    for (const Face& f : m.faces) {
+      const Vec3 a = sphere.apply(m.vertices[f[0]]) - centroid, b = sphere.apply(m.vertices[f[1]]) - centroid,
+                 c = sphere.apply(m.vertices[f[2]]) - centroid;
+      const double A = 0.5 * (b - a).cross(c - a).norm();
+      for (int k = 0; k < 3; ++k) third[k] += thirdMoment(A, axes[k].dot(a), axes[k].dot(b), axes[k].dot(c));
+    }
+  // Flipping e1 or e2 flips e3 = e1 x e2 too, so only two signs are free: the two axes with the
+  // larger third moments point where theirs is positive and the third axis follows. A mirror
+  // symmetry makes one third moment vanish; it is then the one that follows.
+  int follower = 0;
+  for (int k = 1; k < 3; ++k)
+    if (std::abs(third[k]) < std::abs(third[follower])) follower = k;
+  auto sign = [](double x) { return x < 0.0 ? -1.0 : 1.0; };
+  double s1, s2;  // signs of e1 and e2; e3's is s1 * s2
+  if (follower == 2) {
+    s1 = sign(third[0]), s2 = sign(third[1]);
+  } else if (follower == 1) {
+    s1 = sign(third[0]), s2 = sign(third[2]) * s1;
+  } else {
+    s2 = sign(third[1]), s1 = sign(third[2]) * s2;
+  }
+  frame.rotation.row(0) = (s1 * axes[0]).transpose();
+  frame.rotation.row(1) = (s2 * axes[1]).transpose();
+  frame.rotation.row(2) = (s1 * s2 * axes[2]).transpose();
+  return frame;
+}
+
+CanonicalMesh canonicalMesh(const TriMesh& mesh, const Normalization& n) {
+  const int nv = static_cast<int>(mesh.vertices.size());
+  std::vector<Vec3> moved(nv);
+  for (int v = 0; v < nv; ++v) {
+    const Vec3 p = n.apply(mesh.vertices[v]);
+    moved[v] = Vec3(roundToGrid(p.x()), roundToGrid(p.y()), roundToGrid(p.z()));
+  }
+  std::vector<int> order(nv);
+  std::iota(order.begin(), order.end(), 0);
+  // Coincident vertices (closer than the grid) keep their input order: the one case where the
+  // input's order can show through.
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return lexLess(moved[a], moved[b]); });
+  std::vector<int> rank(nv);
+  CanonicalMesh out;
+  out.mesh.vertices.reserve(nv);
+  for (int i = 0; i < nv; ++i) {
+    rank[order[i]] = i;
+    out.mesh.vertices.push_back(moved[order[i]]);
+  }
+  out.source = order;
+  out.mesh.faces.reserve(mesh.faces.size());
+  for (const Face& f : mesh.faces) {
+    Face g{rank[f[0]], rank[f[1]], rank[f[2]]};
+    const int first = static_cast<int>(std::min_element(g.begin(), g.end()) - g.begin());
+    std::rotate(g.begin(), g.begin() + first, g.end());
+    out.mesh.faces.push_back(g);
+  }
+  std::sort(out.mesh.faces.begin(), out.mesh.faces.end());
+  return out;
+}
+
+bool canonicalLess(const TriMesh& a, const TriMesh& b) {
+  if (a.vertices.size() != b.vertices.size()) return a.vertices.size() < b.vertices.size();
+  for (std::size_t i = 0; i < a.vertices.size(); ++i) {
+    if (lexLess(a.vertices[i], b.vertices[i])) return true;
+    if (lexLess(b.vertices[i], a.vertices[i])) return false;
+  }
+  return a.faces < b.faces;
+}
+
+std::size_t CanonicalInverse::KeyHash::operator()(const Vec3& p) const {
+  std::size_t h = 0;
+  for (int k = 0; k < 3; ++k) {
+    std::uint64_t bits;
+    const double x = p[k] == 0.0 ? 0.0 : p[k];  // -0 and +0 are the same point
+    std::memcpy(&bits, &x, sizeof bits);
+    h ^= std::hash<std::uint64_t>()(bits) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+  }
+  return h;
+}
+
+void CanonicalInverse::add(const CanonicalMesh& canonical, const TriMesh& input) {
+  for (std::size_t i = 0; i < canonical.mesh.vertices.size(); ++i)
+    exact_.emplace(canonical.mesh.vertices[i], input.vertices[canonical.source[i]]);
+}
+
+Vec3 CanonicalInverse::operator()(const Vec3& p) const {
+  const auto it = exact_.find(p);
+  return it != exact_.end() ? it->second : frame_.undo(p);
+}
+
+TriMesh CanonicalInverse::operator()(const TriMesh& mesh) const {
+  TriMesh out = mesh;
+  for (Vec3& p : out.vertices) p = (*this)(p);
+  return out;
+}
+
+}  // namespace acd
