@@ -183,6 +183,18 @@ Decomposition decomposeShell(const TriMesh& shell, int index, const DecomposeOpt
   return d;
 }
 
+/// A hull within t of the wrap is within t + d of the input, where d is how far the wrap stands
+/// off the input (sampled, with a tenth more for what the samples miss): the wrap is decomposed at
+/// tau - d so that the promise holds against the input. Never below half of tau.
+DecomposeOptions optionsForWrap(const DecomposeOptions& o, const TriMesh& wrap, const TriMesh& input, double scale) {
+  DecomposeOptions w = o;
+  const double standOff = 1.1 * surfaceDistance(wrap, input).aToB * scale;
+  w.tau = std::max(0.5 * o.tau, o.tau - standOff);
+  w.epsilon = std::min(w.epsilon, w.tau);
+  w.delta = std::min(w.delta, w.tau);
+  return w;
+}
+
 void accumulateShell(Decomposition& into, Decomposition&& d) {
   for (Component& c : d.components) into.components.push_back(std::move(c));
   DecomposeStats& s = into.stats;
@@ -231,8 +243,11 @@ Decomposition decomposeRepaired(const TriMesh& mesh, const DecomposeOptions& opt
   for (std::size_t i = 0; i < prepared.shells.size(); ++i)
     if (prepared.isWrap[i]) wraps.push_back(prepared.shells[i]);
   int done = 0;
+  const TriMesh wrappedInput = concatenate(prepared.wrappedInput);
   for (std::size_t i = 0; i < prepared.shells.size(); ++i) {
-    Decomposition d = decomposeShell(prepared.shells[i], static_cast<int>(i), o, scale, done);
+    const DecomposeOptions shellOptions =
+        prepared.isWrap[i] ? optionsForWrap(o, prepared.shells[i], wrappedInput, scale) : o;
+    Decomposition d = decomposeShell(prepared.shells[i], static_cast<int>(i), shellOptions, scale, done);
     if (!d.status.ok()) {
       result.status = d.status;
       result.components.clear();
@@ -251,7 +266,8 @@ Decomposition decomposeRepaired(const TriMesh& mesh, const DecomposeOptions& opt
         redo.status = Status::success();
         redo.components.clear();
         for (const TriMesh& s : w.shells) {
-          Decomposition part = decomposeShell(s, static_cast<int>(i), o, scale, done);
+          Decomposition part = decomposeShell(s, static_cast<int>(i), optionsForWrap(o, s, prepared.shells[i], scale),
+                                              scale, done);
           if (!part.status.ok()) {
             redo.status = part.status;
             break;
