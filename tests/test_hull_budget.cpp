@@ -42,7 +42,7 @@ double totalVolume(const Decomposition& d) {
 
 TEST(HullBudget, MergesDownToTheBudgetKeepingEveryComponentOnce) {
   const TriMesh torus = shapes::torus(2.0, 0.6, 48, 16);
-  Decomposition d = decomposed(torus, 0.02);
+  Decomposition d = decomposed(torus, 0.05);
   const int before = static_cast<int>(d.components.size());
   ASSERT_GE(before, 5) << "the test needs a decomposition with several components";
   const double volume = totalVolume(d);
@@ -55,8 +55,10 @@ TEST(HullBudget, MergesDownToTheBudgetKeepingEveryComponentOnce) {
   EXPECT_EQ(r.before, before);
   EXPECT_EQ(static_cast<int>(d.components.size()), 3);
   EXPECT_EQ(r.after, 3);
-  EXPECT_EQ(r.gluedMerges, before - 3);
-  EXPECT_EQ(r.joinedMerges, 0);
+  // Neighbours are glued while any share faces; pieces whose shared cut was split again on one
+  // side only (a T-junction) cannot be glued and are joined.
+  EXPECT_EQ(r.gluedMerges + r.joinedMerges, before - 3);
+  EXPECT_GE(r.gluedMerges, 1);
   std::vector<int> all;
   for (const auto& m : r.members) all.insert(all.end(), m.begin(), m.end());
   std::sort(all.begin(), all.end());
@@ -135,7 +137,7 @@ TEST(HullBudget, NothingToDoWithinTheBudgetAndBadBudgetsRefused) {
 
 TEST(HullBudget, ResultDoesNotDependOnThreads) {
   const TriMesh torus = shapes::torus(2.0, 0.6, 48, 16);
-  Decomposition a = decomposed(torus, 0.02), b = a;
+  Decomposition a = decomposed(torus, 0.1), b = a;
   HullBudgetOptions o;
   o.maxHulls = 4;
   o.threads = 1;

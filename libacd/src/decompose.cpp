@@ -217,6 +217,7 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
   if (stalls <= 1) candidates.push_back(bisectorPlane(piece.mesh, graph, notchIndex, bridgeNormal));
   // Planes through the notch that contain the bridge normal split the pocket between the bridge's
   // ends (two orthogonal ones; a different pair after each stall).
+  // (unitOrthogonal follows the frame's axes: the canonical frame's, so the fan is the shape's.)
   const Vec3 u = bridgeNormal.unitOrthogonal(), w = bridgeNormal.cross(u);
   const double pi = std::acos(-1.0);
   // After repeated stalls, a wider fan (and the plane parallel to the bridge) compete by lookahead.
@@ -247,6 +248,7 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
     std::vector<std::vector<Piece>> children(candidates.size());
     std::vector<char> cutOk(candidates.size(), 0);
     std::vector<double> score(candidates.size(), 0.0);
+    std::vector<int> exceeding(candidates.size(), 0);
     tbb::parallel_for(std::size_t(0), candidates.size(), [&](std::size_t i) {
       cutOk[i] = tryCut(piece, candidates[i], notch, concavity, stalls, children[i]);
       if (!cutOk[i]) return;
@@ -255,7 +257,11 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
           SurfaceGraph childGraph(child.mesh);
           score[i] = std::max(score[i], measureConcavity(child.mesh, childGraph, co).concavity);
         } else {
-          score[i] += signedVolume(convexHull(child.mesh.vertices).mesh) - signedVolume(child.mesh);
+          const TriMesh hull = convexHull(child.mesh.vertices).mesh;
+          score[i] += signedVolume(hull) - signedVolume(child.mesh);
+          // A cut for a hull standing off its piece is judged first by how many children still do.
+          if (fromExcess)
+            exceeding[i] += measureHullExcess(child.mesh, hull, kExcessLimit * o.tau, kExcessResolution * o.tau).exceeds;
         }
       }
     });
@@ -266,7 +272,8 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
         ++out.stats.failedCuts;
         continue;
       }
-      if (score[i] < bestScore) {
+      if (out.final || exceeding[i] < exceeding[bestIndex] ||
+          (exceeding[i] == exceeding[bestIndex] && score[i] < bestScore)) {
         bestScore = score[i];
         bestIndex = i;
         out.final = false;
@@ -473,10 +480,11 @@ Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options) {
   tbb::parallel_for(std::size_t(0), finals.size(), [&](std::size_t i) {
     Component& c = result.components[i];
     c = finalInfo[i];
-    // Back in the input's coordinates, input vertices exactly; volumes measured there, so that
-    // they add up to the input's volume whatever the rounding to the canonical grid did.
+    // Back in the input's coordinates, input vertices exactly; hull and volumes computed there, so
+    // that volumes add up to the input's and each hull contains its component whatever the rounding
+    // to the canonical grid did (vertex order is canonical, so is the hull's triangulation).
     c.mesh = inverse(finals[i].mesh);
-    c.hull = inverse(convexHull(finals[i].mesh.vertices).mesh);
+    c.hull = convexHull(c.mesh.vertices).mesh;
     c.volume = signedVolume(c.mesh) * cube;
     c.hullVolume = signedVolume(c.hull) * cube;
   });
