@@ -1,5 +1,5 @@
-// A decomposition depends on the shape only: rigid motions (random, a 1e-9 nudge, an exact quarter
-// turn) and a shuffled face order give the same parts with the same volumes. And tau is a promise
+// With `invariant`, a decomposition depends on the shape only: rigid motions (random, a 1e-9
+// nudge, an exact quarter turn) and a shuffled face order give the same parts with the same volumes. And tau is a promise
 // about what users measure: no hull sticks out of the model by more than tau, measured here with
 // the tests' own distance code.
 #include <acd/decompose.hpp>
@@ -56,6 +56,7 @@ TriMesh asymmetricShape() {
 void expectInvariant(const TriMesh& mesh, double tau, int motions) {
   DecomposeOptions o;
   o.tau = tau;
+  o.invariant = true;
   const Decomposition reference = acd::decompose(mesh, o);
   ASSERT_TRUE(reference.status.ok()) << reference.status.message;
   const std::vector<double> expected = volumes(reference);

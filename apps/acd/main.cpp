@@ -309,6 +309,9 @@ int main(int argc, char** argv) {
   dec->add_option("--delta", da.options.delta, "Douglas-Peucker knot tolerance (default tau/20)");
   dec->add_flag("--no-grouping", da.noGrouping,
                 "Resolve the most concave notch with a plane bisecting its dihedral angle (no feature grouping)");
+  dec->add_flag("--invariant", da.options.invariant,
+                "Decompose in a frame computed from the shape: the same parts whatever the model's pose and order "
+                "of faces (input vertices on cut planes move by up to 2.1e-7 of the model's radius)");
   dec->add_flag("--no-merge", da.noMerge,
                 "Keep every piece the recursion made (by default neighbours are glued back while their union stays within tau)");
   dec->add_flag("--no-fill-holes", da.noFillHoles,

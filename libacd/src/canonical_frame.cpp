@@ -6,8 +6,10 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
-#include <cmath>
+#include <complex>
 #include <cstring>
+#include <limits>
+#include <cmath>
 #include <numeric>
 #include <tuple>
 
@@ -27,6 +29,83 @@ double roundToGrid(double x) { return std::nearbyint(x / kCanonicalGrid) * kCano
 
 bool lexLess(const Vec3& a, const Vec3& b) {
   return std::tie(a.x(), a.y(), a.z()) < std::tie(b.x(), b.y(), b.z());
+}
+
+/// A face's unit normal and area (in the sphere's units).
+struct WeightedNormal {
+  Vec3 normal;
+  double area;
+};
+
+/// How much of the surface faces direction d: sum of area * (n.d)^4, largest along a box's axes.
+double alignment(const std::vector<WeightedNormal>& normals, const Vec3& d) {
+  double sum = 0.0;
+  for (const WeightedNormal& w : normals) {
+    const double c = w.normal.dot(d);
+    sum += w.area * c * c * c * c;
+  }
+  return sum;
+}
+
+/// A direction in the plane of the orthonormal a, b fixed by how the faces' normals spread in
+/// it: with u = p + iq a normal's coordinates in the plane, the first angular harmonic
+/// Z_k = sum A |u|^2 (u/|u|)^k (k = 1, 2, ...) that does not vanish gives theta = arg(Z_k) / k. A
+/// box's square cross-section has Z_4 (its faces), a 32-sided ring Z_32 (its segments); every
+/// answer differs from another by a symmetry of the normals' spread. None below k = 64 (a
+/// sphere, a cylinder of many segments): a is kept.
+Vec3 mostAlignedInPlane(const std::vector<WeightedNormal>& normals, const Vec3& a, const Vec3& b) {
+  constexpr int kMaxHarmonic = 64;
+  std::vector<std::complex<double>> z(kMaxHarmonic + 1, 0.0);
+  for (const WeightedNormal& w : normals) {
+    const std::complex<double> u(w.normal.dot(a), w.normal.dot(b));
+    const double r = std::abs(u);
+    if (r < 1e-12) continue;
+    const std::complex<double> step = u / r;
+    std::complex<double> power = w.area * r * r;
+    for (int k = 0; k <= kMaxHarmonic; ++k, power *= step) z[k] += power;
+  }
+  for (int k = 1; k <= kMaxHarmonic; ++k)
+    if (std::abs(z[k]) > 1e-6 * std::abs(z[0])) {
+      const double theta = std::arg(z[k]) / k;
+      return (std::cos(theta) * a + std::sin(theta) * b).normalized();
+    }
+  return a;
+}
+
+/// Axes for second moments with (nearly) equal eigenvalues, where the eigenvectors are any basis
+/// of their plane or space: the axis among the faces' normals (all three equal) or within the
+/// plane (two equal) that most of the surface faces. Boxy models get axes along their faces.
+void alignDegenerateAxes(const std::vector<TriMesh>& pieces, const Normalization& sphere,
+                         const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& eig, Vec3& e1, Vec3& e2) {
+  const Vec3 values = eig.eigenvalues();  // ascending
+  const double tolerance = 1e-8 * std::abs(values[2]);
+  const bool topTwo = values[2] - values[1] <= tolerance, bottomTwo = values[1] - values[0] <= tolerance;
+  if (!topTwo && !bottomTwo) return;
+  std::vector<WeightedNormal> normals;
+  for (const TriMesh& m : pieces)
+    for (const Face& f : m.faces) {
+      const Vec3 n = (sphere.apply(m.vertices[f[1]]) - sphere.apply(m.vertices[f[0]]))
+                         .cross(sphere.apply(m.vertices[f[2]]) - sphere.apply(m.vertices[f[0]]));
+      if (n.norm() > 0.0) normals.push_back({n.normalized(), 0.5 * n.norm()});
+    }
+  if (normals.empty()) return;
+  if (topTwo && bottomTwo) {
+    // A sphere-like spread: the first axis is the face normal with the largest alignment (a
+    // quadratic search, so only for meshes small enough; larger ones keep the solver's axes).
+    if (normals.size() > 4096) return;
+    double bestValue = -1.0;
+    for (const WeightedNormal& w : normals)
+      if (const double v = alignment(normals, w.normal); v > bestValue * (1 + 1e-12)) bestValue = v, e1 = w.normal;
+    const Vec3 a = e1.unitOrthogonal();
+    e2 = mostAlignedInPlane(normals, a, e1.cross(a));
+  } else if (topTwo) {
+    const Vec3 e3 = eig.eigenvectors().col(0).normalized();
+    e1 = mostAlignedInPlane(normals, eig.eigenvectors().col(2).normalized(), eig.eigenvectors().col(1).normalized());
+    e2 = e3.cross(e1).normalized();
+  } else {
+    const Vec3 a = eig.eigenvectors().col(1).normalized();
+    e2 = mostAlignedInPlane(normals, a, e1.cross(a).normalized());
+  }
 }
 
 }  // namespace
@@ -57,7 +136,8 @@ Normalization canonicalFrame(const std::vector<TriMesh>& pieces) {
     }
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(second);
   if (eig.info() != Eigen::Success) return frame;
-  const Vec3 e1 = eig.eigenvectors().col(2).normalized(), e2 = eig.eigenvectors().col(1).normalized();  // largest, middle
+  Vec3 e1 = eig.eigenvectors().col(2).normalized(), e2 = eig.eigenvectors().col(1).normalized();  // largest, middle
+  alignDegenerateAxes(pieces, sphere, eig, e1, e2);
   const Vec3 axes[3] = {e1, e2, e1.cross(e2).normalized()};
   double third[3] = {0.0, 0.0, 0.0};
   for (const TriMesh& m : pieces)

@@ -42,7 +42,13 @@ struct Piece {
   Vec3 parentNotch = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
   double parentConcavity = -1.0;
   int stalls = 0;
+  std::vector<Plane> cuts;  // every plane this piece's ancestors were cut by
 };
+
+std::vector<Plane> withCut(std::vector<Plane> cuts, const Plane& p) {
+  cuts.push_back(p);
+  return cuts;
+}
 
 struct Outcome {
   bool final = true;
@@ -70,7 +76,7 @@ bool tryCut(const Piece& piece, Plane plane, const Vec3& notch, double concavity
     for (auto* side : {&cut.below, &cut.above})
       for (TriMesh& m : *side) {
         if (signedVolume(m) <= minVolume) valid = false;
-        out.push_back({std::move(m), piece.depth + 1, piece.source, notch, concavity, stalls});
+        out.push_back({std::move(m), piece.depth + 1, piece.source, notch, concavity, stalls, withCut(piece.cuts, p)});
       }
     if (!valid) continue;
     children = std::move(out);
@@ -123,6 +129,24 @@ int nearestVertex(const TriMesh& mesh, const Vec3& p) {
     if (d < bestDistance) bestDistance = d, best = static_cast<int>(v);
   }
   return best;
+}
+
+/// Back to the input's coordinates: an input vertex exactly, unless it lies on a plane the piece
+/// was cut by; there, like every point a cut made, through the inverse transform. Cut faces thus
+/// stay planar (an input vertex on one is off it by up to the canonical grid) and every piece
+/// that shares a vertex maps it alike (pieces that share a vertex were parted by a plane through it).
+TriMesh toInput(const Piece& piece, const CanonicalInverse& inverse) {
+  TriMesh out = piece.mesh;
+  for (Vec3& p : out.vertices) {
+    bool onCut = false;
+    for (const Plane& plane : piece.cuts)
+      if (std::abs(plane.signedDistance(p)) <= 1e-12) {
+        onCut = true;
+        break;
+      }
+    p = onCut ? inverse.undo(p) : inverse(p);
+  }
+  return out;
 }
 
 /// A merge may add at most this share of the union's volume to the hull volume beyond the two
@@ -365,20 +389,28 @@ Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options) {
   result.repairs = prepared.repairs;
   result.stats.holesFilled = prepared.holesFilled;
   if (!result.status.ok()) return result;
-  // Everything below works in the shape's own frame, on meshes in canonical order: the result does
-  // not depend on the input's pose or on the order of its vertices, faces and pieces.
-  result.normalization = canonicalFrame(prepared.components);
+  // With o.invariant everything below works in the shape's own frame, on meshes in canonical order:
+  // the result does not depend on the input's pose or on the order of its vertices, faces and pieces.
+  result.normalization = o.invariant ? canonicalFrame(prepared.components)
+                                     : minimumSphereNormalization(concatenate(prepared.components));
   const double cube = std::pow(result.normalization.scale, 3);  // input volume -> normalised volume
   CanonicalInverse inverse(result.normalization);
   std::vector<CanonicalMesh> canonical;
   for (const TriMesh& c : prepared.components) {
-    canonical.push_back(canonicalMesh(c, result.normalization));
-    inverse.add(canonical.back(), c);
+    if (o.invariant) {
+      canonical.push_back(canonicalMesh(c, result.normalization));
+    } else {
+      std::vector<int> same(c.vertices.size());
+      std::iota(same.begin(), same.end(), 0);
+      canonical.push_back({applyNormalization(c, result.normalization), std::move(same)});
+    }
+    inverse.add(canonical.back(), c);  // input vertices come back exactly
   }
   std::vector<int> order(canonical.size());
   std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](int a, int b) { return canonicalLess(canonical[a].mesh, canonical[b].mesh); });
+  if (o.invariant)
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return canonicalLess(canonical[a].mesh, canonical[b].mesh); });
   std::vector<Piece> pending;
   for (int i : order) {
     Piece p{std::move(canonical[i].mesh), 0, i};
@@ -458,6 +490,7 @@ Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options) {
         const int i = id[pairs[k].a], j = id[pairs[k].b];
         if (concavity[k] > o.tau || changed[i] || changed[j]) continue;
         finals[i].mesh = std::move(glued[k]);
+        finals[i].cuts.insert(finals[i].cuts.end(), finals[j].cuts.begin(), finals[j].cuts.end());
         finalInfo[i].concavity = concavity[k];
         finalInfo[i].depth = std::min(finalInfo[i].depth, finalInfo[j].depth);
         alive[j] = 0;
@@ -480,10 +513,9 @@ Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options) {
   tbb::parallel_for(std::size_t(0), finals.size(), [&](std::size_t i) {
     Component& c = result.components[i];
     c = finalInfo[i];
-    // Back in the input's coordinates, input vertices exactly; hull and volumes computed there, so
-    // that volumes add up to the input's and each hull contains its component whatever the rounding
-    // to the canonical grid did (vertex order is canonical, so is the hull's triangulation).
-    c.mesh = inverse(finals[i].mesh);
+    // Hull and volumes are computed in the input's coordinates, so that each hull contains its
+    // component (vertex order is canonical, so is the hull's triangulation).
+    c.mesh = o.invariant ? toInput(finals[i], inverse) : inverse(finals[i].mesh);
     c.hull = convexHull(c.mesh.vertices).mesh;
     c.volume = signedVolume(c.mesh) * cube;
     c.hullVolume = signedVolume(c.hull) * cube;

@@ -44,6 +44,7 @@ json solidReport(const ReportInput& in, const Decomposition& d) {
                      {"delta", d.options.delta},
                      {"feature_grouping", d.options.featureGrouping},
                      {"merge", d.options.merge},
+                     {"invariant", d.options.invariant},
                      {"threads", d.options.threads},
                      {"units", kUnits}};
   const int edges = d.stats.inputEdges;

@@ -62,6 +62,7 @@ void bindOptions(py::module_& m) {
   negated(solid, "no_fill_holes", [](SolidOptions& o) -> bool& { return o.decompose.fillHoles; });
   negated(solid, "no_wrap", [](SolidOptions& o) -> bool& { return o.decompose.wrap; });
   negated(solid, "no_repair", [](SolidOptions& o) -> bool& { return o.decompose.repair; });
+  plain(solid, "invariant", [](SolidOptions& o) -> bool& { return o.decompose.invariant; });
   plain(solid, "threads", [](SolidOptions& o) -> int& { return o.decompose.threads; });  // 0: all cores
   // The post-passes (acd/post_passes.hpp); None: not given, as an option absent from the command line.
   plain(solid, "tau_abs", [](SolidOptions& o) -> std::optional<double>& { return o.post.tauAbs; });

@@ -42,6 +42,8 @@ class CanonicalInverse {
   void add(const CanonicalMesh& canonical, const TriMesh& input);
   Vec3 operator()(const Vec3& canonicalPoint) const;
   TriMesh operator()(const TriMesh& canonicalMesh) const;
+  /// Through n.undo, whether the point is an input vertex or not.
+  Vec3 undo(const Vec3& canonicalPoint) const { return frame_.undo(canonicalPoint); }
 
  private:
   struct KeyHash {
