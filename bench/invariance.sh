@@ -6,11 +6,12 @@
 # through the motion, with volumes equal within 1e-6 relative (bench/invariance.py says how).
 #
 #   bench/invariance.sh [--models "elephant knot"] [--taus "0.05 0.1"] [--threads N]
-#                       [--jobs N] [--out DIR] [--fresh] [--acd PATH]
+#                       [--jobs N] [--out DIR] [--fresh] [--acd PATH] [--invariant]
 #
 #   --models   default: the 10 closed corpus models     --taus     default: 0.05 0.1
 #   --threads  acd's --threads (default 2)               --jobs     runs at a time (default 1)
 #   --out      cache (default out/invariance): finished runs are reused unless --fresh
+#   --invariant  decompose with acd's --invariant (the shape's own frame); use another --out
 #
 # Prints a Markdown table model x tau: motions matching out of 10, the largest relative volume
 # difference between matched components, the part counts seen. Exits 1 when some model has
@@ -29,8 +30,9 @@ OUT="out/invariance"
 FRESH=0
 ACD="build/bin/acd"
 PY=/usr/bin/python3
+EXTRA=()
 
-usage() { sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; }
 while [[ $# -gt 0 ]]; do
     case "$1" in
         --models) MODELS="$2"; shift 2 ;;
@@ -40,6 +42,7 @@ while [[ $# -gt 0 ]]; do
         --out) OUT="$2"; shift 2 ;;
         --fresh) FRESH=1; shift ;;
         --acd) ACD="$2"; shift 2 ;;
+        --invariant) EXTRA+=(--invariant); shift ;;
         -h|--help) usage; exit 0 ;;
         *) echo "invariance: unknown option $1" >&2; usage >&2; exit 2 ;;
     esac
@@ -55,7 +58,7 @@ run_one() {
     [[ -f "$dir/rc" ]] && return 0
     rm -rf "$dir"; mkdir -p "$dir"
     echo "[invariance] $dir" >&2
-    "$ACD" decompose "$mesh" -t "$tau" -o "$dir" -q --threads "$THREADS" 2>"$dir/stderr.txt" || rc=$?
+    "$ACD" decompose "$mesh" -t "$tau" -o "$dir" -q --threads "$THREADS" "${EXTRA[@]}" 2>"$dir/stderr.txt" || rc=$?
     if (( rc != 0 && rc != 4 )); then
         echo "[invariance]   FAILED (exit $rc, see $dir/stderr.txt)" >&2; return 1
     fi
