@@ -11,10 +11,11 @@ ValueError whose ``code`` is an acd.StatusCode.
 """
 from ._core import Error, StatusCode, __version__
 from ._meshes import Mesh, read_mesh, write_mesh
-from ._api import (Decomposition, SurfaceDecomposition, decompose, decompose_surface, diagnose, evaluate,
-                   write_simulator_files)
+from ._api import (Decomposition, MeshDecomposition, SurfaceDecomposition, decompose, decompose_exact,
+                   decompose_surface, diagnose, evaluate, write_simulator_files)
 
 Error.__module__ = __name__
 
-__all__ = ["Decomposition", "Error", "Mesh", "StatusCode", "SurfaceDecomposition", "__version__", "decompose",
-           "decompose_surface", "diagnose", "evaluate", "read_mesh", "write_mesh", "write_simulator_files"]
+__all__ = ["Decomposition", "Error", "Mesh", "MeshDecomposition", "StatusCode", "SurfaceDecomposition",
+           "__version__", "decompose", "decompose_exact", "decompose_surface", "diagnose", "evaluate", "read_mesh",
+           "write_mesh", "write_simulator_files"]

@@ -1,14 +1,15 @@
-"""The functions of the acd package: decompose, write_simulator_files, decompose_surface, evaluate, diagnose."""
+"""The functions of the acd package: decompose (with its modes: per_mesh, surface, exact),
+write_simulator_files, decompose_surface, decompose_exact, evaluate, diagnose."""
 import json
 import os
 import warnings
-from typing import List, NamedTuple
+from typing import List, NamedTuple, Optional
 
 import numpy as np
 
 from . import _core
 from ._meshes import Mesh, meshes, resolve
-from ._options import build, with_options
+from ._options import build, keywords, with_options
 
 
 class Decomposition(NamedTuple):
@@ -33,6 +34,17 @@ class SurfaceDecomposition(NamedTuple):
     patch_faces: List[np.ndarray]
 
 
+class MeshDecomposition(NamedTuple):
+    """One mesh of a scene file decomposed on its own (``decompose(path, per_mesh=True)``, as
+    ``acd decompose --per-mesh``): ``name`` ("node/mesh", report["mesh"], the NAME of the command's
+    OUT/NNN_NAME/ folder), ``decomposition`` (a Decomposition, None when the mesh was refused)
+    and ``error`` (the acd.Error that refused it, else None): a refused mesh does not stop the others."""
+
+    name: str
+    decomposition: Optional[Decomposition]
+    error: Optional[_core.Error]
+
+
 def _report(text, path):
     report = json.loads(text)
     report["model"] = path  # None for arrays
@@ -41,28 +53,37 @@ def _report(text, path):
 
 def _warn(report, what):
     # The command line's warnings, as Python warnings.
+    mesh = f"mesh {report['mesh']}: " if "mesh" in report else ""
     pairs = report["input"]["self_intersecting_face_pairs"]
     if pairs > 0:
-        warnings.warn(f"the model intersects itself ({pairs} face pairs); {what} where it does", RuntimeWarning,
-                      stacklevel=3)
+        warnings.warn(f"{mesh}the model intersects itself ({pairs} face pairs); {what} where it does",
+                      RuntimeWarning, stacklevel=3)
     if report["totals"]["unresolved"] > 0:
-        warnings.warn(f"{report['totals']['unresolved']} component(s) still exceed tau "
+        warnings.warn(f"{mesh}{report['totals']['unresolved']} component(s) still exceed tau "
                       "(marked unresolved in the report)", RuntimeWarning, stacklevel=3)
     budget = report.get("hull_budget")
     if budget and budget["exceeds_tau"] and budget["components_after"] < budget["components_before"]:
-        warnings.warn(f"max_hulls={budget['max_hulls']}: merging {budget['components_before']} components into "
+        warnings.warn(f"{mesh}max_hulls={budget['max_hulls']}: merging {budget['components_before']} components into "
                       f"{budget['components_after']} reached concavity {budget['max_concavity']:.4g}, above "
                       f"tau = {budget['tau']:g} (report['hull_budget'])", RuntimeWarning, stacklevel=3)
 
 
+def _given(options, options_class):
+    """The keywords given that another mode's function takes (the others keep their defaults)."""
+    names = keywords(options_class)
+    return {name: value for name, value in options.items() if name in names}
+
+
 @with_options(_core.DecomposeOptions)
-def decompose(mesh, faces=None, *, progress=None, **options) -> Decomposition:
+def decompose(mesh, faces=None, *, progress=None, **options):
     """Solid approximate convex decomposition: every component ends with concavity <= tau
     (normalised units: the model scaled so that its minimum enclosing sphere has radius 1).
+    Returns a Decomposition.
 
-    ``mesh``: a path (OFF, OBJ, PLY, STL), a Mesh or (vertices, faces) pair, an object with
-    ``vertices`` and ``faces`` (a trimesh.Trimesh), or an (n, 3) float array with ``faces`` an
-    (m, 3) int array. ``progress(done, pending)`` is called after each round of cuts.
+    ``mesh``: a path (OFF, OBJ, PLY, STL; glTF, GLB, COLLADA, 3MF, FBX, whose meshes are merged
+    into one model), a Mesh or (vertices, faces) pair, an object with ``vertices`` and ``faces``
+    (a trimesh.Trimesh), or an (n, 3) float array with ``faces`` an (m, 3) int array.
+    ``progress(done, pending)`` is called after each round of cuts.
     The GIL is released while the library works. Bad input or parameters raise acd.Error (a
     ValueError) with the library's message; an exception from ``progress`` is raised when the
     decomposition finishes.
@@ -72,14 +93,45 @@ def decompose(mesh, faces=None, *, progress=None, **options) -> Decomposition:
     ``max_hull_vertices`` (every hull replaced by a containing polytope of at most K >= 4
     corners) and ``density`` (report["mass_properties"]); None: not applied.
     ``write_simulator_files`` writes the result as URDF, MJCF, SDF, glTF, OBJ or STL.
+
+    The command's other modes, with its flags: ``per_mesh=True`` decomposes every mesh of a
+    scene file (or every object of an OBJ) on its own and returns a list of MeshDecomposition;
+    ``surface=True`` is decompose_surface; ``exact=True`` is decompose_exact (with
+    ``exact_time_limit``, ``exact_memory``, ``exact_tolerance``, ``surface``, ``no_fill_holes``).
+    Options a mode does not use are ignored, as on the command line.
     """
     settings = build(_core.DecomposeOptions, options, "decompose")
     _core.validate(settings)  # before reading the model, as the command does
+    if settings.exact:
+        return decompose_exact(mesh, faces, progress=progress, **_given(options, _core.ExactOptions))
+    if settings.surface:
+        return decompose_surface(mesh, faces, progress=progress, **_given(options, _core.SurfaceDecomposeOptions))
+    if settings.per_mesh:
+        return _decompose_per_mesh(mesh, faces, settings, progress)
     vertices, faces, path = resolve(mesh, faces)
-    parts, hulls, text = _core.decompose(vertices, faces, settings, path or "", progress)
+    parts, hulls, text = _core.decompose(vertices, faces, settings, path or "", "", progress)
     report = _report(text, path)
     _warn(report, "pieces whose sections cross themselves may stay above tau")
     return Decomposition(meshes(parts), meshes(hulls), report)
+
+
+def _decompose_per_mesh(path, faces, settings, progress):
+    """``acd decompose --per-mesh``: each mesh of the file decomposed with tau in its own normalised units."""
+    if faces is not None or not isinstance(path, (str, os.PathLike)):
+        raise TypeError("per_mesh=True decomposes the meshes of a file: give its path")
+    path = os.fspath(path)
+    results = []
+    for name, (vertices, mesh_faces) in _core.read_scene_meshes(path):
+        try:
+            parts, hulls, text = _core.decompose(vertices, mesh_faces, settings, path, name, progress)
+        except _core.Error as error:
+            warnings.warn(f"mesh {name}: {error}", RuntimeWarning, stacklevel=3)
+            results.append(MeshDecomposition(name, None, error))
+            continue
+        report = _report(text, path)
+        _warn(report, "pieces whose sections cross themselves may stay above tau")
+        results.append(MeshDecomposition(name, Decomposition(meshes(parts), meshes(hulls), report), None))
+    return results
 
 
 def write_simulator_files(folder, decomposition, model, formats=("urdf",), *, name=None, model_faces=None):
@@ -116,6 +168,36 @@ def decompose_surface(mesh, faces=None, *, progress=None, **options) -> SurfaceD
     report = _report(text, path)
     _warn(report, "the patches intersect")
     return SurfaceDecomposition(meshes(patches), meshes(hulls), report, Mesh(*surface), list(patch_faces))
+
+
+@with_options(_core.ExactOptions)
+def decompose_exact(mesh, faces=None, *, progress=None, **options):
+    """Exact convex decomposition, the baseline of ``acd decompose --exact``: interior-disjoint
+    convex pieces whose union is the model (CGAL's convex_decomposition_3), returned as a
+    Decomposition whose ``hulls`` are the pieces themselves (a convex piece is its own hull).
+    With ``surface=True`` (``--exact --surface``): convex surface patches, as a
+    SurfaceDecomposition whose ``surface`` is the input. Arguments as for decompose.
+
+    The solid decomposition runs in a worker process that ``exact_time_limit`` (seconds, 0: none)
+    and ``exact_memory`` (GiB of address space, 0: none) cap; a cap that stops it is no error:
+    report["totals"]["finished"] is False, report["totals"]["note"] says where it stopped, and a
+    RuntimeWarning says so (the command exits with 4). ``progress(stage, seconds)`` is called
+    about once a second. ``exact_tolerance``: how far a vertex may lie beyond a patch face's plane
+    (surface only, normalised units).
+    """
+    settings = build(_core.ExactOptions, options, "decompose_exact")
+    _core.validate(settings)
+    vertices, faces, path = resolve(mesh, faces)
+    if settings.surface:
+        patches, hulls, text, patch_faces = _core.decompose_exact_surface(vertices, faces, settings, path or "")
+        return SurfaceDecomposition(meshes(patches), meshes(hulls), _report(text, path), Mesh(vertices, faces),
+                                    list(patch_faces))
+    pieces, text = _core.decompose_exact(vertices, faces, settings, path or "", progress)
+    report = _report(text, path)
+    if not report["totals"]["finished"]:
+        warnings.warn(f"exact decomposition not finished: {report['totals']['note']}", RuntimeWarning, stacklevel=2)
+    pieces = meshes(pieces)
+    return Decomposition(pieces, pieces, report)
 
 
 @with_options(_core.EvaluateOptions)
@@ -155,5 +237,5 @@ def diagnose(mesh, faces=None) -> dict:
     return result
 
 
-__all__ = ["Decomposition", "SurfaceDecomposition", "decompose", "decompose_surface", "evaluate", "diagnose",
-           "write_simulator_files"]
+__all__ = ["Decomposition", "MeshDecomposition", "SurfaceDecomposition", "decompose", "decompose_exact",
+           "decompose_surface", "evaluate", "diagnose", "write_simulator_files"]

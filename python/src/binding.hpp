@@ -5,6 +5,7 @@
 #include <acd/mesh.hpp>
 #include <acd/post_passes.hpp>
 #include <acd/status.hpp>
+#include <acd/surface_exact.hpp>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -31,12 +32,29 @@ inline void check(const acd::Status& s) {
   if (!s.ok()) throw StatusError(s);
 }
 
+/// The keywords of `acd decompose --exact [--surface]`, with the command's defaults (a longer
+/// time limit than the library's).
+struct ExactSettings {
+  bool surface = false;                                    // --surface: convex surface patches
+  double timeLimitSeconds = 600.0;                         // --exact-time-limit, 0: none
+  double memoryGiB = 8.0;                                  // --exact-memory, 0: none
+  double tolerance = acd::SurfaceExactOptions{}.tolerance;  // --exact-tolerance
+  bool fillHoles = true;                                   // off with --no-fill-holes
+};
+
+/// The checks `acd decompose --exact` makes before reading the model.
+acd::Status validate(const ExactSettings& settings);
+
 /// acd.decompose's keywords: the options of the decomposition and of the post-passes that follow
-/// it, as `acd decompose` has both.
+/// it, as `acd decompose` has both, and the modes the command switches to (the Python layer
+/// routes them: surface to decompose_surface, exact to decompose_exact, per_mesh mesh by mesh).
 struct SolidOptions {
   acd::DecomposeOptions decompose;
   acd::PostPassOptions post;
   bool tauGiven = false;  // tau and tau_abs together are refused, as -t and --tau-abs are
+  bool exact = false;
+  bool perMesh = false;
+  ExactSettings exactSettings;  // surface, exact_time_limit, exact_memory, exact_tolerance
 };
 
 /// The checks `acd decompose` makes before reading the model (tau itself waits for tau_abs).
@@ -51,5 +69,7 @@ py::tuple toArrays(const acd::TriMesh& mesh);
 
 void bindErrors(py::module_& m);   // acd._core.Error, acd._core.StatusCode
 void bindOptions(py::module_& m);  // option classes with the CLI's keywords and defaults
+void bindExact(py::module_& m);    // decompose_exact, decompose_exact_surface (exact.cpp)
+void bindScene(py::module_& m);    // read_scene_meshes: the meshes --per-mesh decomposes (scene.cpp)
 
 }  // namespace acdpy

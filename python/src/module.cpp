@@ -1,6 +1,7 @@
 // acd._core: libacd for Python. The pure-Python package acd (python/acd/) checks arguments and
 // shapes results; this file only moves arrays in and out and runs the library without the GIL.
 #include "binding.hpp"
+#include "progress.hpp"
 
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
@@ -22,35 +23,6 @@
 namespace acdpy {
 
 namespace {
-
-/// The library's progress callback, relayed to a Python callable with the GIL held. The library
-/// cannot be stopped midway, so an exception from the callable silences it and is raised once
-/// the library returns.
-class ProgressRelay {
- public:
-  explicit ProgressRelay(py::object callback) : callback_(std::move(callback)) {}
-
-  std::function<void(int, int)> function() {
-    if (callback_.is_none()) return {};
-    return [this](int done, int pending) {
-      if (error_) return;
-      py::gil_scoped_acquire gil;
-      try {
-        callback_(done, pending);
-      } catch (py::error_already_set& e) {
-        error_ = std::move(e);
-      }
-    };
-  }
-
-  void raiseIfFailed() {
-    if (error_) throw *error_;
-  }
-
- private:
-  py::object callback_;
-  std::optional<py::error_already_set> error_;
-};
 
 py::list arraysOf(const std::vector<acd::TriMesh>& meshes) {
   py::list out;
@@ -90,13 +62,14 @@ py::list readObjObjects(const std::string& path) {
 }
 
 /// (components [(V, F)], hulls [(V, F)], report.json text): the decomposition and its
-/// post-passes, as `acd decompose` runs them.
+/// post-passes, as `acd decompose` runs them. `sceneMesh` names the mesh of a scene decomposed on
+/// its own (report["mesh"], as with --per-mesh); empty for a whole model.
 py::tuple decompose(const Vertices& vertices, const Faces& faces, const SolidOptions& settings,
-                    const std::string& model, py::object progress) {
+                    const std::string& model, const std::string& sceneMesh, py::object progress) {
   const acd::TriMesh mesh = toMesh(vertices, faces);
   ProgressRelay relay(std::move(progress));
   acd::DecomposeOptions options = settings.decompose;
-  options.progress = relay.function();
+  options.progress = relay.function<int, int>();
   acd::Status parameters;
   acd::Decomposition d;
   acd::PostPassResult post;
@@ -107,8 +80,11 @@ py::tuple decompose(const Vertices& vertices, const Faces& faces, const SolidOpt
     if (parameters.ok()) parameters = acd::validate(options);
     if (parameters.ok()) d = acd::decompose(mesh, options);
     if (parameters.ok() && d.status.ok()) post = acd::applyPostPasses(d, settings.post);
-    if (parameters.ok() && d.status.ok() && post.status.ok())
-      report = acd::reportJson(acd::describeInput(model, mesh), d, post);
+    if (parameters.ok() && d.status.ok() && post.status.ok()) {
+      acd::ReportInput input = acd::describeInput(model, mesh);
+      input.mesh = sceneMesh;
+      report = acd::reportJson(input, d, post);
+    }
   }
   relay.raiseIfFailed();
   check(parameters);
@@ -157,7 +133,7 @@ py::tuple decomposeSurface(const Vertices& vertices, const Faces& faces, acd::Su
                            const std::string& model, py::object progress) {
   const acd::TriMesh mesh = toMesh(vertices, faces);
   ProgressRelay relay(std::move(progress));
-  options.progress = relay.function();
+  options.progress = relay.function<int, int>();
   acd::SurfaceDecomposition d;
   std::string report;
   {
@@ -256,6 +232,8 @@ PYBIND11_MODULE(_core, m) {
   m.attr("__version__") = ACD_VERSION;
   bindErrors(m);
   bindOptions(m);
+  bindExact(m);
+  bindScene(m);
   // Parameters are checked before the model is read, as the command does.
   m.def("validate", [](const SolidOptions& o) { check(validate(o)); }, py::arg("options"));
   m.def("validate", [](const acd::SurfaceDecomposeOptions& o) { check(acd::validate(o)); }, py::arg("options"));
@@ -263,7 +241,7 @@ PYBIND11_MODULE(_core, m) {
   m.def("write_mesh", &writeMesh, py::arg("path"), py::arg("vertices"), py::arg("faces"));
   m.def("read_obj_objects", &readObjObjects, py::arg("path"));
   m.def("decompose", &decompose, py::arg("vertices"), py::arg("faces"), py::arg("options"), py::arg("model"),
-        py::arg("progress"));
+        py::arg("scene_mesh"), py::arg("progress"));
   m.def("write_simulator_files", &writeSimulatorFiles, py::arg("folder"), py::arg("name"), py::arg("visual"),
         py::arg("hulls"), py::arg("components"), py::arg("density"), py::arg("formats"));
   m.def("decompose_surface", &decomposeSurface, py::arg("vertices"), py::arg("faces"), py::arg("options"),

@@ -9,6 +9,7 @@
 
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <optional>
 #include <type_traits>
 
@@ -40,12 +41,38 @@ void tauDerived(py::class_<Options>& c, const char* keyword, Field field) {
       [field](Options& o, std::optional<double> v) { field(o) = v ? *v : -1.0; });
 }
 
+/// The caps and mode of `acd decompose --exact`, reached through `settings(options)`.
+template <class Options, class Settings>
+void exactKeywords(py::class_<Options>& c, Settings settings) {
+  plain(c, "surface", [settings](Options& o) -> bool& { return settings(o).surface; });
+  plain(c, "exact_time_limit", [settings](Options& o) -> double& { return settings(o).timeLimitSeconds; });
+  plain(c, "exact_memory", [settings](Options& o) -> double& { return settings(o).memoryGiB; });
+  plain(c, "exact_tolerance", [settings](Options& o) -> double& { return settings(o).tolerance; });
+}
+
 }  // namespace
+
+acd::Status validate(const ExactSettings& o) {
+  if (!(o.timeLimitSeconds >= 0) || !(o.memoryGiB >= 0) || !std::isfinite(o.memoryGiB))
+    return acd::Status::error(acd::StatusCode::InvalidParameter, "exact_time_limit and exact_memory must be >= 0");
+  return acd::Status::success();
+}
 
 acd::Status validate(const SolidOptions& o) {
   if (o.post.tauAbs && o.tauGiven)
     return acd::Status::error(acd::StatusCode::InvalidParameter, "give either tau or tau_abs, not both");
   if (const acd::Status s = acd::validate(o.post); !s.ok()) return s;
+  // The other modes check their own options (decompose_surface, decompose_exact).
+  if (o.exact || o.exactSettings.surface) {
+    if (o.post.tauAbs || o.post.maxHulls || o.post.maxHullVertices)
+      return acd::Status::error(acd::StatusCode::InvalidParameter,
+                                "tau_abs, max_hulls and max_hull_vertices apply to solid decomposition only "
+                                "(not surface or exact)");
+    if (o.perMesh)
+      return acd::Status::error(acd::StatusCode::InvalidParameter,
+                                "per_mesh applies to solid decomposition only (not surface or exact)");
+    return acd::Status::success();
+  }
   return o.post.tauAbs ? acd::Status::success() : acd::validate(o.decompose);
 }
 
@@ -69,6 +96,15 @@ void bindOptions(py::module_& m) {
   plain(solid, "max_hulls", [](SolidOptions& o) -> std::optional<int>& { return o.post.maxHulls; });
   plain(solid, "max_hull_vertices", [](SolidOptions& o) -> std::optional<int>& { return o.post.maxHullVertices; });
   plain(solid, "density", [](SolidOptions& o) -> double& { return o.post.density; });
+  // Modes: --per-mesh, --surface (decompose_surface), --exact and its caps (decompose_exact).
+  plain(solid, "per_mesh", [](SolidOptions& o) -> bool& { return o.perMesh; });
+  plain(solid, "exact", [](SolidOptions& o) -> bool& { return o.exact; });
+  exactKeywords(solid, [](SolidOptions& o) -> ExactSettings& { return o.exactSettings; });
+
+  py::class_<ExactSettings> exact(m, "ExactOptions", "Options of `acd decompose --exact`");
+  exact.def(py::init<>());
+  exactKeywords(exact, [](ExactSettings& o) -> ExactSettings& { return o; });
+  negated(exact, "no_fill_holes", [](ExactSettings& o) -> bool& { return o.fillHoles; });
 
   using Surface = acd::SurfaceDecomposeOptions;
   py::class_<Surface> surface(m, "SurfaceDecomposeOptions", "Options of `acd decompose --surface`");
