@@ -2,6 +2,7 @@
 write_simulator_files, decompose_surface, decompose_exact, evaluate, diagnose."""
 import json
 import os
+import sys
 import warnings
 from typing import List, NamedTuple, Optional
 
@@ -51,21 +52,31 @@ def _report(text, path):
     return report
 
 
+_PACKAGE = os.path.dirname(os.path.abspath(__file__))
+
+
+def _warn_caller(message):
+    """A RuntimeWarning pointing at the first caller outside the package, however deep the routing."""
+    level, frame = 2, sys._getframe(1)
+    while frame is not None and os.path.dirname(os.path.abspath(frame.f_code.co_filename)) == _PACKAGE:
+        level, frame = level + 1, frame.f_back
+    warnings.warn(message, RuntimeWarning, stacklevel=level)
+
+
 def _warn(report, what):
     # The command line's warnings, as Python warnings.
     mesh = f"mesh {report['mesh']}: " if "mesh" in report else ""
     pairs = report["input"]["self_intersecting_face_pairs"]
     if pairs > 0:
-        warnings.warn(f"{mesh}the model intersects itself ({pairs} face pairs); {what} where it does",
-                      RuntimeWarning, stacklevel=3)
+        _warn_caller(f"{mesh}the model intersects itself ({pairs} face pairs); {what} where it does")
     if report["totals"]["unresolved"] > 0:
-        warnings.warn(f"{mesh}{report['totals']['unresolved']} component(s) still exceed tau "
-                      "(marked unresolved in the report)", RuntimeWarning, stacklevel=3)
+        _warn_caller(f"{mesh}{report['totals']['unresolved']} component(s) still exceed tau "
+                     "(marked unresolved in the report)")
     budget = report.get("hull_budget")
     if budget and budget["exceeds_tau"] and budget["components_after"] < budget["components_before"]:
-        warnings.warn(f"{mesh}max_hulls={budget['max_hulls']}: merging {budget['components_before']} components into "
-                      f"{budget['components_after']} reached concavity {budget['max_concavity']:.4g}, above "
-                      f"tau = {budget['tau']:g} (report['hull_budget'])", RuntimeWarning, stacklevel=3)
+        _warn_caller(f"{mesh}max_hulls={budget['max_hulls']}: merging {budget['components_before']} components into "
+                     f"{budget['components_after']} reached concavity {budget['max_concavity']:.4g}, above "
+                     f"tau = {budget['tau']:g} (report['hull_budget'])")
 
 
 def _given(options, options_class):
@@ -125,7 +136,7 @@ def _decompose_per_mesh(path, faces, settings, progress):
         try:
             parts, hulls, text = _core.decompose(vertices, mesh_faces, settings, path, name, progress)
         except _core.Error as error:
-            warnings.warn(f"mesh {name}: {error}", RuntimeWarning, stacklevel=3)
+            _warn_caller(f"mesh {name}: {error}")
             results.append(MeshDecomposition(name, None, error))
             continue
         report = _report(text, path)
@@ -195,7 +206,7 @@ def decompose_exact(mesh, faces=None, *, progress=None, **options):
     pieces, text = _core.decompose_exact(vertices, faces, settings, path or "", progress)
     report = _report(text, path)
     if not report["totals"]["finished"]:
-        warnings.warn(f"exact decomposition not finished: {report['totals']['note']}", RuntimeWarning, stacklevel=2)
+        _warn_caller(f"exact decomposition not finished: {report['totals']['note']}")
     pieces = meshes(pieces)
     return Decomposition(pieces, pieces, report)
 

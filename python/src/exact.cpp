@@ -55,7 +55,10 @@ std::string solidReport(const std::string& model, const acd::TriMesh& mesh, cons
   for (std::size_t i = 0; i < d.pieces.size(); ++i) {
     const double v = acd::signedVolume(d.pieces[i]);
     volume += v;
-    pieces.push_back({{"id", i}, {"vertices", d.pieces[i].vertices.size()}, {"faces", d.pieces[i].faces.size()}, {"volume", v}});
+    pieces.push_back({{"id", i},
+                      {"vertices", d.pieces[i].vertices.size()},
+                      {"faces", d.pieces[i].faces.size()},
+                      {"volume", v}});
   }
   const double inputVolume = diagnosis.volume;
   json j;
@@ -74,7 +77,8 @@ std::string solidReport(const std::string& model, const acd::TriMesh& mesh, cons
                  {"solids", d.solids},
                  {"unfinished_solids", d.unfinishedSolids},
                  {"volume", volume},
-                 {"volume_relative_error", d.finished && inputVolume > 0 ? std::abs(volume - inputVolume) / inputVolume : 0.0},
+                 {"volume_relative_error",
+                  d.finished && inputVolume > 0 ? std::abs(volume - inputVolume) / inputVolume : 0.0},
                  {"output_bytes", bytes},
                  {"note", d.note}};
   j["timing"] = {{"total_seconds", d.seconds}};
@@ -112,9 +116,9 @@ std::string surfaceReport(const std::string& model, const acd::TriMesh& mesh, co
   return j.dump();
 }
 
-/// (pieces [(V, F)], report.json text); the settings are checked (validate) first. The library runs CGAL in a forked worker, which only
-/// runs C++ (never Python), so forking from the interpreter is safe; the GIL is released
-/// meanwhile and `progress(stage, seconds)` is called about once a second.
+/// (pieces [(V, F)], report.json text), for settings that passed validate(). The library runs
+/// CGAL in a forked worker that only runs C++ (never Python), so forking from the interpreter is
+/// safe; the GIL is released meanwhile and `progress(stage, seconds)` is called about once a second.
 py::tuple decomposeExact(const Vertices& vertices, const Faces& faces, const ExactSettings& settings,
                          const std::string& model, py::object progress) {
   const acd::TriMesh mesh = toMesh(vertices, faces);
