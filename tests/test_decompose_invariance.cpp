@@ -89,8 +89,9 @@ void expectInvariant(const TriMesh& mesh, double tau, int motions) {
 
 TEST(DecomposeInvariance, GeneratedShape) { expectInvariant(asymmetricShape(), 0.05, 5); }
 
+// (cow passes through itself and is decomposed through its wrap, made in the canonical frame too.)
 TEST(DecomposeInvariance, CorpusModels) {
-  for (const auto& [model, tau] : std::vector<std::pair<std::string, double>>{{"eight", 0.05}, {"elephant", 0.1}}) {
+  for (const auto& [model, tau] : std::vector<std::pair<std::string, double>>{{"eight", 0.05}, {"elephant", 0.1}, {"cow", 0.1}}) {
     SCOPED_TRACE(model);
     const acd::ReadResult r = acd::readMesh(corpus(model));
     if (!r.status.ok()) GTEST_SKIP() << corpus(model) << " not present (scripts/fetch_corpus.sh)";

@@ -1,4 +1,5 @@
 // Repairs, shells, hole filling and the wrap around the solid decomposition (acd/robust.hpp).
+#include <acd/canonical_frame.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/normalize.hpp>
 #include <acd/repair.hpp>
@@ -35,13 +36,23 @@ struct WrapShells {
   int faces = 0;
   double seconds = 0.0;
 };
-WrapShells wrapPieces(const std::vector<TriMesh>& pieces, double tau, double modelScale) {
+/// With `invariant` the pieces are wrapped in their canonical frame (acd/canonical_frame.hpp): the
+/// wrap follows a grid of the scene's box, so it would change with the pose otherwise.
+WrapShells wrapPieces(const std::vector<TriMesh>& pieces, double tau, double modelScale, bool invariant) {
   WrapShells out;
   out.parameters = wrapParametersFor(tau);
-  const Wrap w = alphaWrap(concatenate(pieces), out.parameters.alpha / modelScale, out.parameters.offset / modelScale);
+  Normalization frame;  // identity unless invariant
+  TriMesh input = concatenate(pieces);
+  if (invariant) {
+    frame = canonicalFrame(pieces);
+    input = canonicalMesh(input, frame).mesh;
+  }
+  const double unit = frame.scale / modelScale;  // one normalised unit in the wrap's coordinates
+  Wrap w = alphaWrap(input, out.parameters.alpha * unit, out.parameters.offset * unit);
   out.seconds = w.seconds;
   out.status = w.status;
   if (!w.status.ok()) return out;
+  if (invariant) w.mesh = undoNormalization(w.mesh, frame);
   out.faces = static_cast<int>(w.mesh.faces.size());
   for (TriMesh& part : splitEdgeConnected(w.mesh)) {
     if (signedVolume(part) < 0.0)
@@ -120,7 +131,7 @@ PreparedModel prepareModel(const TriMesh& mesh, const DecomposeOptions& options,
   out.isWrap.assign(out.shells.size(), 0);
   if (!unclosable.empty() && buildWrap) {
     const double scale = minimumSphereNormalization(repaired.mesh).scale;
-    WrapShells w = wrapPieces(unclosable, options.tau, scale);
+    WrapShells w = wrapPieces(unclosable, options.tau, scale, options.invariant);
     if (!w.status.ok()) return refuse(w.status);
     addWrapToReport(out.wrap, w, static_cast<int>(unclosable.size()), out.wrapReason);
     out.repairs.push_back(out.wrapReason + ": wrapped them (alpha " + number(w.parameters.alpha) + ", offset " +
@@ -262,7 +273,7 @@ Decomposition decomposeRepaired(const TriMesh& mesh, const DecomposeOptions& opt
       const bool crosses = countSelfIntersections(prepared.shells[i], 1) > 0;
       const std::string reason = plural(unresolved, "component", "components") + " of shell " + std::to_string(i) +
                                  " stayed above tau" + (crosses ? " (the surface passes through itself)" : "");
-      WrapShells w = wrapPieces({prepared.shells[i]}, o.tau, scale);
+      WrapShells w = wrapPieces({prepared.shells[i]}, o.tau, scale, o.invariant);
       if (w.status.ok()) {
         Decomposition redo;
         redo.status = Status::success();
