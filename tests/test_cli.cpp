@@ -386,3 +386,11 @@ TEST_F(Cli, EvaluateWithAMissingHullFile) {
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("nohulls.obj"), std::string::npos) << r.err;
 }
+
+TEST_F(Cli, PerMeshIsRefusedWithSurfaceOrExact) {
+  // --per-mesh decomposes each mesh of a scene as a solid; with --surface or --exact it would be
+  // silently ignored, so it is refused with one line (exit 1, a usage error).
+  const std::string l = writeModel("l.off", shapes::lShape());
+  expectRefused(quote(l) + " --per-mesh --surface", 1, {"--per-mesh", "solid"});
+  expectRefused(quote(l) + " --per-mesh --exact", 1, {"--per-mesh", "solid"});
+}

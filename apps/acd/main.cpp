@@ -372,6 +372,10 @@ int main(int argc, char** argv) {
         return kUsage;
       }
     }
+    if (*dec && da.perMesh && (da.surface || acdcli::exactRequested(*dec))) {
+      std::fprintf(stderr, "acd: --per-mesh applies to solid decomposition only (not --surface or --exact)\n");
+      return kUsage;
+    }
     if (*dec && acdcli::exactRequested(*dec)) return acdcli::runExact(*dec, da.model, da.out, da.quiet);
     if (*dec && da.surface) {
       acdcli::SurfaceArgs sa;
