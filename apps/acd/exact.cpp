@@ -9,10 +9,8 @@
 #include <acd/exact_decomposition.hpp>
 #include <acd/io.hpp>
 #include <acd/normalize.hpp>
+#include <acd/report.hpp>
 #include <acd/surface_exact.hpp>
-#include <acd/version.hpp>
-
-#include <nlohmann/json.hpp>
 
 #include <unistd.h>
 
@@ -23,7 +21,6 @@
 #include <fstream>
 
 namespace fs = std::filesystem;
-using json = nlohmann::json;
 
 namespace acdcli {
 
@@ -44,18 +41,6 @@ bool ownSurfaceFlag = false;  // --surface was added here: no surface ACD in thi
 bool surfaceRequested(const CLI::App& decompose) {
   const CLI::Option* surface = decompose.get_option_no_throw("--surface");
   return surface != nullptr && surface->count() > 0;
-}
-
-json inputJson(const acd::TriMesh& mesh, const acd::MeshDiagnosis& d) {
-  const int notches = d.closed ? acd::countNotches(mesh) : -1;
-  return {{"vertices", d.vertices},
-          {"faces", d.faces},
-          {"edges", d.edges},
-          {"boundary_edges", d.boundaryEdges},
-          {"reflex_edges", notches},
-          {"notch_fraction", notches >= 0 && d.edges > 0 ? double(notches) / d.edges : 0.0},
-          {"genus", d.genus},
-          {"volume", d.closed ? d.volume : 0.0}};
 }
 
 std::uintmax_t fileSize(const fs::path& p) {
@@ -96,36 +81,12 @@ int runSolid(const std::string& model, const std::string& out, bool quiet) {
 
   const acd::MeshDiagnosis diagnosis = acd::diagnose(r.mesh);
   double volume = 0;
-  json pieces = json::array();
-  for (std::size_t i = 0; i < d.pieces.size(); ++i) {
-    const double v = acd::signedVolume(d.pieces[i]);
-    volume += v;
-    pieces.push_back({{"id", i}, {"vertices", d.pieces[i].vertices.size()}, {"faces", d.pieces[i].faces.size()}, {"volume", v}});
-  }
+  for (const acd::TriMesh& piece : d.pieces) volume += acd::signedVolume(piece);
   const double inputVolume = diagnosis.volume;
-  json j;
-  j["model"] = model;
-  j["version"] = ACD_VERSION;
-  j["method"] = "solid ECD (CGAL convex_decomposition_3 on an exact Nef polyhedron)";
-  j["parameters"] = {{"time_limit_seconds", flags.timeLimit}, {"memory_limit_gib", flags.memoryGiB}};
-  j["input"] = inputJson(r.mesh, diagnosis);
-  j["input"]["reflex_edges"] = d.reflexEdges;
-  j["input"]["notch_fraction"] = diagnosis.edges > 0 ? double(d.reflexEdges) / diagnosis.edges : 0.0;
-  j["input"]["holes_filled"] = d.holesFilled;
-  j["input"]["repairs"] = d.repairs;
-  j["pieces"] = pieces;
-  j["totals"] = {{"finished", d.finished},
-                 {"components", d.pieceCount},
-                 {"components_written", d.pieces.size()},
-                 {"solids", d.solids},
-                 {"unfinished_solids", d.unfinishedSolids},
-                 {"volume", volume},
-                 {"volume_relative_error", d.finished && inputVolume > 0 ? std::abs(volume - inputVolume) / inputVolume : 0.0},
-                 {"output_bytes", fileSize(objPath)},
-                 {"note", d.note}};
-  j["timing"] = {{"total_seconds", d.seconds}};
+  const std::string report =
+      acd::reportJson(model, diagnosis, d, flags.timeLimit, flags.memoryGiB, fileSize(objPath));
   std::ofstream rep(fs::path(out) / "report.json");
-  rep << j.dump(2) << "\n";
+  rep << report;
   if (!rep) return outputFailed((fs::path(out) / "report.json").string());
 
   if (!quiet) {
@@ -179,33 +140,15 @@ int runSurface(const std::string& model, const std::string& out, bool quiet) {
   if (!acd::writeObjObjects(objPath.string(), patches, names).ok()) return outputFailed(objPath.string());
 
   const acd::MeshDiagnosis diagnosis = acd::diagnose(r.mesh);
-  json list = json::array();
   std::size_t largest = 0, singles = 0;
-  double area = 0;
-  for (std::size_t i = 0; i < patches.size(); ++i) {
-    const double a = acd::surfaceArea(patches[i]);
-    area += a;
-    largest = std::max(largest, d.patches[i].size());
-    singles += d.patches[i].size() == 1;
-    list.push_back({{"id", i}, {"faces", d.patches[i].size()}, {"vertices", patches[i].vertices.size()}, {"area", a}});
+  for (const std::vector<int>& patch : d.patches) {
+    largest = std::max(largest, patch.size());
+    singles += patch.size() == 1;
   }
-  json j;
-  j["model"] = model;
-  j["version"] = ACD_VERSION;
-  j["method"] = "surface ECD (flood-and-retract convex patches)";
-  j["parameters"] = {{"tolerance", flags.tolerance}, {"units", "normalised: minimum enclosing sphere radius 1"}};
-  j["input"] = inputJson(r.mesh, diagnosis);
-  j["patches"] = list;
-  j["totals"] = {{"finished", true},
-                 {"components", d.patches.size()},
-                 {"single_face_patches", singles},
-                 {"largest_patch_faces", largest},
-                 {"area", area},
-                 {"input_area", diagnosis.area},
-                 {"output_bytes", fileSize(objPath)}};
-  j["timing"] = {{"total_seconds", d.seconds}};
+  const std::string report =
+      acd::reportJson(model, r.mesh, diagnosis, d, patches, flags.tolerance, fileSize(objPath));
   std::ofstream rep(fs::path(out) / "report.json");
-  rep << j.dump(2) << "\n";
+  rep << report;
   if (!rep) return outputFailed((fs::path(out) / "report.json").string());
 
   if (!quiet) {

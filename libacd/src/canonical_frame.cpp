@@ -75,17 +75,17 @@ Vec3 mostAlignedInPlane(const std::vector<WeightedNormal>& normals, const Vec3& 
 /// Axes for second moments with (nearly) equal eigenvalues, where the eigenvectors are any basis
 /// of their plane or space: the axis among the faces' normals (all three equal) or within the
 /// plane (two equal) that most of the surface faces. Boxy models get axes along their faces.
-void alignDegenerateAxes(const std::vector<TriMesh>& pieces, const Normalization& sphere,
+void alignDegenerateAxes(const std::vector<TriMesh>& pieces, const std::vector<std::vector<Vec3>>& points,
                          const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& eig, Vec3& e1, Vec3& e2) {
   const Vec3 values = eig.eigenvalues();  // ascending
   const double tolerance = 1e-8 * std::abs(values[2]);
   const bool topTwo = values[2] - values[1] <= tolerance, bottomTwo = values[1] - values[0] <= tolerance;
   if (!topTwo && !bottomTwo) return;
   std::vector<WeightedNormal> normals;
-  for (const TriMesh& m : pieces)
-    for (const Face& f : m.faces) {
-      const Vec3 n = (sphere.apply(m.vertices[f[1]]) - sphere.apply(m.vertices[f[0]]))
-                         .cross(sphere.apply(m.vertices[f[2]]) - sphere.apply(m.vertices[f[0]]));
+  for (std::size_t i = 0; i < pieces.size(); ++i)
+    for (const Face& f : pieces[i].faces) {
+      const std::vector<Vec3>& p = points[i];
+      const Vec3 n = (p[f[1]] - p[f[0]]).cross(p[f[2]] - p[f[0]]);
       if (n.norm() > 0.0) normals.push_back({n.normalized(), 0.5 * n.norm()});
     }
   if (normals.empty()) return;
@@ -114,39 +114,39 @@ Normalization canonicalFrame(const std::vector<TriMesh>& pieces) {
   const Normalization sphere = minimumSphereNormalization(concatenate(pieces));
   Normalization frame = sphere;
   // Moments in the sphere's units (translation and scale removed; rotation is what is sought).
+  std::vector<std::vector<Vec3>> points(pieces.size());
+  for (std::size_t i = 0; i < pieces.size(); ++i)
+    for (const Vec3& v : pieces[i].vertices) points[i].push_back(sphere.apply(v));
+  /// Calls visit(a, b, c, area) for every face, corners relative to `origin`.
+  auto forEachFace = [&](const Vec3& origin, const auto& visit) {
+    for (std::size_t i = 0; i < pieces.size(); ++i)
+      for (const Face& f : pieces[i].faces) {
+        const Vec3 a = points[i][f[0]] - origin, b = points[i][f[1]] - origin, c = points[i][f[2]] - origin;
+        visit(a, b, c, 0.5 * (b - a).cross(c - a).norm());
+      }
+  };
   double area = 0.0;
   Vec3 centroid = Vec3::Zero();
-  for (const TriMesh& m : pieces)
-    for (const Face& f : m.faces) {
-      const Vec3 a = sphere.apply(m.vertices[f[0]]), b = sphere.apply(m.vertices[f[1]]), c = sphere.apply(m.vertices[f[2]]);
-      const double A = 0.5 * (b - a).cross(c - a).norm();
-      area += A;
-      centroid += A * (a + b + c) / 3.0;
-    }
+  forEachFace(Vec3::Zero(), [&](const Vec3& a, const Vec3& b, const Vec3& c, double A) {
+    area += A;
+    centroid += A * (a + b + c) / 3.0;
+  });
   if (!(area > 0.0)) return frame;
   centroid /= area;
   Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
-  for (const TriMesh& m : pieces)
-    for (const Face& f : m.faces) {
-      const Vec3 a = sphere.apply(m.vertices[f[0]]) - centroid, b = sphere.apply(m.vertices[f[1]]) - centroid,
-                 c = sphere.apply(m.vertices[f[2]]) - centroid;
-      const double A = 0.5 * (b - a).cross(c - a).norm();
-      const Vec3 s = a + b + c;
-      second += A / 12.0 * (a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose());
-    }
+  forEachFace(centroid, [&](const Vec3& a, const Vec3& b, const Vec3& c, double A) {
+    const Vec3 s = a + b + c;
+    second += A / 12.0 * (a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose());
+  });
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(second);
   if (eig.info() != Eigen::Success) return frame;
   Vec3 e1 = eig.eigenvectors().col(2).normalized(), e2 = eig.eigenvectors().col(1).normalized();  // largest, middle
-  alignDegenerateAxes(pieces, sphere, eig, e1, e2);
+  alignDegenerateAxes(pieces, points, eig, e1, e2);
   const Vec3 axes[3] = {e1, e2, e1.cross(e2).normalized()};
   double third[3] = {0.0, 0.0, 0.0};
-  for (const TriMesh& m : pieces)
-    for (const Face& f : m.faces) {
-      const Vec3 a = sphere.apply(m.vertices[f[0]]) - centroid, b = sphere.apply(m.vertices[f[1]]) - centroid,
-                 c = sphere.apply(m.vertices[f[2]]) - centroid;
-      const double A = 0.5 * (b - a).cross(c - a).norm();
-      for (int k = 0; k < 3; ++k) third[k] += thirdMoment(A, axes[k].dot(a), axes[k].dot(b), axes[k].dot(c));
-    }
+  forEachFace(centroid, [&](const Vec3& a, const Vec3& b, const Vec3& c, double A) {
+    for (int k = 0; k < 3; ++k) third[k] += thirdMoment(A, axes[k].dot(a), axes[k].dot(b), axes[k].dot(c));
+  });
   // Flipping e1 or e2 flips e3 = e1 x e2 too, so only two signs are free: the two axes with the
   // larger third moments point where theirs is positive and the third axis follows. A mirror
   // symmetry makes one third moment vanish; it is then the one that follows.

@@ -14,10 +14,28 @@ namespace {
 
 const char* const kUnits = "normalised: minimum enclosing sphere radius 1";
 
+json vec(const Vec3& v) { return json::array({v.x(), v.y(), v.z()}); }
+
+json matrix(const Eigen::Matrix3d& m) {
+  json rows = json::array();
+  for (int r = 0; r < 3; ++r) rows.push_back(json::array({m(r, 0), m(r, 1), m(r, 2)}));
+  return rows;
+}
+
 json normalizationJson(const Normalization& n) {
-  json rotation = json::array();
-  for (int r = 0; r < 3; ++r) rotation.push_back({n.rotation(r, 0), n.rotation(r, 1), n.rotation(r, 2)});
-  return {{"center", {n.center.x(), n.center.y(), n.center.z()}}, {"scale", n.scale}, {"rotation", rotation}};
+  return {{"center", {n.center.x(), n.center.y(), n.center.z()}}, {"scale", n.scale}, {"rotation", matrix(n.rotation)}};
+}
+
+/// The "input" section of the exact baselines' reports; notches < 0: not counted (open mesh).
+json exactInputJson(const MeshDiagnosis& d, int notches) {
+  return {{"vertices", d.vertices},
+          {"faces", d.faces},
+          {"edges", d.edges},
+          {"boundary_edges", d.boundaryEdges},
+          {"reflex_edges", notches},
+          {"notch_fraction", notches >= 0 && d.edges > 0 ? double(notches) / d.edges : 0.0},
+          {"genus", d.genus},
+          {"volume", d.closed ? d.volume : 0.0}};
 }
 
 std::string text(const json& j) { return j.dump(2) + "\n"; }
@@ -114,14 +132,6 @@ json solidReport(const ReportInput& in, const Decomposition& d) {
                  {"hulls_seconds", d.times.hulls},
                  {"total_seconds", d.times.total}};
   return j;
-}
-
-json vec(const Vec3& v) { return json::array({v.x(), v.y(), v.z()}); }
-
-json matrix(const Eigen::Matrix3d& m) {
-  json rows = json::array();
-  for (int r = 0; r < 3; ++r) rows.push_back(json::array({m(r, 0), m(r, 1), m(r, 2)}));
-  return rows;
 }
 
 /// The sections of the post-passes, and their fields of each component, added to `j`.
@@ -251,6 +261,69 @@ std::string reportJson(const ReportInput& in, const SurfaceDecomposition& d, std
                  {"merging_seconds", d.times.merging},
                  {"hulls_seconds", d.times.hulls},
                  {"total_seconds", d.times.total}};
+  return text(j);
+}
+
+std::string reportJson(const std::string& model, const MeshDiagnosis& diagnosis, const ExactDecomposition& d,
+                       double timeLimitSeconds, double memoryGiB, std::uintmax_t outputBytes) {
+  double volume = 0;
+  json pieces = json::array();
+  for (std::size_t i = 0; i < d.pieces.size(); ++i) {
+    const double v = signedVolume(d.pieces[i]);
+    volume += v;
+    pieces.push_back({{"id", i}, {"vertices", d.pieces[i].vertices.size()}, {"faces", d.pieces[i].faces.size()}, {"volume", v}});
+  }
+  const double inputVolume = diagnosis.volume;
+  json j;
+  j["model"] = model;
+  j["version"] = ACD_VERSION;
+  j["method"] = "solid ECD (CGAL convex_decomposition_3 on an exact Nef polyhedron)";
+  j["parameters"] = {{"time_limit_seconds", timeLimitSeconds}, {"memory_limit_gib", memoryGiB}};
+  j["input"] = exactInputJson(diagnosis, d.reflexEdges);
+  j["input"]["holes_filled"] = d.holesFilled;
+  j["input"]["repairs"] = d.repairs;
+  j["pieces"] = pieces;
+  j["totals"] = {{"finished", d.finished},
+                 {"components", d.pieceCount},
+                 {"components_written", d.pieces.size()},
+                 {"solids", d.solids},
+                 {"unfinished_solids", d.unfinishedSolids},
+                 {"volume", volume},
+                 {"volume_relative_error", d.finished && inputVolume > 0 ? std::abs(volume - inputVolume) / inputVolume : 0.0},
+                 {"output_bytes", outputBytes},
+                 {"note", d.note}};
+  j["timing"] = {{"total_seconds", d.seconds}};
+  return text(j);
+}
+
+std::string reportJson(const std::string& model, const TriMesh& mesh, const MeshDiagnosis& diagnosis,
+                       const SurfaceExactDecomposition& d, const std::vector<TriMesh>& patches, double tolerance,
+                       std::uintmax_t outputBytes) {
+  json list = json::array();
+  std::size_t largest = 0, singles = 0;
+  double area = 0;
+  for (std::size_t i = 0; i < patches.size(); ++i) {
+    const double a = surfaceArea(patches[i]);
+    area += a;
+    largest = std::max(largest, d.patches[i].size());
+    singles += d.patches[i].size() == 1;
+    list.push_back({{"id", i}, {"faces", d.patches[i].size()}, {"vertices", patches[i].vertices.size()}, {"area", a}});
+  }
+  json j;
+  j["model"] = model;
+  j["version"] = ACD_VERSION;
+  j["method"] = "surface ECD (flood-and-retract convex patches)";
+  j["parameters"] = {{"tolerance", tolerance}, {"units", kUnits}};
+  j["input"] = exactInputJson(diagnosis, diagnosis.closed ? countNotches(mesh) : -1);
+  j["patches"] = list;
+  j["totals"] = {{"finished", true},
+                 {"components", d.patches.size()},
+                 {"single_face_patches", singles},
+                 {"largest_patch_faces", largest},
+                 {"area", area},
+                 {"input_area", diagnosis.area},
+                 {"output_bytes", outputBytes}};
+  j["timing"] = {{"total_seconds", d.seconds}};
   return text(j);
 }
 

@@ -1,5 +1,5 @@
 // acd.decompose_exact: the exact baselines of `acd decompose --exact [--surface]`, with the
-// report.json the command writes (apps/acd/exact.cpp builds the same fields).
+// report.json the command writes (both from acd/report.hpp).
 #include "binding.hpp"
 #include "progress.hpp"
 
@@ -8,13 +8,9 @@
 #include <acd/exact_decomposition.hpp>
 #include <acd/hull.hpp>
 #include <acd/io.hpp>
+#include <acd/report.hpp>
 #include <acd/surface_exact.hpp>
-#include <acd/version.hpp>
 
-#include <nlohmann/json.hpp>
-
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -22,8 +18,6 @@
 namespace acdpy {
 
 namespace {
-
-using json = nlohmann::json;
 
 /// Object names of the command's pieces.obj / patches.obj: the report's output_bytes is that file's size.
 std::vector<std::string> objectNames(const char* prefix, std::size_t count) {
@@ -36,84 +30,16 @@ std::vector<std::string> objectNames(const char* prefix, std::size_t count) {
   return names;
 }
 
-json inputJson(const acd::MeshDiagnosis& d, int notches) {
-  return {{"vertices", d.vertices},
-          {"faces", d.faces},
-          {"edges", d.edges},
-          {"boundary_edges", d.boundaryEdges},
-          {"reflex_edges", notches},
-          {"notch_fraction", notches >= 0 && d.edges > 0 ? double(notches) / d.edges : 0.0},
-          {"genus", d.genus},
-          {"volume", d.closed ? d.volume : 0.0}};
-}
-
 std::string solidReport(const std::string& model, const acd::TriMesh& mesh, const acd::ExactDecomposition& d,
                         const ExactSettings& settings) {
-  const acd::MeshDiagnosis diagnosis = acd::diagnose(mesh);
-  double volume = 0;
-  json pieces = json::array();
-  for (std::size_t i = 0; i < d.pieces.size(); ++i) {
-    const double v = acd::signedVolume(d.pieces[i]);
-    volume += v;
-    pieces.push_back({{"id", i},
-                      {"vertices", d.pieces[i].vertices.size()},
-                      {"faces", d.pieces[i].faces.size()},
-                      {"volume", v}});
-  }
-  const double inputVolume = diagnosis.volume;
-  json j;
-  j["model"] = model;
-  j["version"] = ACD_VERSION;
-  j["method"] = "solid ECD (CGAL convex_decomposition_3 on an exact Nef polyhedron)";
-  j["parameters"] = {{"time_limit_seconds", settings.timeLimitSeconds}, {"memory_limit_gib", settings.memoryGiB}};
-  j["input"] = inputJson(diagnosis, d.reflexEdges);
-  j["input"]["holes_filled"] = d.holesFilled;
-  j["input"]["repairs"] = d.repairs;
-  j["pieces"] = pieces;
   const std::size_t bytes = acd::objObjectsText(d.pieces, objectNames("piece", d.pieces.size())).size();
-  j["totals"] = {{"finished", d.finished},
-                 {"components", d.pieceCount},
-                 {"components_written", d.pieces.size()},
-                 {"solids", d.solids},
-                 {"unfinished_solids", d.unfinishedSolids},
-                 {"volume", volume},
-                 {"volume_relative_error",
-                  d.finished && inputVolume > 0 ? std::abs(volume - inputVolume) / inputVolume : 0.0},
-                 {"output_bytes", bytes},
-                 {"note", d.note}};
-  j["timing"] = {{"total_seconds", d.seconds}};
-  return j.dump();
+  return acd::reportJson(model, acd::diagnose(mesh), d, settings.timeLimitSeconds, settings.memoryGiB, bytes);
 }
 
 std::string surfaceReport(const std::string& model, const acd::TriMesh& mesh, const acd::SurfaceExactDecomposition& d,
                           const std::vector<acd::TriMesh>& patches, const ExactSettings& settings) {
-  const acd::MeshDiagnosis diagnosis = acd::diagnose(mesh);
-  json list = json::array();
-  std::size_t largest = 0, singles = 0;
-  double area = 0;
-  for (std::size_t i = 0; i < patches.size(); ++i) {
-    const double a = acd::surfaceArea(patches[i]);
-    area += a;
-    largest = std::max(largest, d.patches[i].size());
-    singles += d.patches[i].size() == 1;
-    list.push_back({{"id", i}, {"faces", d.patches[i].size()}, {"vertices", patches[i].vertices.size()}, {"area", a}});
-  }
-  json j;
-  j["model"] = model;
-  j["version"] = ACD_VERSION;
-  j["method"] = "surface ECD (flood-and-retract convex patches)";
-  j["parameters"] = {{"tolerance", settings.tolerance}, {"units", "normalised: minimum enclosing sphere radius 1"}};
-  j["input"] = inputJson(diagnosis, diagnosis.closed ? acd::countNotches(mesh) : -1);
-  j["patches"] = list;
-  j["totals"] = {{"finished", true},
-                 {"components", d.patches.size()},
-                 {"single_face_patches", singles},
-                 {"largest_patch_faces", largest},
-                 {"area", area},
-                 {"input_area", diagnosis.area},
-                 {"output_bytes", acd::objObjectsText(patches, objectNames("patch", patches.size())).size()}};
-  j["timing"] = {{"total_seconds", d.seconds}};
-  return j.dump();
+  const std::size_t bytes = acd::objObjectsText(patches, objectNames("patch", patches.size())).size();
+  return acd::reportJson(model, mesh, acd::diagnose(mesh), d, patches, settings.tolerance, bytes);
 }
 
 /// (pieces [(V, F)], report.json text), for settings that passed validate(). The library runs

@@ -5,11 +5,14 @@
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/evaluate.hpp>
+#include <acd/exact_decomposition.hpp>
 #include <acd/post_passes.hpp>
 #include <acd/surface_decompose.hpp>
+#include <acd/surface_exact.hpp>
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace acd {
 
@@ -36,6 +39,17 @@ std::string reportJson(const ReportInput& input, const Decomposition& d, const P
 /// report.json of a surface decomposition; `outputBytes` is the size of patches.obj
 /// (objObjectsText(...).size() when nothing is written).
 std::string reportJson(const ReportInput& input, const SurfaceDecomposition& d, std::uintmax_t outputBytes);
+
+/// report.json of the exact solid baseline (`acd decompose --exact`): `diagnosis` of the mesh as
+/// read, the caps as given (seconds, GiB), `outputBytes` the size of pieces.obj.
+std::string reportJson(const std::string& model, const MeshDiagnosis& diagnosis, const ExactDecomposition& d,
+                       double timeLimitSeconds, double memoryGiB, std::uintmax_t outputBytes);
+
+/// report.json of the exact surface baseline (`acd decompose --exact --surface`): `patches` are
+/// the patches as meshes (patchMesh), `outputBytes` the size of patches.obj.
+std::string reportJson(const std::string& model, const TriMesh& mesh, const MeshDiagnosis& diagnosis,
+                       const SurfaceExactDecomposition& d, const std::vector<TriMesh>& patches, double tolerance,
+                       std::uintmax_t outputBytes);
 
 /// What `acd evaluate --json` prints, same conventions.
 std::string evaluationJson(const std::string& model, const std::string& hullsFile, const Evaluation& e);
