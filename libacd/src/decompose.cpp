@@ -393,7 +393,6 @@ Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options) {
   // the result does not depend on the input's pose or on the order of its vertices, faces and pieces.
   result.normalization = o.invariant ? canonicalFrame(prepared.components)
                                      : minimumSphereNormalization(concatenate(prepared.components));
-  const double cube = std::pow(result.normalization.scale, 3);  // input volume -> normalised volume
   CanonicalInverse inverse(result.normalization);
   std::vector<CanonicalMesh> canonical;
   for (const TriMesh& c : prepared.components) {
@@ -416,7 +415,7 @@ Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options) {
     Piece p{std::move(canonical[i].mesh), 0, i};
     result.stats.inputEdges += static_cast<int>(p.mesh.faces.size() * 3 / 2);
     result.stats.inputNotches += countNotches(p.mesh);
-    result.stats.inputVolume += signedVolume(prepared.components[i]) * cube;
+    result.stats.inputVolume += signedVolume(applyNormalization(prepared.components[i], result.normalization));
     pending.push_back(std::move(p));
   }
   result.times.prepare = secondsSince(t);
@@ -513,12 +512,13 @@ Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options) {
   tbb::parallel_for(std::size_t(0), finals.size(), [&](std::size_t i) {
     Component& c = result.components[i];
     c = finalInfo[i];
-    // Hull and volumes are computed in the input's coordinates, so that each hull contains its
-    // component (vertex order is canonical, so is the hull's triangulation).
+    // The hull is computed in the input's coordinates, so that it contains the component (vertex
+    // order is canonical, so is the hull's triangulation). Volumes are measured on both brought to
+    // the normalised frame: in the input's coordinates a model far from the origin loses digits.
     c.mesh = o.invariant ? toInput(finals[i], inverse) : inverse(finals[i].mesh);
     c.hull = convexHull(c.mesh.vertices).mesh;
-    c.volume = signedVolume(c.mesh) * cube;
-    c.hullVolume = signedVolume(c.hull) * cube;
+    c.volume = signedVolume(applyNormalization(c.mesh, result.normalization));
+    c.hullVolume = signedVolume(applyNormalization(c.hull, result.normalization));
   });
   result.times.hulls = secondsSince(t);
   result.times.total = secondsSince(start);

@@ -294,8 +294,11 @@ Decomposition decomposeRepaired(const TriMesh& mesh, const DecomposeOptions& opt
                                    plural(w.faces, "face", "faces") + ")");
           wrapInputs.push_back(prepared.shells[i]);
           for (const TriMesh& s : w.shells) wraps.push_back(s);
-          // The first attempt's statistics are kept (work done), its components replaced.
+          // The first attempt's statistics are kept (work done), its components replaced. The
+          // volume decomposed is the wrap's now, as for a shell wrapped up front: the components
+          // add up to it, not to the shell's.
           d.components = std::move(redo.components);
+          d.stats.inputVolume = redo.stats.inputVolume;
           d.stats.cuts += redo.stats.cuts;
           d.times.concavity += redo.times.concavity;
           d.times.cutting += redo.times.cutting;
