@@ -96,6 +96,8 @@ int run(int argc, char** argv) {
   if (pre.openings.empty() && std::find(scenario.samplers.begin(), scenario.samplers.end(), "acd") != scenario.samplers.end())
     std::cerr << "planner: warning: the ACD of the free space has no openings (one component at tau " << scenario.acd.tau
               << "); the acd sampler falls back to uniform samples\n";
+  if (!quiet && !scenario.robot.solidSummary.empty())
+    std::cout << "robot " << scenario.robot.meshPath << ": " << scenario.robot.solidSummary << "\n";
   if (!quiet) planner::printPreprocessing(std::cout, pre, problem->acdSpread());
 
   const bool tty = !quiet && ::isatty(STDERR_FILENO);

@@ -1,6 +1,5 @@
 // Mesh obstacles and robots from files, COLLADA through assimp; planar (SE(2)) robots.
 #include "experiment.hpp"
-#include "mesh_loader.hpp"
 #include "problem.hpp"
 #include "scenario.hpp"
 
@@ -49,8 +48,8 @@ std::string colladaCube() {
 TEST(MeshInput, ColladaObstacleLoadsThroughAssimp) {
   acdtest::TempDir dir("planner_dae");
   std::ofstream(dir / "cube.dae") << colladaCube();
-  const planner::LoadedMesh m = planner::loadMeshFile(dir / "cube.dae");
-  ASSERT_TRUE(m.ok) << m.error;
+  const acd::ReadResult m = acd::readMesh(dir / "cube.dae");
+  ASSERT_TRUE(m.status.ok()) << m.status.message;
   const acd::Box3 b = acd::boundingBox(m.mesh);
   EXPECT_TRUE(b.lo.isApprox(Vec3(0, 0, 0), 1e-6) || b.lo.norm() < 1e-6);
   EXPECT_TRUE(b.hi.isApprox(Vec3(1, 1, 1), 1e-6));
@@ -68,7 +67,7 @@ samplers: [uniform]
 )";
   const planner::Scenario s = planner::parseScenario(text, "dae.yaml", dir.path().string());
   ASSERT_EQ(s.obstacles.size(), 1u);
-  EXPECT_NEAR(acd::signedVolume(s.obstacles[0]), 8.0, 1e-6);
+  EXPECT_NEAR(acd::signedVolume(s.obstacles[0].triangles), 8.0, 1e-6);
   const planner::Preprocessing pre = planner::preprocess(s);
   EXPECT_NEAR(acd::signedVolume(pre.freeSpace), 64.0 - 8.0, 1e-6);
 }
@@ -76,9 +75,9 @@ samplers: [uniform]
 TEST(MeshInput, BrokenColladaIsNamed) {
   acdtest::TempDir dir("planner_dae_bad");
   std::ofstream(dir / "broken.dae") << "<COLLADA>not really</COLLADA>";
-  const planner::LoadedMesh m = planner::loadMeshFile(dir / "broken.dae");
-  EXPECT_FALSE(m.ok);
-  EXPECT_NE(m.error.find("broken.dae"), std::string::npos);
+  const acd::ReadResult m = acd::readMesh(dir / "broken.dae");
+  EXPECT_FALSE(m.status.ok());
+  EXPECT_NE(m.status.message.find("broken.dae"), std::string::npos);
 }
 
 TEST(MeshInput, MeshRobotMustContainItsReferencePoint) {

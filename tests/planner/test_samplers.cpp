@@ -58,8 +58,8 @@ bool exactlyFree(const planner::Scenario& s, const Vec3& p, const Eigen::Quatern
     const Vec3 x = p + R * sign.cwiseProduct(h);
     if ((x.array() < s.workspace.lo.array()).any() || (x.array() > s.workspace.hi.array()).any()) return false;
   }
-  for (const acd::TriMesh& o : s.obstacles) {
-    const acd::Box3 b = acd::boundingBox(o);
+  for (const planner::Obstacle& o : s.obstacles) {
+    const acd::Box3 b = acd::boundingBox(o.triangles);
     if (overlaps(p, R, h, {b.lo, b.hi})) return false;
   }
   return true;

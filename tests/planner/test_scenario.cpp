@@ -3,6 +3,8 @@
 #include "problem.hpp"
 #include "scenario.hpp"
 
+#include <acd/inside.hpp>
+
 #include <helpers.hpp>
 
 #include <gtest/gtest.h>
@@ -128,11 +130,22 @@ TEST(Scenario, StartOrGoalInCollisionIsNamed) {
   EXPECT_NE(problemErrorOf(replaced(kValid, "[3.5, 1, 1]", "[2.15, 1, 1]")).find("goal pose is in collision"), std::string::npos);
 }
 
-TEST(Scenario, FloatingObstacleIsRefusedForTheAcdSamplerOnly) {
-  // A box floating in the middle of the workspace: a cavity of the free space.
+TEST(Scenario, FloatingObstacleIsAHoleOfTheAcd) {
+  // A box floating in the middle of the workspace: a cavity of the free space. The free space
+  // is cut through it before the ACD, so that no component covers the box.
   const std::string floating = replaced(kValid, "max: [2.1, 2, 2]}", "max: [2.1, 2, 2]}\n  - box: {min: [3, 0.8, 0.8], max: [3.2, 1.2, 1.2]}");
-  EXPECT_NE(problemErrorOf(floating).find("float inside the workspace"), std::string::npos);
-  EXPECT_EQ(problemErrorOf(replaced(floating, "samplers: [uniform, acd]", "samplers: [uniform]")), "");
+  const planner::Scenario s = planner::parseScenario(floating, "test.yaml", ".");
+  const planner::Preprocessing pre = planner::preprocess(s);
+  EXPECT_EQ(pre.cavities, 1);
+  EXPECT_GE(pre.freeSpacePieces, 2);
+  double volume = 0;
+  for (const acd::TriMesh& c : pre.components) {
+    volume += acd::signedVolume(c);
+    EXPECT_FALSE(acd::InsideTest(c).inside(acd::Vec3(3.1, 1.0, 1.0)));
+  }
+  EXPECT_NEAR(volume, acd::signedVolume(pre.freeSpace), 1e-6 * volume);
+  EXPECT_NEAR(acd::signedVolume(pre.freeSpace), 16 - 0.8 - 0.2 * 0.4 * 0.4, 1e-9);
+  EXPECT_EQ(problemErrorOf(floating), "");
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "collision_world.hpp"
 
+#include <acd/shapes.hpp>
+
 #include <fcl/fcl.h>
 
 namespace planner {
@@ -31,14 +33,27 @@ CollisionWorld::CollisionWorld(const acd::TriMesh& freeSpace, const Robot& robot
   // Shells with negative volume bound cavities of the free space: obstacles floating in it.
   for (const acd::TriMesh& shell : acd::splitEdgeConnected(freeSpace))
     if (acd::signedVolume(shell) < 0) islandProbes_.push_back(shell.vertices.front());
+  setUpFcl(freeSpace);
+}
+
+CollisionWorld::CollisionWorld(const acd::TriMesh& freeSpace, const acd::TriMesh& obstacles, const acd::Box3& workspace,
+                               const Robot& robot)
+    : robot_(robot), freeInside_(freeSpace), fcl_(std::make_unique<Fcl>()) {
+  islandProbes_ = pieceProbes(obstacles);
+  setUpFcl(acd::concatenate({obstacles, acd::shapes::box(workspace.lo, workspace.hi)}));
+}
+
+void CollisionWorld::setUpFcl(const acd::TriMesh& environment) {
+  const Robot& robot = robot_;
+  reach_ = robot.boundingRadius();
   if (robot.kind == RobotKind::Point) return;
-  fcl_->environment = bvhOf(freeSpace);
+  fcl_->environment = bvhOf(environment);
   switch (robot.kind) {
     case RobotKind::Sphere: fcl_->robot = std::make_shared<fcl::Sphered>(robot.radius); break;
     case RobotKind::Box: fcl_->robot = std::make_shared<fcl::Boxd>(robot.size); break;
     default: fcl_->robot = bvhOf(robot.mesh); break;
   }
-  if (robot.kind == RobotKind::Mesh) robotInside_ = std::make_unique<acd::InsideTest>(robot.mesh);
+  if (robot.kind == RobotKind::Mesh) robotInside_ = std::make_unique<acd::InsideTest>(robot.closedMesh());
   fcl_->envObject = std::make_unique<fcl::CollisionObjectd>(fcl_->environment, fcl::Transform3d::Identity());
   fcl_->robotObject = std::make_unique<fcl::CollisionObjectd>(fcl_->robot, fcl::Transform3d::Identity());
   fcl_->envObject->computeAABB();
@@ -54,6 +69,7 @@ bool CollisionWorld::valid(const acd::Vec3& position, const Eigen::Quaterniond& 
   if (robot_.kind == RobotKind::Point) return true;
   // An island wholly inside the robot touches no surface: test one of its vertices.
   for (const acd::Vec3& q : islandProbes_) {
+    if ((q - position).squaredNorm() > reach_ * reach_) continue;  // out of the robot's reach
     const acd::Vec3 local = orientation.conjugate() * (q - position);
     switch (robot_.kind) {
       case RobotKind::Sphere:

@@ -21,32 +21,54 @@ Preprocessing preprocess(const Scenario& scenario) {
     pre.freeSpace = scenario.freeSpace;
     pre.freeSpaceMethod = "given";
   } else {
-    FreeSpace fs = buildFreeSpace(scenario.workspace, scenario.obstacles, scenario.obstacleNames);
+    pre.wrap = resolvedWrap(scenario);
+    pre.robotThickness = scenario.robot.thickness();
+    std::vector<acd::TriMesh> solids;
+    std::vector<std::string> names;
+    for (const Obstacle& o : scenario.obstacles) {
+      if (o.box) {
+        solids.push_back(o.triangles);
+        names.push_back(o.name);
+        continue;
+      }
+      const SolidObstacle solid = solidify(o.triangles, pre.wrap);
+      if (!solid.ok) throw ScenarioError(scenario.path + ": " + o.name + ": " + solid.error);
+      pre.obstacleSolids.push_back(o.name + ": " + solid.summary());
+      pre.wrapped = pre.wrapped || solid.wrappedPieces > 0;
+      for (std::size_t i = 0; i < solid.pieces.size(); ++i) {
+        solids.push_back(solid.pieces[i]);
+        names.push_back(o.name + " piece " + std::to_string(i));
+      }
+    }
+    pre.solidSeconds = secondsSince(t0);
+    t0 = std::chrono::steady_clock::now();
+    FreeSpace fs = buildFreeSpace(scenario.workspace, solids, names);
     if (!fs.ok) throw ScenarioError(scenario.path + ": cannot build the free space: " + fs.error);
     pre.freeSpace = std::move(fs.mesh);
     pre.freeSpaceMethod = fs.method;
   }
+  for (const acd::TriMesh& shell : acd::splitEdgeConnected(pre.freeSpace)) pre.cavities += acd::signedVolume(shell) < 0;
   pre.freeSpaceSeconds = secondsSince(t0);
   const bool acdWanted =
       std::find(scenario.samplers.begin(), scenario.samplers.end(), "acd") != scenario.samplers.end();
   if (!acdWanted) return pre;
-  // libacd decomposes every closed shell as a solid of its own; the shell around an obstacle
-  // floating in the workspace would become that obstacle, not a hole in the free space.
-  int cavities = 0;
-  for (const acd::TriMesh& shell : acd::splitEdgeConnected(pre.freeSpace)) cavities += acd::signedVolume(shell) < 0;
-  if (cavities > 0)
-    throw ScenarioError(scenario.path + ": " + std::to_string(cavities) +
-                        " obstacle(s) float inside the workspace (the free space has a cavity), which the solid ACD "
-                        "cannot decompose as one free space; let every obstacle touch the workspace boundary or an "
-                        "obstacle that does, or drop the acd sampler");
 
   t0 = std::chrono::steady_clock::now();
+  // libacd decomposes every closed shell as a solid of its own: a cavity's shell would become
+  // the obstacle, not a hole. Pieces cut through the cavities have none (free_space.hpp).
+  std::string error;
+  const std::vector<acd::TriMesh> pieces =
+      pre.cavities > 0 ? cavityFreePieces(pre.freeSpace, error) : std::vector<acd::TriMesh>{pre.freeSpace};
+  if (pieces.empty()) throw ScenarioError(scenario.path + ": " + error);
+  pre.freeSpacePieces = static_cast<int>(pieces.size());
   acd::DecomposeOptions options;
   options.tau = scenario.acd.tau;
   options.threads = 1;  // the trials are timed; keep the preprocessing single-threaded too
-  const acd::Decomposition d = acd::decompose(pre.freeSpace, options);
-  if (!d.status.ok()) throw ScenarioError(scenario.path + ": the free space cannot be decomposed: " + d.status.message);
-  for (const acd::Component& c : d.components) pre.components.push_back(c.mesh);
+  for (const acd::TriMesh& piece : pieces) {
+    const acd::Decomposition d = acd::decompose(piece, options);
+    if (!d.status.ok()) throw ScenarioError(scenario.path + ": the free space cannot be decomposed: " + d.status.message);
+    for (const acd::Component& c : d.components) pre.components.push_back(c.mesh);
+  }
   pre.decomposeSeconds = secondsSince(t0);
 
   t0 = std::chrono::steady_clock::now();

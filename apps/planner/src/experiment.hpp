@@ -18,17 +18,23 @@ namespace planner {
 
 /// Free space, its ACD and the openings: the preprocessing of the ACD sampler.
 struct Preprocessing {
+  std::vector<std::string> obstacleSolids;   // per obstacle: "name: how it was made a solid" (SolidObstacle::summary)
+  WrapSettings wrap;                         // as resolved for the obstacles
+  double robotThickness = 0.0;               // Robot::thickness(), for the report
+  bool wrapped = false;                      // some obstacle piece was wrapped
   acd::TriMesh freeSpace;
   std::string freeSpaceMethod;        // "given", "corefinement" or "nef"
+  int cavities = 0;                   // obstacles floating in the free space
+  int freeSpacePieces = 1;            // pieces decomposed apart (cut through the cavities)
   std::vector<acd::TriMesh> components;
   std::vector<Opening> openings;
-  double freeSpaceSeconds = 0.0, decomposeSeconds = 0.0, openingsSeconds = 0.0;
-  double totalSeconds() const { return freeSpaceSeconds + decomposeSeconds + openingsSeconds; }
+  double solidSeconds = 0.0, freeSpaceSeconds = 0.0, decomposeSeconds = 0.0, openingsSeconds = 0.0;
+  double totalSeconds() const { return solidSeconds + freeSpaceSeconds + decomposeSeconds + openingsSeconds; }
 };
 
+/// The obstacles made solids (solid_obstacles.hpp), the free space, its ACD and the openings.
 /// The ACD part is skipped when the scenario does not compare the acd sampler.
-/// \throw ScenarioError when the free space cannot be built or decomposed (message says why),
-/// or when the acd sampler is wanted and an obstacle floats in the workspace (a cavity).
+/// \throw ScenarioError when the free space cannot be built or decomposed (message says why).
 Preprocessing preprocess(const Scenario& scenario);
 
 struct Trial {

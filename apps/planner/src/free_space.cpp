@@ -94,7 +94,63 @@ FreeSpace viaNef(const Mesh& box, const std::vector<Mesh>& obstacles) {
   return out;
 }
 
+/// Shells of negative volume: the boundaries of cavities.
+std::vector<acd::TriMesh> cavitiesOf(const acd::TriMesh& m) {
+  std::vector<acd::TriMesh> out;
+  for (acd::TriMesh& shell : acd::splitEdgeConnected(m))
+    if (acd::signedVolume(shell) < 0) out.push_back(std::move(shell));
+  return out;
+}
+
+/// The part of `piece` on one side of the plane x[axis] = at, as a closed mesh.
+bool clipped(const acd::TriMesh& piece, int axis, double at, bool below, acd::TriMesh& out) {
+  acd::Box3 half = acd::boundingBox(piece);
+  const acd::Vec3 margin = acd::Vec3::Constant(0.1 * half.size().norm() + 1.0);
+  half.lo -= margin, half.hi += margin;
+  (below ? half.hi : half.lo)[axis] = at;
+  Mesh a = toCgal(piece), b = toCgal(acd::shapes::box(half.lo, half.hi)), result;
+  if (!PMP::corefine_and_compute_intersection(a, b, result)) return false;
+  out = fromCgal(std::move(result));
+  return out.empty() || acd::isClosedOriented(out);
+}
+
 }  // namespace
+
+std::vector<acd::TriMesh> cavityFreePieces(const acd::TriMesh& freeSpace, std::string& error) {
+  std::vector<acd::TriMesh> done, pending{freeSpace};
+  while (!pending.empty()) {
+    acd::TriMesh piece = std::move(pending.back());
+    pending.pop_back();
+    const std::vector<acd::TriMesh> cavities = cavitiesOf(piece);
+    if (cavities.empty()) {
+      done.push_back(std::move(piece));
+      continue;
+    }
+    // A plane across the first cavity's box, along its longest side, splits the cavity's
+    // boundary and joins each half to the cut face. Off-centre by an odd fraction so that it
+    // does not run along the faces of the grid-aligned models people make.
+    const acd::Box3 box = acd::boundingBox(cavities.front());
+    int axis = 0;
+    box.size().maxCoeff(&axis);
+    bool cut = false;
+    for (int attempt = 0; attempt < 3 && !cut; ++attempt) {
+      const int a = (axis + attempt) % 3;
+      const double at = box.lo[a] + (0.5 + 0.0173 * (attempt + 1)) * box.size()[a];
+      acd::TriMesh below, above;
+      if (!clipped(piece, a, at, true, below) || !clipped(piece, a, at, false, above)) continue;
+      if (cavitiesOf(below).size() + cavitiesOf(above).size() >= cavities.size()) continue;  // no progress
+      for (acd::TriMesh* half : {&below, &above})
+        if (!half->empty()) pending.push_back(std::move(*half));
+      cut = true;
+    }
+    if (!cut) {
+      error = "cannot cut the free space through the cavity around " + std::to_string(box.center().x()) + ", " +
+              std::to_string(box.center().y()) + ", " + std::to_string(box.center().z());
+      return {};
+    }
+  }
+  return done;
+}
 
 FreeSpace buildFreeSpace(const acd::Box3& workspace, const std::vector<acd::TriMesh>& obstacles,
                          const std::vector<std::string>& names) {

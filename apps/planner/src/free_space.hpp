@@ -22,4 +22,11 @@ struct FreeSpace {
 FreeSpace buildFreeSpace(const acd::Box3& workspace, const std::vector<acd::TriMesh>& obstacles,
                          const std::vector<std::string>& names);
 
+/// libacd decomposes every closed shell as a solid of its own, so an obstacle floating in the
+/// free space (a cavity: a shell of negative volume) would not be seen as a hole. This cuts the
+/// free space, by planes through its cavities, into pieces without any; each piece can then be
+/// decomposed, and the cuts become openings like any other. A free space without cavities
+/// comes back as one piece. On failure (never expected) returns no pieces and sets `error`.
+std::vector<acd::TriMesh> cavityFreePieces(const acd::TriMesh& freeSpace, std::string& error);
+
 }  // namespace planner

@@ -34,8 +34,16 @@ class WorldValidityChecker : public ob::StateValidityChecker {
 
 PlanningProblem::PlanningProblem(const Scenario& scenario, const acd::TriMesh& freeSpace, std::vector<Opening> openings)
     : scenario_(scenario), openings_(std::move(openings)), seeds_(std::make_shared<SeedSource>()) {
-  world_ = std::make_unique<CollisionWorld>(freeSpace, scenario.robot);
-  const acd::Box3& ws = scenario.workspace;
+  if (scenario.freeSpaceGiven || scenario.obstacles.empty()) {
+    world_ = std::make_unique<CollisionWorld>(freeSpace, scenario.robot);
+  } else {
+    std::vector<acd::TriMesh> triangles;
+    for (const Obstacle& o : scenario.obstacles) triangles.push_back(o.triangles);
+    world_ = std::make_unique<CollisionWorld>(freeSpace, acd::concatenate(triangles), scenario.workspace, scenario.robot);
+  }
+  // The reference point's bounds (OMPL.app's volume); the workspace when none are given.
+  const bool hasBounds = ((scenario.bounds.hi - scenario.bounds.lo).array() > 0).all();
+  const acd::Box3& ws = hasBounds ? scenario.bounds : scenario.workspace;
   const Robot& robot = scenario.robot;
   if (robot.planar) {
     auto se2 = std::make_shared<ob::SE2StateSpace>();
@@ -67,7 +75,7 @@ PlanningProblem::PlanningProblem(const Scenario& scenario, const acd::TriMesh& f
   double reach = robot.boundingRadius();
   if (reach <= 0)
     for (const Opening& o : openings_) reach = std::max(reach, o.radius);
-  spread_ = scenario.acd.spread > 0 ? scenario.acd.spread : std::max(0.5 * reach, 1e-6 * ws.size().norm());
+  spread_ = scenario.acd.spread > 0 ? scenario.acd.spread : std::max(0.5 * reach, 1e-6 * scenario.workspace.size().norm());
 
   start_ = si_->allocState();
   goal_ = si_->allocState();

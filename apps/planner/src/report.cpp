@@ -34,8 +34,15 @@ void printTable(std::ostream& out, const std::vector<SamplerRuns>& runs) {
 }
 
 void printPreprocessing(std::ostream& out, const Preprocessing& pre, double spread) {
+  for (const std::string& line : pre.obstacleSolids) out << "obstacle " << line << "\n";
+  if (pre.wrapped)
+    out << "wrap: alpha " << pre.wrap.alpha << ", offset " << pre.wrap.offset << " (robot thickness "
+        << pre.robotThickness << "; the wrap narrows passages by twice the offset)\n";
+  if (pre.cavities > 0)
+    out << "free space: " << pre.cavities << " floating obstacle(s) (cavities); decomposed as " << pre.freeSpacePieces
+        << " pieces cut through them\n";
   out << "free space: " << pre.freeSpace.faces.size() << " triangles (" << pre.freeSpaceMethod << ", "
-      << std::fixed << std::setprecision(3) << pre.freeSpaceSeconds << " s); ACD: " << pre.components.size()
+      << std::fixed << std::setprecision(3) << pre.solidSeconds + pre.freeSpaceSeconds << " s); ACD: " << pre.components.size()
       << " components (" << pre.decomposeSeconds << " s); openings: " << pre.openings.size() << " ("
       << pre.openingsSeconds << " s); ACD preprocessing total " << pre.totalSeconds() << " s; spread " << spread << "\n";
   for (const Opening& o : pre.openings)
@@ -71,11 +78,18 @@ std::string resultsJson(const Scenario& scenario, const Preprocessing& pre, doub
                         {"normal", {o.normal.x(), o.normal.y(), o.normal.z()}},
                         {"area", o.area},
                         {"radius", o.radius}});
-  j["preprocessing"] = {{"free_space_triangles", pre.freeSpace.faces.size()},
+  j["preprocessing"] = {{"obstacle_solids", pre.obstacleSolids},
+                        {"wrap", pre.wrapped ? nlohmann::json{{"alpha", pre.wrap.alpha}, {"offset", pre.wrap.offset},
+                                                              {"robot_thickness", pre.robotThickness}}
+                                             : nlohmann::json()},
+                        {"free_space_triangles", pre.freeSpace.faces.size()},
                         {"free_space_method", pre.freeSpaceMethod},
+                        {"cavities", pre.cavities},
+                        {"free_space_pieces", pre.freeSpacePieces},
                         {"components", pre.components.size()},
                         {"openings", openings},
-                        {"seconds", {{"free_space", pre.freeSpaceSeconds}, {"decompose", pre.decomposeSeconds},
+                        {"seconds", {{"solids", pre.solidSeconds}, {"free_space", pre.freeSpaceSeconds},
+                                     {"decompose", pre.decomposeSeconds},
                                      {"openings", pre.openingsSeconds}, {"total", pre.totalSeconds()}}}};
   j["samplers"] = nlohmann::json::array();
   for (const SamplerRuns& r : runs) j["samplers"].push_back(summaryJson(r.summary));

@@ -1,9 +1,8 @@
 #include "scenario.hpp"
 
-#include "mesh_loader.hpp"
-
 #include <acd/diagnosis.hpp>
 #include <acd/inside.hpp>
+#include <acd/io.hpp>
 #include <acd/shapes.hpp>
 
 #include <yaml-cpp/yaml.h>
@@ -34,6 +33,25 @@ double Robot::boundingRadius() const {
     }
   }
   return 0.0;
+}
+
+double Robot::thickness() const {
+  switch (kind) {
+    case RobotKind::Point: return 0.0;
+    case RobotKind::Sphere: return 2 * radius;
+    case RobotKind::Box:
+    case RobotKind::Mesh: return acd::boundingBox(closedMesh()).size().minCoeff();
+  }
+  return 0.0;
+}
+
+WrapSettings resolvedWrap(const Scenario& scenario) {
+  double t = scenario.robot.thickness();
+  if (t <= 0) t = 0.02 * scenario.workspace.size().norm();
+  WrapSettings w;
+  w.alpha = scenario.wrap.alpha > 0 ? scenario.wrap.alpha : t / 2;
+  w.offset = scenario.wrap.offset > 0 ? scenario.wrap.offset : t / 40;
+  return w;
 }
 
 namespace {
@@ -104,20 +122,21 @@ class Parser {
     return p.lexically_normal().string();
   }
 
-  /// A closed solid from a mesh file, repaired by libacd's safe repairs or refused.
-  acd::TriMesh solidFile(const YAML::Node& node, const std::string& where) const {
+  /// The triangles of a mesh file (OFF/OBJ/PLY/STL, or a scene through assimp), as they are.
+  acd::TriMesh meshFile(const YAML::Node& node, const std::string& where) const {
     const std::string file = resolve(scalar<std::string>(node, where));
-    const LoadedMesh loaded = loadMeshFile(file);
-    if (!loaded.ok) fail("'" + where + "': " + loaded.error);
-    const acd::PreparedSolid solid = acd::prepareSolid(loaded.mesh);
+    if (!std::filesystem::exists(file)) fail("'" + where + "': " + file + ": file not found");
+    acd::ReadResult read = acd::readMesh(file);
+    if (!read.status.ok()) fail("'" + where + "': " + read.status.message);
+    return std::move(read.mesh);
+  }
+
+  /// A free space given as a file: it must be closed (it is decomposed and located in as it is).
+  acd::TriMesh closedFile(const YAML::Node& node, const std::string& where) const {
+    const std::string file = resolve(scalar<std::string>(node, where));
+    const acd::PreparedSolid solid = acd::prepareSolid(meshFile(node, where));
     if (!solid.status.ok()) fail("'" + where + "': " + file + " is not a closed solid: " + solid.status.message);
-    acd::TriMesh all;
-    for (const acd::TriMesh& c : solid.components) {
-      const int base = static_cast<int>(all.vertices.size());
-      all.vertices.insert(all.vertices.end(), c.vertices.begin(), c.vertices.end());
-      for (const acd::Face& f : c.faces) all.faces.push_back({f[0] + base, f[1] + base, f[2] + base});
-    }
-    return all;
+    return acd::concatenate(solid.components);
   }
 
   acd::TriMesh transformed(acd::TriMesh m, const YAML::Node& node, const std::string& where) const {
@@ -130,11 +149,18 @@ class Parser {
   }
 
   Pose pose(const YAML::Node& node, const std::string& where) const {
-    checkKeys(node, where, {"position", "orientation", "yaw_deg"});
+    checkKeys(node, where, {"position", "orientation", "yaw_deg", "axis", "theta"});
     if (!node["position"]) fail("'" + where + "' needs 'position'");
     Pose p;
     p.position = vec3(node["position"], where + ".position");
-    if (node["orientation"] && node["yaw_deg"]) fail("'" + where + "': give 'orientation' or 'yaw_deg', not both");
+    if ((node["orientation"] ? 1 : 0) + (node["yaw_deg"] ? 1 : 0) + (node["axis"] || node["theta"] ? 1 : 0) > 1)
+      fail("'" + where + "': give one of 'orientation', 'yaw_deg' or 'axis' with 'theta'");
+    if (node["axis"] || node["theta"]) {  // OMPL.app: a rotation of theta radians about axis
+      if (!node["axis"] || !node["theta"]) fail("'" + where + "': 'axis' and 'theta' go together");
+      const acd::Vec3 axis = vec3(node["axis"], where + ".axis");
+      if (axis.norm() < 1e-12) fail("'" + where + ".axis' must not be zero");
+      p.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(finite(node["theta"], where + ".theta"), axis.normalized()));
+    }
     if (node["orientation"]) {
       const YAML::Node& q = node["orientation"];
       if (!q.IsSequence() || q.size() != 4) fail("'" + where + ".orientation' must be a quaternion [w, x, y, z]");
@@ -150,8 +176,16 @@ class Parser {
     return p;
   }
 
-  Robot robot(const YAML::Node& node) const {
-    checkKeys(node, "robot", {"type", "radius", "size", "mesh", "scale", "translate", "planar"});
+  Robot robot(const YAML::Node& given) const {
+    // OMPL.app's `robot=FILE`: a mesh robot whose reference point is the mean of its vertices.
+    YAML::Node shorthand(YAML::NodeType::Map);
+    if (given.IsScalar()) {
+      shorthand["type"] = "mesh";
+      shorthand["mesh"] = given.as<std::string>();
+      shorthand["center"] = true;
+    }
+    const YAML::Node& node = given.IsScalar() ? shorthand : given;
+    checkKeys(node, "robot", {"type", "radius", "size", "mesh", "scale", "translate", "center", "planar"});
     if (!node["type"]) fail("'robot' needs 'type' (point, sphere, box or mesh)");
     const std::string type = scalar<std::string>(node["type"], "robot.type");
     Robot r;
@@ -178,15 +212,29 @@ class Parser {
       forbid("radius"), forbid("size");
       if (!node["mesh"]) fail("'robot' of type mesh needs 'mesh' (a file)");
       r.meshPath = resolve(scalar<std::string>(node["mesh"], "robot.mesh"));
-      r.mesh = transformed(solidFile(node["mesh"], "robot.mesh"), node, "robot");
+      acd::TriMesh triangles = meshFile(node["mesh"], "robot.mesh");
+      if (node["center"] && scalar<bool>(node["center"], "robot.center")) {
+        if (node["translate"]) fail("'robot.center' and 'robot.translate' exclude each other");
+        acd::Vec3 mean = acd::Vec3::Zero();
+        for (const acd::Vec3& v : triangles.vertices) mean += v;
+        mean /= static_cast<double>(triangles.vertices.size());
+        for (acd::Vec3& v : triangles.vertices) v -= mean;
+      }
+      r.mesh = transformed(std::move(triangles), node, "robot");
+      // Point location needs a closed robot; a soup is closed by repair or a thin wrap.
+      const double size = acd::boundingBox(r.mesh).size().minCoeff();
+      const SolidObstacle solid = solidify(r.mesh, {size / 4, size / 100});
+      if (!solid.ok || solid.pieces.empty()) fail("'robot.mesh': " + r.meshPath + ": cannot be made a closed solid: " + solid.error);
+      r.solid = concatenatedPieces(solid);
+      r.solidSummary = solid.summary();
       // The validity test relies on the reference point lying inside the robot (docs/PLANNER.md).
-      if (!acd::InsideTest(r.mesh).inside(acd::Vec3::Zero()))
+      if (!acd::InsideTest(r.solid).inside(acd::Vec3::Zero()))
         fail("'robot.mesh': the reference point (the origin of the mesh's frame, after 'translate') is not inside the robot");
     } else {
       fail("'robot.type' must be point, sphere, box or mesh, not '" + type + "'");
     }
-    if (r.kind != RobotKind::Mesh && (node["scale"] || node["translate"]))
-      fail("'robot.scale' and 'robot.translate' apply to mesh robots only");
+    if (r.kind != RobotKind::Mesh && (node["scale"] || node["translate"] || node["center"]))
+      fail("'robot.scale', 'robot.translate' and 'robot.center' apply to mesh robots only");
     if (node["planar"]) r.planar = scalar<bool>(node["planar"], "robot.planar");
     if (r.planar && (r.kind == RobotKind::Point || r.kind == RobotKind::Sphere))
       fail("'robot.planar' needs an oriented robot (box or mesh)");
@@ -195,21 +243,17 @@ class Parser {
 
   Scenario scenario(const YAML::Node& root) {
     if (!root || root.IsNull()) fail("empty scenario");
-    checkKeys(root, "", {"name", "description", "expected", "workspace", "obstacles", "free_space", "robot", "start",
-                         "goal", "samplers", "samples", "trials", "sweep", "sweep_trials", "prm", "acd", "seed", "output"});
+    checkKeys(root, "", {"name", "description", "expected", "workspace", "volume", "world", "obstacles", "free_space",
+                         "wrap", "robot", "start", "goal", "samplers", "samples", "trials", "sweep", "sweep_trials",
+                         "prm", "acd", "seed", "output"});
     Scenario s;
     if (root["name"]) s.name = scalar<std::string>(root["name"], "name");
     if (root["description"]) s.description = scalar<std::string>(root["description"], "description");
     if (root["expected"]) s.expected = scalar<std::string>(root["expected"], "expected");
-    if (root["free_space"] && root["obstacles"]) fail("give either 'obstacles' or 'free_space', not both");
-    if (root["free_space"]) {
-      s.freeSpace = solidFile(root["free_space"], "free_space");
-      s.freeSpaceGiven = true;
-      s.workspace = acd::boundingBox(s.freeSpace);
-      if (root["workspace"]) fail("'workspace' is taken from 'free_space'; remove one of them");
-    } else {
-      if (!root["workspace"]) fail("missing key 'workspace' (or 'free_space')");
-      s.workspace = box(root["workspace"], "workspace");
+    if (root["free_space"] && (root["obstacles"] || root["world"])) fail("give either 'obstacles' (or 'world') or 'free_space', not both");
+    if (root["world"]) {  // OMPL.app's environment: one mesh, closed or not
+      const std::string file = scalar<std::string>(root["world"], "world");
+      s.obstacles.push_back({"world (" + file + ")", meshFile(root["world"], "world"), false});
     }
     if (root["obstacles"]) {
       const YAML::Node& list = root["obstacles"];
@@ -222,11 +266,10 @@ class Parser {
         if (o["box"]) {
           if (o["scale"] || o["translate"]) fail("'" + where + "': 'scale' and 'translate' apply to meshes only");
           const acd::Box3 b = box(o["box"], where + ".box");
-          s.obstacles.push_back(acd::shapes::box(b.lo, b.hi));
-          s.obstacleNames.push_back(where + " (box)");
+          s.obstacles.push_back({where + " (box)", acd::shapes::box(b.lo, b.hi), true});
         } else if (o["mesh"]) {
-          s.obstacles.push_back(transformed(solidFile(o["mesh"], where + ".mesh"), o, where));
-          s.obstacleNames.push_back(where + " (" + o["mesh"].as<std::string>() + ")");
+          s.obstacles.push_back({where + " (" + o["mesh"].as<std::string>() + ")",
+                                 transformed(meshFile(o["mesh"], where + ".mesh"), o, where), false});
         } else {
           fail("'" + where + "' needs 'box' or 'mesh'");
         }
@@ -234,6 +277,41 @@ class Parser {
     }
     if (!root["robot"]) fail("missing key 'robot'");
     s.robot = robot(root["robot"]);
+    if (root["free_space"]) {
+      s.freeSpace = closedFile(root["free_space"], "free_space");
+      s.freeSpaceGiven = true;
+      s.workspace = acd::boundingBox(s.freeSpace);
+      if (root["workspace"] || root["volume"]) fail("'workspace' is taken from 'free_space'; remove one of them");
+      s.bounds = s.workspace;
+    } else if (root["workspace"]) {
+      s.workspace = box(root["workspace"], "workspace");
+      s.bounds = root["volume"] ? box(root["volume"], "volume") : s.workspace;
+    } else {
+      // OMPL.app: the reference point stays in `volume` (default: the environment's bounding
+      // box) while the robot may reach out of it; the workspace is grown by the robot's reach.
+      if (root["volume"]) {
+        s.bounds = box(root["volume"], "volume");
+      } else {
+        if (s.obstacles.empty()) fail("missing key 'workspace' (or 'volume', 'world' or 'free_space')");
+        acd::Box3 b = acd::boundingBox(s.obstacles.front().triangles);
+        for (const Obstacle& o : s.obstacles) {
+          const acd::Box3 ob = acd::boundingBox(o.triangles);
+          b.lo = b.lo.cwiseMin(ob.lo), b.hi = b.hi.cwiseMax(ob.hi);
+        }
+        if (!((b.hi - b.lo).array() > 0).all()) fail("the environment is flat; give 'volume' or 'workspace'");
+        s.bounds = b;
+      }
+      const double reach = s.robot.boundingRadius();
+      s.workspace = {s.bounds.lo - acd::Vec3::Constant(reach), s.bounds.hi + acd::Vec3::Constant(reach)};
+    }
+    if (((s.bounds.lo - s.workspace.lo).array() < 0).any() || ((s.bounds.hi - s.workspace.hi).array() > 0).any())
+      fail("'volume' must lie inside 'workspace'");
+    if (root["wrap"]) {
+      const YAML::Node& n = root["wrap"];
+      checkKeys(n, "wrap", {"alpha", "offset"});
+      if (n["alpha"]) s.wrap.alpha = positive(n["alpha"], "wrap.alpha");
+      if (n["offset"]) s.wrap.offset = positive(n["offset"], "wrap.offset");
+    }
     if (!root["start"]) fail("missing key 'start'");
     if (!root["goal"]) fail("missing key 'goal'");
     s.start = pose(root["start"], "start");
@@ -247,8 +325,8 @@ class Parser {
         fail("planar robot: 'start' and 'goal' must have the same z");
     }
     for (const auto& [p, name] : {std::pair<const Pose*, const char*>{&s.start, "start"}, {&s.goal, "goal"}})
-      if (((p->position - s.workspace.lo).array() < 0).any() || ((p->position - s.workspace.hi).array() > 0).any())
-        fail("'" + std::string(name) + "' position is outside the workspace");
+      if (((p->position - s.bounds.lo).array() < 0).any() || ((p->position - s.bounds.hi).array() > 0).any())
+        fail("'" + std::string(name) + "' position is outside the " + (root["volume"] ? "volume" : "workspace"));
     if (root["samplers"]) {
       const YAML::Node& list = root["samplers"];
       if (!list.IsSequence() || list.size() == 0) fail("'samplers' must be a non-empty list");

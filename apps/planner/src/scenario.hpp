@@ -1,6 +1,8 @@
 // Motion-planning scenarios: the YAML format documented in docs/PLANNER.md.
 #pragma once
 
+#include "solid_obstacles.hpp"
+
 #include <acd/mesh.hpp>
 
 #include <Eigen/Geometry>
@@ -28,11 +30,25 @@ struct Robot {
   RobotKind kind = RobotKind::Point;
   double radius = 0.0;                         // sphere
   acd::Vec3 size = acd::Vec3::Zero();          // box: full edge lengths, centred on the reference point
-  acd::TriMesh mesh;                           // box and mesh: closed, in the robot's frame
+  acd::TriMesh mesh;                           // box and mesh: the triangles (any soup), in the robot's frame
+  acd::TriMesh solid;                          // closed pieces covering `mesh` (point location); empty: `mesh` is closed
+  std::string solidSummary;                    // mesh: how the solid was made (solid_obstacles.hpp)
   std::string meshPath;                        // mesh
   bool planar = false;                         // SE(2): moves in the xy-plane at the start's z, turns about z
   /// Largest distance from the reference point to the robot's surface.
   double boundingRadius() const;
+  /// Smallest extent of the robot's bounding box (2 radius for a sphere, 0 for a point): no
+  /// passage narrower than this matters, so the obstacles' wrap may close it.
+  double thickness() const;
+  /// The closed robot for point location.
+  const acd::TriMesh& closedMesh() const { return solid.empty() ? mesh : solid; }
+};
+
+/// An obstacle as given: the triangles the robot must not touch (closed or not).
+struct Obstacle {
+  std::string name;             // "obstacles[0] (box)", "world (env.dae)"...
+  acd::TriMesh triangles;
+  bool box = false;             // an axis-aligned box: closed as it is
 };
 
 struct PrmSettings {
@@ -52,9 +68,10 @@ struct Scenario {
   std::string name;
   std::string description;
   std::string expected;           // the documented expected outcome
-  acd::Box3 workspace;
-  std::vector<acd::TriMesh> obstacles;
-  std::vector<std::string> obstacleNames;   // "box #1", file names...
+  acd::Box3 workspace;            // the robot stays inside this box (its walls are obstacles)
+  acd::Box3 bounds;               // where the reference point may go (OMPL.app's `volume`); default: the workspace
+  std::vector<Obstacle> obstacles;
+  WrapSettings wrap{-1.0, -1.0};  // < 0: from the robot's thickness (resolvedWrap)
   acd::TriMesh freeSpace;         // given directly (then `obstacles` is empty)
   bool freeSpaceGiven = false;
   Robot robot;
@@ -69,6 +86,10 @@ struct Scenario {
   unsigned seed = 1;
   std::string outputDir;          // relative paths resolve against the current directory
 };
+
+/// Wrap settings for the obstacles: as given, else alpha = thickness / 2 and offset =
+/// thickness / 40 of the robot (a point robot: 1 % and 0.05 % of the workspace diagonal).
+WrapSettings resolvedWrap(const Scenario& scenario);
 
 /// The known sampler names, in their canonical order.
 const std::vector<std::string>& knownSamplers();
