@@ -1,7 +1,10 @@
 // planner: PRM with a fixed number of samples per sampler (uniform, acd, OMPL's Gaussian,
 // obstacle-based and bridge-test) over seeded trials, on a scenario file (docs/PLANNER.md).
 #include "experiment.hpp"
+#include "n90_search.hpp"
+#include "ompl_planners.hpp"
 #include "report.hpp"
+#include "search_report.hpp"
 #include "scenario.hpp"
 
 #include <acd/io.hpp>
@@ -36,7 +39,9 @@ int run(int argc, char** argv) {
   std::string scenarioPath, samplerList, outputDir;
   int samples = 0, trials = 0, sweepTrials = 0;
   long long seed = 0;
-  bool sweep = false, quiet = false;
+  bool sweep = false, quiet = false, n90 = false, race = false, noFixed = false;
+  int n90Start = 50, n90Max = 8000, n90Trials = 20, raceRuns = 20;
+  double timeLimit = 30.0;
   app.add_option("scenario", scenarioPath, "Scenario file (YAML, see docs/PLANNER.md)")->required();
   app.add_option("-n,--samples", samples, "Sampled milestones per roadmap (overrides the scenario)");
   app.add_option("-t,--trials", trials, "Seeded trials per sampler (overrides the scenario)");
@@ -45,6 +50,14 @@ int run(int argc, char** argv) {
   app.add_option("-o,--output", outputDir, "Output folder (default: the scenario's 'output', else out/planner/<name>)");
   app.add_flag("--sweep", sweep, "Also run every sample count of the scenario's 'sweep' (success-rate plot data)");
   app.add_option("--sweep-trials", sweepTrials, "Trials per point of the sweep (overrides the scenario)");
+  app.add_flag("--n90", n90, "Also search, per sampler, the milestones needed for 90 % success (n90.csv)");
+  app.add_option("--n90-start", n90Start, "First N of the search (doubled from there; default 50)");
+  app.add_option("--n90-max", n90Max, "Largest N the search tries (default 8000)");
+  app.add_option("--n90-trials", n90Trials, "Trials per N of the search (default 20)");
+  app.add_flag("--race", race, "Also run OMPL's PRM, RRTConnect, KPIECE1 and PRM with the acd sampler against the clock (race.csv)");
+  app.add_option("--time-limit", timeLimit, "Seconds per run of --race (default 30)");
+  app.add_option("--runs", raceRuns, "Runs per planner of --race (default 20)");
+  app.add_flag("--no-fixed", noFixed, "Skip the fixed-N table (with --n90 or --race)");
   app.add_flag("-q,--quiet", quiet, "No progress and no preprocessing report");
   try {
     app.parse(argc, argv);
@@ -59,6 +72,10 @@ int run(int argc, char** argv) {
   try {
     scenario = planner::loadScenario(scenarioPath);
     if (samples < 0 || trials < 0 || sweepTrials < 0) throw planner::ScenarioError("--samples, --trials and --sweep-trials must be positive");
+    if (n90Start <= 0 || n90Max < n90Start || n90Trials <= 0)
+      throw planner::ScenarioError("--n90-start and --n90-trials must be positive, --n90-max at least --n90-start");
+    if (!(timeLimit > 0) || raceRuns <= 0) throw planner::ScenarioError("--time-limit and --runs must be positive");
+    if (noFixed && !n90 && !race) throw planner::ScenarioError("--no-fixed needs --n90 or --race");
     if (samples > 0) scenario.samples = samples;
     if (trials > 0) scenario.trials = trials;
     if (sweepTrials > 0) scenario.sweepTrials = sweepTrials;
@@ -105,8 +122,29 @@ int run(int argc, char** argv) {
     if (tty) std::cerr << "\r" << name << " " << done << "/" << total << "   " << (done == total ? "\n" : "") << std::flush;
   };
   const auto t0 = std::chrono::steady_clock::now();
-  const auto runs = planner::runExperiment(*problem, scenario.samplers, scenario.samples, scenario.trials, progress);
+  const auto runs = noFixed ? std::vector<planner::SamplerRuns>{}
+                            : planner::runExperiment(*problem, scenario.samplers, scenario.samples, scenario.trials, progress);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const std::filesystem::path dir(scenario.outputDir);
+
+  if (n90) {
+    std::vector<planner::N90Search> searches;
+    std::vector<planner::SamplerSummary> points;
+    for (const std::string& name : scenario.samplers) {
+      searches.push_back(planner::searchN90(*problem, name, n90Start, n90Max, n90Trials, pre.totalSeconds(),
+                                            [&](const std::string& what) { progress("n90 " + what, 0, n90Trials); }));
+      points.insert(points.end(), searches.back().points.begin(), searches.back().points.end());
+    }
+    planner::printN90Table(std::cout, searches, n90Max);
+    planner::writeN90Csv((dir / "n90.csv").string(), searches, n90Trials);
+    planner::writeSweepCsv((dir / "n90_points.csv").string(), points);
+  }
+  if (race) {
+    if (tty) std::cerr << "racing OMPL's planners (" << raceRuns << " runs of up to " << timeLimit << " s each)\n";
+    const auto times = planner::raceOmplPlanners(*problem, pre, timeLimit, raceRuns, (dir / "ompl_benchmark.log").string());
+    planner::printRaceTable(std::cout, times, timeLimit);
+    planner::writeRaceCsv((dir / "race.csv").string(), times);
+  }
 
   std::vector<planner::SamplerSummary> sweepResults;
   if (sweep) {
@@ -119,22 +157,25 @@ int run(int argc, char** argv) {
     }
   }
 
-  std::cout << "scenario " << scenario.name << ": " << scenario.samples << " samples, " << scenario.trials
-            << " trials per sampler, seed " << scenario.seed << "\n";
-  planner::printTable(std::cout, runs);
+  if (!noFixed) {
+    std::cout << "scenario " << scenario.name << ": " << scenario.samples << " samples, " << scenario.trials
+              << " trials per sampler, seed " << scenario.seed << "\n";
+    planner::printTable(std::cout, runs);
+  }
 
-  const std::filesystem::path dir(scenario.outputDir);
   std::ofstream(dir / "results.json") << planner::resultsJson(scenario, pre, problem->acdSpread(), runs, sweepResults) << "\n";
-  if (!planner::writeBenchmarkLog((dir / "benchmark.log").string(), *problem, runs, seconds))
+  if (!noFixed && !planner::writeBenchmarkLog((dir / "benchmark.log").string(), *problem, runs, seconds))
     std::cerr << "planner: cannot write " << (dir / "benchmark.log").string() << "\n";
   const std::string bestFrom = planner::writeBestPath((dir / "best_path.txt").string(), runs);
   std::vector<std::string> names;
   for (std::size_t i = 0; i < pre.components.size(); ++i) names.push_back("component_" + std::to_string(i));
   acd::writeObjObjects((dir / "free_space_acd.obj").string(), pre.components, names);
   if (!sweepResults.empty()) planner::writeSweepCsv((dir / "sweep.csv").string(), sweepResults);
-  std::cout << "wrote " << (dir / "results.json").string() << ", " << (dir / "benchmark.log").string()
+  std::cout << "wrote " << (dir / "results.json").string() << (noFixed ? "" : ", " + (dir / "benchmark.log").string())
             << (bestFrom.empty() ? "" : ", " + (dir / "best_path.txt").string() + " (from " + bestFrom + ")")
-            << (sweepResults.empty() ? "" : ", " + (dir / "sweep.csv").string()) << "\n";
+            << (sweepResults.empty() ? "" : ", " + (dir / "sweep.csv").string())
+            << (n90 ? ", " + (dir / "n90.csv").string() + ", " + (dir / "n90_points.csv").string() : "")
+            << (race ? ", " + (dir / "race.csv").string() + ", " + (dir / "ompl_benchmark.log").string() : "") << "\n";
   return 0;
 }
 

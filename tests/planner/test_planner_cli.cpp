@@ -66,6 +66,36 @@ TEST(PlannerCli, SmallRunWritesTableJsonLogAndPath) {
   EXPECT_NEAR(states.back()[0], 3.7, 1e-9);
 }
 
+TEST(PlannerCli, MilestonesTo90PercentAndOmplPlanners) {
+  acdtest::TempDir dir("planner_cli_search");
+  // The goal moved so that the straight line from the start no longer runs through the hole.
+  std::string text = kScenario;
+  text.replace(text.find("[3.7, 1.7, 1.7]"), 15, "[3.7, 0.3, 1.7]");
+  write(dir / "s.yaml", text);
+  const auto run = acdtest::runTool(PLANNER_BIN, acdtest::quote(dir / "s.yaml") +
+                                        " --no-fixed --n90 --n90-start 25 --n90-max 400 --n90-trials 3"
+                                        " --race --time-limit 0.5 --runs 2 -o " + acdtest::quote(dir / "out"), dir);
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_NE(run.out.find("milestones to 90 % success"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("RRTConnect"), std::string::npos) << run.out;
+  EXPECT_EQ(run.out.find("95% CI"), std::string::npos) << "no fixed-N table with --no-fixed";
+  // n90.csv: one row per sampler; the acd sampler gets through the pinhole within 400.
+  const std::string n90 = acdtest::slurp(dir / "out/n90.csv");
+  EXPECT_EQ(std::count(n90.begin(), n90.end(), '\n'), 3) << n90;
+  EXPECT_EQ(n90.find("acd,,"), std::string::npos) << n90;
+  const std::string points = acdtest::slurp(dir / "out/n90_points.csv");
+  EXPECT_NE(points.find("\nuniform,25,3,"), std::string::npos) << points;
+  EXPECT_NE(points.find("\nacd,25,3,"), std::string::npos) << points;
+  const std::string race = acdtest::slurp(dir / "out/race.csv");
+  for (const char* planner : {"PRM,2,", "RRTConnect,2,", "KPIECE1,2,", "PRM_acd,2,"})
+    EXPECT_NE(race.find(planner), std::string::npos) << race;
+  EXPECT_NE(acdtest::slurp(dir / "out/ompl_benchmark.log").find("geometric_RRTConnect"), std::string::npos);
+  EXPECT_FALSE(acdtest::slurp(dir / "out/free_space_acd.obj").empty());
+  const auto lonely = acdtest::runTool(PLANNER_BIN, acdtest::quote(dir / "s.yaml") + " --no-fixed", dir);
+  EXPECT_EQ(lonely.code, 2);
+  EXPECT_NE(lonely.err.find("--no-fixed needs"), std::string::npos) << lonely.err;
+}
+
 TEST(PlannerCli, BadScenariosExitTwoNamingTheProblem) {
   acdtest::TempDir dir("planner_cli_bad");
   struct Case {

@@ -123,4 +123,29 @@ TEST(SoupScenes, OmplAppStylePoses) {
   EXPECT_NEAR(s.workspace.hi.x() - 7, s.robot.boundingRadius(), 1e-9);
 }
 
+TEST(SoupScenes, AcdThroughTheTwistyPassageWhereUniformFails) {
+  // The generated puzzle as shipped (twisty.yaml), one seeded trial of 500 milestones each.
+  const planner::Scenario s = planner::loadScenario(std::string(PLANNER_SCENARIO_DIR) + "/twisty.yaml");
+  const planner::Preprocessing pre = planner::preprocess(s);
+  ASSERT_FALSE(pre.openings.empty());
+  planner::PlanningProblem problem(s, pre.freeSpace, pre.openings);
+  const planner::Trial acd = planner::runTrial(problem, "acd", 500, 1);
+  const planner::Trial uniform = planner::runTrial(problem, "uniform", 500, 1);
+  EXPECT_FALSE(uniform.outcome.connected);
+  ASSERT_TRUE(acd.outcome.connected);
+  ASSERT_TRUE(acd.outcome.path);
+  // The path crosses the wall's plane inside the slot, every state valid.
+  auto path = *acd.outcome.path;
+  path.interpolate();
+  bool crossed = false;
+  for (std::size_t i = 0; i < path.getStateCount(); ++i) {
+    EXPECT_TRUE(problem.si()->isValid(path.getState(i)));
+    if (i > 0) {
+      const Vec3 a = problem.position(path.getState(i - 1)), b = problem.position(path.getState(i));
+      crossed = crossed || ((a.x() - 3.5) * (b.x() - 3.5) <= 0 && a.x() != b.x());
+    }
+  }
+  EXPECT_TRUE(crossed);
+}
+
 }  // namespace
