@@ -2,14 +2,20 @@
 """Seed corpora for the fuzz harnesses: valid and slightly broken files of every format the
 readers take, and random byte strings for fuzz_decompose. Generated, never committed.
 
-    fuzz/make_seeds.py OUT_DIR      writes OUT_DIR/{off,obj,ply,stl,decompose}/
+    fuzz/make_seeds.py OUT_DIR      writes OUT_DIR/{off,obj,ply,stl,scene,decompose}/
+
+A scene seed starts with the byte that fuzz_read_scene turns into the format (SCENE_FORMATS).
 """
+import base64
+import io
+import json
 import math
 import os
 import random
 import shutil
 import struct
 import sys
+import zipfile
 
 
 # ------------------------------------------------------------------ shapes
@@ -207,6 +213,169 @@ def stl_files():
     return out
 
 
+# ------------------------------------------------------------------ scenes (through assimp)
+SCENE_FORMATS = ["dae", "gltf", "glb", "3mf", "fbx"]  # fuzz_read.cpp's kSceneNames, in order
+
+
+def collada(v, f, matrices=((1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1),), nested=False):
+    positions = " ".join(num(c) for p in v for c in p)
+    indices = " ".join(str(i) for t in f for i in t)
+    nodes = ""
+    for k, m in enumerate(matrices):
+        nodes += (f'<node id="n{k}" name="n{k}"><matrix>{" ".join(num(x) for x in m)}</matrix>'
+                  '<instance_geometry url="#g"/></node>')
+    if nested:  # a node placed twice through instance_node
+        nodes = f'<node id="twice" name="twice">{nodes}</node><node id="again"><instance_node url="#twice"/></node>'
+    return f"""<?xml version="1.0" encoding="utf-8"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+<asset><unit name="meter" meter="1"/><up_axis>Z_UP</up_axis></asset>
+<library_geometries><geometry id="g" name="g"><mesh>
+<source id="p"><float_array id="pa" count="{3 * len(v)}">{positions}</float_array>
+<technique_common><accessor source="#pa" count="{len(v)}" stride="3">
+<param name="X" type="float"/><param name="Y" type="float"/><param name="Z" type="float"/>
+</accessor></technique_common></source>
+<vertices id="v"><input semantic="POSITION" source="#p"/></vertices>
+<triangles count="{len(f)}"><input semantic="VERTEX" source="#v" offset="0"/><p>{indices}</p></triangles>
+</mesh></geometry></library_geometries>
+<library_visual_scenes><visual_scene id="s">{nodes}</visual_scene></library_visual_scenes>
+<scene><instance_visual_scene url="#s"/></scene>
+</COLLADA>
+"""
+
+
+def gltf_parts(v, f, node=None):
+    """The glTF JSON and its binary buffer (positions as float32, indices as uint16)."""
+    positions = b"".join(struct.pack("<3f", *p) for p in v)
+    indices = b"".join(struct.pack("<3H", *t) for t in f)
+    indices += b"\0" * (-len(indices) % 4)
+    binary = positions + indices
+    lo = [min(p[i] for p in v) for i in range(3)]
+    hi = [max(p[i] for p in v) for i in range(3)]
+    doc = {
+        "asset": {"version": "2.0"},
+        "scene": 0,
+        "scenes": [{"nodes": [0]}],
+        "nodes": [node or {"mesh": 0, "translation": [1, 2, 3]}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+        "buffers": [{"byteLength": len(binary)}],
+        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": len(positions)},
+                        {"buffer": 0, "byteOffset": len(positions), "byteLength": 6 * len(f)}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": len(v), "type": "VEC3", "min": lo, "max": hi},
+                      {"bufferView": 1, "componentType": 5123, "count": 3 * len(f), "type": "SCALAR"}],
+    }
+    return doc, binary
+
+
+def gltf(v, f, node=None):
+    doc, binary = gltf_parts(v, f, node)
+    doc["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64.b64encode(binary).decode()
+    return json.dumps(doc)
+
+
+def glb(v, f, node=None):
+    doc, binary = gltf_parts(v, f, node)
+    text = json.dumps(doc).encode()
+    text += b" " * (-len(text) % 4)
+    chunks = struct.pack("<I4s", len(text), b"JSON") + text + struct.pack("<I4s", len(binary), b"BIN\0") + binary
+    return struct.pack("<4sII", b"glTF", 2, 12 + len(chunks)) + chunks
+
+
+def three_mf(v, f, transform="1 0 0 0 1 0 0 0 1 0 0 0"):
+    vertices = "".join(f'<vertex x="{num(p[0])}" y="{num(p[1])}" z="{num(p[2])}"/>' for p in v)
+    tris = "".join(f'<triangle v1="{t[0]}" v2="{t[1]}" v3="{t[2]}"/>' for t in f)
+    model = ('<?xml version="1.0" encoding="UTF-8"?>\n'
+             '<model unit="millimeter" xmlns="http://schemas.microsoft.com/3dmanufacturing/core/2015/02">'
+             f'<resources><object id="1" type="model"><mesh><vertices>{vertices}</vertices>'
+             f'<triangles>{tris}</triangles></mesh></object></resources>'
+             f'<build><item objectid="1" transform="{transform}"/></build></model>')
+    types = ('<?xml version="1.0" encoding="UTF-8"?>'
+             '<Types xmlns="http://schemas.openxmlformats.org/package/2006/content-types">'
+             '<Default Extension="rels" ContentType="application/vnd.openxmlformats-package.relationships+xml"/>'
+             '<Default Extension="model" ContentType="application/vnd.ms-package.3dmanufacturing-3dmodel+xml"/>'
+             '</Types>')
+    rels = ('<?xml version="1.0" encoding="UTF-8"?>'
+            '<Relationships xmlns="http://schemas.openxmlformats.org/package/2006/relationships">'
+            '<Relationship Target="/3D/3dmodel.model" Id="rel0" '
+            'Type="http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel"/></Relationships>')
+    out = io.BytesIO()
+    with zipfile.ZipFile(out, "w", zipfile.ZIP_STORED) as z:  # stored: the fuzzer can reach the XML
+        for name, text in (("[Content_Types].xml", types), ("_rels/.rels", rels), ("3D/3dmodel.model", model)):
+            info = zipfile.ZipInfo(name, date_time=(2026, 1, 1, 0, 0, 0))  # fixed: reproducible seeds
+            z.writestr(info, text)
+    return out.getvalue()
+
+
+def fbx_ascii(v, f, translation=(0, 0, 0)):
+    positions = ",".join(num(c) for p in v for c in p)
+    # FBX marks the last corner of each polygon by storing -(index + 1).
+    indices = ",".join(f"{t[0]},{t[1]},{-t[2] - 1}" for t in f)
+    return f"""; FBX 7.4.0 project file
+FBXHeaderExtension:  {{
+\tFBXHeaderVersion: 1003
+\tFBXVersion: 7400
+}}
+GlobalSettings:  {{
+\tVersion: 1000
+\tProperties70:  {{
+\t\tP: "UpAxis", "int", "Integer", "",2
+\t\tP: "UnitScaleFactor", "double", "Number", "",1
+\t}}
+}}
+Objects:  {{
+\tGeometry: 100, "Geometry::seed", "Mesh" {{
+\t\tVertices: *{3 * len(v)} {{
+\t\t\ta: {positions}
+\t\t}}
+\t\tPolygonVertexIndex: *{3 * len(f)} {{
+\t\t\ta: {indices}
+\t\t}}
+\t\tGeometryVersion: 124
+\t}}
+\tModel: 200, "Model::seed", "Mesh" {{
+\t\tVersion: 232
+\t\tProperties70:  {{
+\t\t\tP: "Lcl Translation", "Lcl Translation", "", "A",{",".join(num(c) for c in translation)}
+\t\t}}
+\t}}
+}}
+Connections:  {{
+\tC: "OO",200,0
+\tC: "OO",100,200
+}}
+"""
+
+
+def scene_files():
+    v, f = SHAPES["cube"][0], triangles(SHAPES["cube"][1])
+    tv, tf = SHAPES["torus"]
+    mirror = (-1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1)
+    shifted = (1, 0, 0, 5, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1)
+    files = {
+        "dae": {"cube.dae": collada(v, f), "torus.dae": collada(tv, tf), "two.dae": collada(v, f, (shifted, mirror)),
+                "nested.dae": collada(v, f, (shifted,), nested=True),
+                "bad_index.dae": collada(v, [(0, 1, 99)] + f[1:]),
+                "bad_truncated.dae": collada(v, f)[:700]},
+        "gltf": {"cube.gltf": gltf(v, f), "torus.gltf": gltf(tv, tf),
+                 "matrix.gltf": gltf(v, f, {"mesh": 0, "matrix": list(mirror)}),
+                 "bad_index.gltf": gltf(v, [(0, 1, 99)] + f[1:]),
+                 "bad_json.gltf": gltf(v, f)[:-30]},
+        "glb": {"cube.glb": glb(v, f), "torus.glb": glb(tv, tf),
+                "rotated.glb": glb(v, f, {"mesh": 0, "rotation": [0, 0, 0.7071068, 0.7071068], "scale": [2, 2, 2]}),
+                "bad_length.glb": glb(v, f)[:40]},
+        "3mf": {"cube.3mf": three_mf(v, f), "torus.3mf": three_mf(tv, tf),
+                "moved.3mf": three_mf(v, f, "1 0 0 0 1 0 0 0 1 5 0 0"),
+                "bad_index.3mf": three_mf(v, [(0, 1, 99)] + f[1:])},
+        "fbx": {"cube.fbx": fbx_ascii(v, f), "torus.fbx": fbx_ascii(tv, tf, (1, 2, 3)),
+                "bad_count.fbx": fbx_ascii(v, f).replace(f"*{3 * len(f)}", "*7", 1)},
+    }
+    out = {}
+    for fmt, seeds in files.items():
+        selector = bytes([SCENE_FORMATS.index(fmt)])
+        for name, data in seeds.items():
+            out[name] = selector + (data if isinstance(data, bytes) else data.encode())
+    return out
+
+
 # ------------------------------------------------------------------ decompose
 def decompose_seeds():
     rng = random.Random(20070612)
@@ -223,7 +392,7 @@ def main():
         sys.exit(__doc__)
     root = sys.argv[1]
     for kind, files in (("off", off_files()), ("obj", obj_files()), ("ply", ply_files()), ("stl", stl_files()),
-                        ("decompose", decompose_seeds())):
+                        ("scene", scene_files()), ("decompose", decompose_seeds())):
         folder = os.path.join(root, kind)
         shutil.rmtree(folder, ignore_errors=True)
         os.makedirs(folder)

@@ -13,6 +13,7 @@ name="$(basename "$binary")"
 
 case "$name" in
     fuzz_read_obj_objects) kind=obj ;;
+    fuzz_read_scene) kind=scene ;;  # selector byte + a glTF, GLB, COLLADA, 3MF or FBX file
     fuzz_read_*) kind="${name#fuzz_read_}" ;;
     fuzz_decompose) kind=decompose ;;
     *) echo "run.sh: unknown harness $name" >&2; exit 2 ;;
@@ -21,6 +22,10 @@ if [[ "$kind" == decompose ]]; then
     # A few dozen faces, at most 24 components, the wrap only at tau >= 0.1: the slowest input seen took 0.8 s in the
     # Release build and about 30 s under the sanitizers on a loaded machine; 120 s means a hang.
     settings=(-timeout=120 -max_len=256)
+elif [[ "$kind" == scene ]]; then
+    # Read in a child with an 8 s cap, as the acd command reads scenes (assimp aborts on some
+    # inputs and allocates without bound on others): 30 s means a hang of the parent.
+    settings=(-timeout=30 -max_len=16384 "-dict=$here/dict/$kind.dict")
 else
     settings=(-timeout=10 -max_len=16384 "-dict=$here/dict/$kind.dict")
 fi

@@ -2,7 +2,7 @@
 # seeds for ACD_FUZZ_SMOKE_SECONDS. Included by fuzz/CMakeLists.txt (a build with the harnesses)
 # and by the top-level CMakeLists.txt otherwise, where the harnesses come from a clang
 # sanitizer build next to this one (build-asan/, scripts/build_sanitized.sh).
-set(ACD_FUZZ_HARNESSES fuzz_read_off fuzz_read_obj fuzz_read_obj_objects fuzz_read_ply fuzz_read_stl fuzz_decompose)
+set(ACD_FUZZ_HARNESSES fuzz_read_off fuzz_read_obj fuzz_read_obj_objects fuzz_read_ply fuzz_read_stl fuzz_read_scene fuzz_decompose)
 set(ACD_FUZZ_SMOKE_SECONDS 60 CACHE STRING "Length of each harness's smoke run in the test suite")
 
 # binary_dir: where the harness executables are; extra_fixture: a fixture that builds them (or "").

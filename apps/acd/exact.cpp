@@ -3,6 +3,7 @@
 //   --exact --surface  surface ECD (flood-and-retract convex patches): patches.obj, report.json
 #include "exit_codes.hpp"
 #include "exact.hpp"
+#include "scene_reader.hpp"
 
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
@@ -51,7 +52,7 @@ std::uintmax_t fileSize(const fs::path& p) {
 
 // ---------------------------------------------------------------- solid ECD
 int runSolid(const std::string& model, const std::string& out, bool quiet) {
-  acd::ReadResult r = acd::readMesh(model);
+  acd::ReadResult r = readModel(model);
   if (!r.status.ok()) return fail(model, r.status);
   acd::ExactOptions options;
   options.timeLimitSeconds = flags.timeLimit;
@@ -118,7 +119,7 @@ int runSolid(const std::string& model, const std::string& out, bool quiet) {
 
 // ---------------------------------------------------------------- surface ECD
 int runSurface(const std::string& model, const std::string& out, bool quiet) {
-  acd::ReadResult r = acd::readMesh(model);
+  acd::ReadResult r = readModel(model);
   if (!r.status.ok()) return fail(model, r.status);
   acd::SurfaceExactOptions options;
   options.tolerance = flags.tolerance;

@@ -22,6 +22,7 @@
 #include "exit_codes.hpp"
 #include "exact.hpp"
 #include "report.hpp"
+#include "scene_reader.hpp"
 #include "simulator.hpp"
 #include "surface.hpp"
 #include "table.hpp"
@@ -48,10 +49,7 @@ const char* exitCodes() {
          "7 batch: some meshes failed (see OUT/batch.jsonl).";
 }
 
-acd::ReadResult load(const std::string& path) {
-  acd::ReadResult r = acd::readMesh(path);
-  return r;
-}
+acd::ReadResult load(const std::string& path) { return readModel(path); }
 
 // ---------------------------------------------------------------- info
 int runInfo(const std::string& path) {
@@ -221,7 +219,7 @@ int runPerMesh(DecomposeArgs& a) {
   std::vector<acd::TriMesh> meshes;
   std::vector<std::string> names;
   if (acd::isSceneFormat(a.model)) {
-    acd::SceneMeshes scene = acd::readScene(a.model);
+    acd::SceneMeshes scene = readSceneIsolated(a.model);
     if (!scene.status.ok()) return fail(a.model, scene.status);
     meshes = std::move(scene.meshes);
     names = std::move(scene.names);

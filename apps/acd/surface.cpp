@@ -1,6 +1,7 @@
 // acd decompose --surface: the surface split along global cuts into patches whose concavity is
 // at most tau (Section 4.3). Writes patches.obj, hulls.obj and report.json.
 #include "exit_codes.hpp"
+#include "scene_reader.hpp"
 #include "surface.hpp"
 
 #include <acd/diagnosis.hpp>
@@ -60,7 +61,7 @@ void printSummary(const SurfaceArgs& a, const acd::SurfaceDecomposition& d, std:
 int runSurfaceDecompose(SurfaceArgs& a) {
   const acd::Status valid = acd::validate(a.options);
   if (!valid.ok()) return fail("invalid parameter", valid);
-  acd::ReadResult r = acd::readMesh(a.model);
+  acd::ReadResult r = readModel(a.model);
   if (!r.status.ok()) return fail(a.model, r.status);
   const bool showProgress = !a.quiet && isatty(fileno(stderr));
   if (showProgress)
