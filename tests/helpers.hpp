@@ -1,9 +1,17 @@
 // Helpers shared by the tests: an exact-enough point-in-solid test (signed crossings of a +z
 // ray, watertight over shared edges), point-to-surface distance through a small BVH, uniform
-// surface sampling, temporary folders and running the built commands.
+// surface sampling, temporary folders and running the built commands; the corpus, moved and
+// normalised copies of a mesh, its concavity and its decomposition as most tests want them.
 #pragma once
 
+#include <acd/algo/closest_point.hpp>
+#include <acd/concavity.hpp>
+#include <acd/decompose.hpp>
 #include <acd/mesh.hpp>
+#include <acd/normalize.hpp>
+#include <acd/surface_graph.hpp>
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
@@ -27,26 +35,40 @@ using acd::Face;
 using acd::TriMesh;
 using acd::Vec3;
 
-/// Closest point on triangle abc to p (Ericson, Real-Time Collision Detection 5.1.5).
-inline Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0) return a;
-  const Vec3 bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3) return b;
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + (d1 / (d1 - d3)) * ab;
-  const Vec3 cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6) return c;
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + (d2 / (d2 - d6)) * ac;
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
-  const double denom = 1.0 / (va + vb + vc);
-  return a + ab * (vb * denom) + ac * (vc * denom);
+#ifdef ACD_DATA_DIR
+/// A model of the corpus: data/meshes/NAME.off.
+inline std::string corpus(const std::string& name) { return std::string(ACD_DATA_DIR) + "/meshes/" + name + ".off"; }
+#endif
+
+/// The mesh rotated by r, then moved by t.
+inline TriMesh moved(const TriMesh& m, const Eigen::Matrix3d& r, const Vec3& t) {
+  TriMesh out = m;
+  for (Vec3& p : out.vertices) p = r * p + t;
+  return out;
 }
+
+/// The mesh in normalised units (minimum enclosing sphere of radius 1).
+inline TriMesh normalised(const TriMesh& m) { return acd::applyNormalization(m, acd::minimumSphereNormalization(m)); }
+
+/// The concavity measure of a mesh already in normalised units.
+inline acd::ConcavityMap measure(const TriMesh& mesh, double epsilon) {
+  acd::SurfaceGraph graph(mesh);
+  acd::ConcavityOptions o;
+  o.epsilon = epsilon;
+  return acd::measureConcavity(mesh, graph, o);
+}
+
+/// The solid decomposition at tau on two threads, expected to succeed.
+inline acd::Decomposition decomposed(const TriMesh& mesh, double tau) {
+  acd::DecomposeOptions o;
+  o.tau = tau;
+  o.threads = 2;
+  acd::Decomposition d = acd::decompose(mesh, o);
+  EXPECT_TRUE(d.status.ok()) << d.status.message;
+  return d;
+}
+
+using acd::closestPointOnTriangle;
 
 /// Bounding-volume hierarchy over the faces of one closed, oriented mesh.
 class MeshIndex {

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "helpers.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -15,6 +17,7 @@ namespace {
 
 using acd::TriMesh;
 using acd::Vec3;
+using acdtest::moved;
 
 /// Unit cells in an L with a tower and a stub: mirror symmetric about the plane x = z (so one of
 /// its third moments vanishes), no two equal principal moments.
@@ -32,12 +35,6 @@ Eigen::Matrix3d randomRotation(std::mt19937_64& rng) {
   std::normal_distribution<double> g;
   Eigen::Quaterniond q(g(rng), g(rng), g(rng), g(rng));
   return q.normalized().toRotationMatrix();
-}
-
-TriMesh moved(const TriMesh& m, const Eigen::Matrix3d& r, const Vec3& t) {
-  TriMesh out = m;
-  for (Vec3& p : out.vertices) p = r * p + t;
-  return out;
 }
 
 /// The same solid with vertices renumbered and faces shuffled (and each face's corners rotated).

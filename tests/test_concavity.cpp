@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "helpers.hpp"
+
 #include <cmath>
 #include <fstream>
 #include <random>
@@ -15,6 +17,9 @@
 #include <string>
 
 using namespace acd;
+using acdtest::corpus;
+using acdtest::normalised;
+using acdtest::measure;
 
 namespace {
 
@@ -48,17 +53,6 @@ void expectConvexHullOf(const ConvexHull& hull, const std::vector<Vec3>& points)
     EXPECT_LE(worst, 1e-9) << "facet " << f;
   }
 }
-
-TriMesh normalised(const TriMesh& m) { return applyNormalization(m, minimumSphereNormalization(m)); }
-
-ConcavityMap measure(const TriMesh& mesh, double epsilon) {
-  SurfaceGraph graph(mesh);
-  ConcavityOptions o;
-  o.epsilon = epsilon;
-  return measureConcavity(mesh, graph, o);
-}
-
-std::string corpus(const std::string& name) { return std::string(ACD_DATA_DIR) + "/meshes/" + name + ".off"; }
 
 }  // namespace
 

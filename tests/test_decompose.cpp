@@ -26,10 +26,9 @@
 
 using namespace acd;
 using acdtest::MeshIndex;
+using acdtest::corpus;
 
 namespace {
-
-std::string corpus(const std::string& name) { return std::string(ACD_DATA_DIR) + "/meshes/" + name + ".off"; }
 
 DecomposeOptions withTau(double tau, bool grouping = true) {
   DecomposeOptions o;

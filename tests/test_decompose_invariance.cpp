@@ -22,14 +22,8 @@ using acd::Decomposition;
 using acd::DecomposeOptions;
 using acd::TriMesh;
 using acd::Vec3;
-
-std::string corpus(const std::string& name) { return std::string(ACD_DATA_DIR) + "/meshes/" + name + ".off"; }
-
-TriMesh moved(const TriMesh& m, const Eigen::Matrix3d& r, const Vec3& t) {
-  TriMesh out = m;
-  for (Vec3& p : out.vertices) p = r * p + t;
-  return out;
-}
+using acdtest::corpus;
+using acdtest::moved;
 
 TriMesh withShuffledFaces(const TriMesh& m, std::uint64_t seed) {
   TriMesh out = m;

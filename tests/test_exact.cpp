@@ -14,6 +14,8 @@
 
 #include <gtest/gtest.h>
 
+#include "helpers.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -24,10 +26,9 @@
 #include <unordered_map>
 
 using namespace acd;
+using acdtest::corpus;
 
 namespace {
-
-std::string corpus(const std::string& name) { return std::string(ACD_DATA_DIR) + "/meshes/" + name + ".off"; }
 
 TriMesh joined(const std::vector<TriMesh>& parts) {
   TriMesh out;

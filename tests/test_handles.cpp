@@ -9,22 +9,17 @@
 
 #include <gtest/gtest.h>
 
+#include "helpers.hpp"
+
 #include <array>
 #include <string>
 #include <unordered_set>
 
 using namespace acd;
+using acdtest::normalised;
+using acdtest::measure;
 
 namespace {
-
-TriMesh normalised(const TriMesh& m) { return applyNormalization(m, minimumSphereNormalization(m)); }
-
-ConcavityMap measure(const TriMesh& mesh, double epsilon) {
-  SurfaceGraph graph(mesh);
-  ConcavityOptions o;
-  o.epsilon = epsilon;
-  return measureConcavity(mesh, graph, o);
-}
 
 /// A flat plate of voxels with `holes` square holes in a row: genus = holes.
 TriMesh holedPlate(int holes) {

@@ -6,21 +6,15 @@
 
 #include <gtest/gtest.h>
 
+#include "helpers.hpp"
+
 #include <algorithm>
 #include <numeric>
 
 using namespace acd;
+using acdtest::decomposed;
 
 namespace {
-
-Decomposition decomposed(const TriMesh& mesh, double tau) {
-  DecomposeOptions o;
-  o.tau = tau;
-  o.threads = 2;
-  Decomposition d = decompose(mesh, o);
-  EXPECT_TRUE(d.status.ok()) << d.status.message;
-  return d;
-}
 
 TriMesh together(const std::vector<TriMesh>& parts) {
   TriMesh all;

@@ -8,10 +8,13 @@
 
 #include <gtest/gtest.h>
 
+#include "helpers.hpp"
+
 #include <cmath>
 #include <functional>
 
 using namespace acd;
+using acdtest::measure;
 
 namespace {
 
@@ -88,13 +91,6 @@ double distanceToHullBoundary(const TriMesh& mesh) {
   return worst;
 }
 
-double concavityOf(const TriMesh& mesh, double epsilon) {
-  SurfaceGraph graph(mesh);
-  ConcavityOptions o;
-  o.epsilon = epsilon;
-  return measureConcavity(mesh, graph, o).concavity;
-}
-
 }  // namespace
 
 TEST(OpenSurface, OutwardBowlHasNoConcaveHullVertexAndNoConcavity) {
@@ -106,7 +102,7 @@ TEST(OpenSurface, OutwardBowlHasNoConcaveHullVertexAndNoConcavity) {
     if (concave[h]) ADD_FAILURE() << m.vertices[hull.source[h]].transpose() << " n " << vertexNormals(m)[hull.source[h]].transpose() << " hn " << vertexNormals(hull.mesh)[h].transpose();
   // Every point of a hemisphere lies on its hull: as a surface it is convex.
   EXPECT_LT(distanceToHullBoundary(m), 1e-9);
-  EXPECT_LE(concavityOf(m, 0.01), 0.01);
+  EXPECT_LE(measure(m, 0.01).concavity, 0.01);
 }
 
 TEST(OpenSurface, InwardBowlIsTurnedToFaceOut) {
@@ -192,7 +188,7 @@ TEST(OpenSurface, SineSheetConcavityBoundsTheTrueDistance) {
     const double truth = distanceToHullBoundary(m);
     ASSERT_GT(truth, 0.05);  // the flanks lie inside the hull
     const double epsilon = 0.02;
-    const double measured = concavityOf(m, epsilon);
+    const double measured = measure(m, epsilon).concavity;
     // Conservative (a pocket's bridge plane is never nearer than the nearest facet plane)...
     EXPECT_GE(measured, truth - 1e-9);
     // ... and not wildly so: below the sheet's own thickness across its hull.
@@ -203,5 +199,5 @@ TEST(OpenSurface, SineSheetConcavityBoundsTheTrueDistance) {
 
 TEST(OpenSurface, FlatSheetIsConvex) {
   const TriMesh m = sheet(8, 8, [](double s, double t) { return Vec3(s, t, 0.0); });
-  EXPECT_EQ(concavityOf(m, 0.01), 0.0);
+  EXPECT_EQ(measure(m, 0.01).concavity, 0.0);
 }

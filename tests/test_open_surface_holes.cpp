@@ -7,14 +7,15 @@
 
 #include <gtest/gtest.h>
 
+#include "helpers.hpp"
+
 #include <cmath>
 #include <string>
 
 using namespace acd;
+using acdtest::corpus;
 
 namespace {
-
-std::string corpus(const std::string& name) { return std::string(ACD_DATA_DIR) + "/meshes/" + name + ".off"; }
 
 TriMesh openBox() {
   TriMesh m = shapes::box(Vec3(0, 0, 0), Vec3(2, 1, 1));

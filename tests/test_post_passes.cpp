@@ -7,23 +7,13 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "helpers.hpp"
+
 #include <cmath>
 
 using namespace acd;
 using json = nlohmann::json;
-
-namespace {
-
-Decomposition decomposed(const TriMesh& mesh, double tau) {
-  DecomposeOptions o;
-  o.tau = tau;
-  o.threads = 2;
-  Decomposition d = decompose(mesh, o);
-  EXPECT_TRUE(d.status.ok()) << d.status.message;
-  return d;
-}
-
-}  // namespace
+using acdtest::decomposed;
 
 TEST(PostPasses, OnlyTheOptionsGivenAreChecked) {
   EXPECT_TRUE(validate(PostPassOptions{}).ok());

@@ -1,5 +1,7 @@
 #include "exact_cgal.hpp"
 
+#include <acd/algo/surface_mesh_copy.hpp>
+
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -29,15 +31,9 @@ struct CgalSideOfMesh::Impl {
 
 CgalSideOfMesh::CgalSideOfMesh(const acd::TriMesh& input) : impl_(std::make_unique<Impl>()) {
   const auto t0 = std::chrono::steady_clock::now();
-  std::vector<Mesh::Vertex_index> ids;
-  ids.reserve(input.vertices.size());
-  for (const acd::Vec3& v : input.vertices) ids.push_back(impl_->mesh.add_vertex(Point(v.x(), v.y(), v.z())));
-  for (std::size_t f = 0; f < input.faces.size(); ++f) {
-    const acd::Face& t = input.faces[f];
-    if (impl_->mesh.add_face(ids[t[0]], ids[t[1]], ids[t[2]]) == Mesh::null_face()) {
-      error_ = "CGAL Surface_mesh refused face " + std::to_string(f) + " (not a manifold surface)";
-      return;
-    }
+  if (const long f = acd::copyToSurfaceMesh(input, impl_->mesh); f >= 0) {
+    error_ = "CGAL Surface_mesh refused face " + std::to_string(f) + " (not a manifold surface)";
+    return;
   }
   impl_->tree = std::make_unique<Tree>(faces(impl_->mesh).first, faces(impl_->mesh).second, impl_->mesh);
   impl_->tree->build();

@@ -1,6 +1,8 @@
 // The only translation unit that instantiates CGAL's Surface_mesh_deformation (slow to compile).
 #include "arap.hpp"
 
+#include <acd/algo/surface_mesh_copy.hpp>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_deformation.h>
@@ -38,18 +40,14 @@ ArapResult arapDeform(const acd::TriMesh& input, const ArapRequest& request) {
     return out;
   }
   Mesh mesh;
-  std::vector<Mesh::Vertex_index> index;
-  index.reserve(n);
-  for (const Vec3& p : input.vertices) index.push_back(mesh.add_vertex(Kernel::Point_3(p.x(), p.y(), p.z())));
-  for (const acd::Face& f : input.faces)
-    if (mesh.add_face(index[f[0]], index[f[1]], index[f[2]]) == Mesh::null_face()) {
-      out.error = "the mesh is not an oriented 2-manifold (CGAL refused a face)";
-      return out;
-    }
+  if (acd::copyToSurfaceMesh(input, mesh) >= 0) {
+    out.error = "the mesh is not an oriented 2-manifold (CGAL refused a face)";
+    return out;
+  }
   try {
     Deformation deformation(mesh);
-    for (int v : request.region) deformation.insert_roi_vertex(index[v]);
-    for (int v : request.handle) deformation.insert_control_vertex(index[v]);  // also joins the region
+    for (int v : request.region) deformation.insert_roi_vertex(Mesh::Vertex_index(v));
+    for (int v : request.handle) deformation.insert_control_vertex(Mesh::Vertex_index(v));  // also joins the region
     if (!deformation.preprocess()) {
       out.error = "ARAP preprocessing failed (singular system: is every free vertex connected to a fixed one?)";
       return out;
@@ -57,12 +55,12 @@ ArapResult arapDeform(const acd::TriMesh& input, const ArapRequest& request) {
     const Eigen::AngleAxisd rotation(request.angleDegrees * M_PI / 180.0, request.axis.normalized());
     for (int v : request.handle) {
       const Vec3 q = request.pivot + rotation * (input.vertices[v] - request.pivot);
-      deformation.set_target_position(index[v], Kernel::Point_3(q.x(), q.y(), q.z()));
+      deformation.set_target_position(Mesh::Vertex_index(v), Kernel::Point_3(q.x(), q.y(), q.z()));
     }
     deformation.deform(static_cast<unsigned int>(std::max(1, request.iterations)), 0.0);
     out.mesh = input;
     for (int v = 0; v < n; ++v) {
-      const auto& p = mesh.point(index[v]);
+      const auto& p = mesh.point(Mesh::Vertex_index(v));
       out.mesh.vertices[v] = Vec3(p.x(), p.y(), p.z());
       if (!out.mesh.vertices[v].allFinite()) {
         out.error = "ARAP produced a non-finite vertex";

@@ -1,6 +1,8 @@
 // The only translation unit that instantiates CGAL's skeletonization (slow to compile).
 #include "mcf_skeleton.hpp"
 
+#include <acd/algo/surface_mesh_copy.hpp>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/extract_mean_curvature_flow_skeleton.h>
@@ -20,14 +22,9 @@ McfSkeleton meanCurvatureSkeleton(const acd::TriMesh& input) {
   const auto start = std::chrono::steady_clock::now();
   McfSkeleton out;
   Mesh mesh;
-  std::vector<Mesh::Vertex_index> index;
-  index.reserve(input.vertices.size());
-  for (const Vec3& p : input.vertices) index.push_back(mesh.add_vertex(Kernel::Point_3(p.x(), p.y(), p.z())));
-  for (const acd::Face& f : input.faces) {
-    if (mesh.add_face(index[f[0]], index[f[1]], index[f[2]]) == Mesh::null_face()) {
-      out.error = "the mesh is not an oriented 2-manifold (CGAL refused a face)";
-      return out;
-    }
+  if (acd::copyToSurfaceMesh(input, mesh) >= 0) {
+    out.error = "the mesh is not an oriented 2-manifold (CGAL refused a face)";
+    return out;
   }
   if (!CGAL::is_closed(mesh)) {
     out.error = "the mesh is not closed";

@@ -1,6 +1,8 @@
 // Mesh diagnosis and the safe repairs before solid decomposition. Both walk the
 // same checks in the same order, so `acd info` names the problem that
 // prepareSolid() would refuse or repair first.
+#include <acd/algo/face_order.hpp>
+#include <acd/algo/union_find.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/hole_filling.hpp>
 
@@ -108,22 +110,6 @@ std::vector<int> firstWithSameVertices(const std::vector<Face>& faces) {
     first[keyed[i].face] = i > 0 && keyed[i].sorted == keyed[i - 1].sorted ? first[keyed[i - 1].face] : keyed[i].face;
   return first;
 }
-
-bool sameCyclicOrder(const Face& a, const Face& b) {
-  for (int r = 0; r < 3; ++r)
-    if (a[0] == b[r] && a[1] == b[(r + 1) % 3] && a[2] == b[(r + 2) % 3]) return true;
-  return false;
-}
-
-struct UnionFind {
-  std::vector<int> parent;
-  explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void join(int a, int b) { parent[find(a)] = find(b); }
-};
 
 /// A corner is (face, position) numbered 3 * face + position; the half-edge of a corner runs
 /// from its vertex to the next vertex of the face.

@@ -10,6 +10,7 @@
 // Hulls: the convex hull of each input hull's vertices (so any input orientation or
 // non-convexity is harmless), as half-spaces n.x <= d for the volume test, as triangles
 // (a canonical fan per planar facet) for surface sampling and exact point-to-hull distances.
+#include <acd/algo/closest_point.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/evaluate.hpp>
 #include <acd/inside.hpp>
@@ -297,37 +298,11 @@ class HullIndex {
   std::vector<std::vector<int>> cells_;
 };
 
-/// Closest point on triangle abc to p (Ericson, Real-Time Collision Detection, 5.1.5).
-Vec3 closestOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0) return a;
-  const Vec3 bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3) return b;
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + (d1 / (d1 - d3)) * ab;
-  const Vec3 cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6) return c;
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + (d2 / (d2 - d6)) * ac;
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
-  const double denom = va + vb + vc;
-  if (!(denom > 0)) {  // degenerate triangle: nearest of the three edges' endpoints is good enough
-    const double da = (p - a).squaredNorm(), db = (p - b).squaredNorm(), dc = (p - c).squaredNorm();
-    return da <= db && da <= dc ? a : (db <= dc ? b : c);
-  }
-  const double v = vb / denom, w = vc / denom;
-  return a + v * ab + w * ac;
-}
-
 /// Distance from p to the solid convex hull (0 inside).
 double distanceToHull(const Hull& h, const Vec3& p) {
   if (h.contains(p)) return 0.0;
   double best = std::numeric_limits<double>::infinity();
-  for (const auto& t : h.triangles) best = std::min(best, (closestOnTriangle(p, t[0], t[1], t[2]) - p).squaredNorm());
+  for (const auto& t : h.triangles) best = std::min(best, (closestPointOnTriangle(p, t[0], t[1], t[2]) - p).squaredNorm());
   return std::sqrt(best);
 }
 
@@ -363,7 +338,7 @@ class TriangleBvh {
       if (n.count > 0) {
         for (int k = n.first; k < n.first + n.count; ++k) {
           const auto& t = tris_[k];
-          best = std::min(best, (closestOnTriangle(p, t[0], t[1], t[2]) - p).squaredNorm());
+          best = std::min(best, (closestPointOnTriangle(p, t[0], t[1], t[2]) - p).squaredNorm());
         }
         continue;
       }

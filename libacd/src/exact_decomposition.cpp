@@ -2,6 +2,7 @@
 // The CGAL call cannot be interrupted, so it runs in a forked worker that streams its progress
 // and the pieces' vertices through a pipe; the parent enforces the time cap by killing it.
 // This is the only translation unit that includes the Nef headers (they compile slowly).
+#include <acd/algo/surface_mesh_copy.hpp>
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/exact_decomposition.hpp>
@@ -96,10 +97,7 @@ struct ShellPoints {
 
 Nef toNef(const TriMesh& mesh) {
   SurfaceMesh sm;
-  std::vector<SurfaceMesh::Vertex_index> ids;
-  ids.reserve(mesh.vertices.size());
-  for (const Vec3& v : mesh.vertices) ids.push_back(sm.add_vertex(Kernel::Point_3(v.x(), v.y(), v.z())));
-  for (const Face& f : mesh.faces) sm.add_face(ids[f[0]], ids[f[1]], ids[f[2]]);
+  copyToSurfaceMesh(mesh, sm, RefusedFace::Skip);
   return Nef(sm);
 }
 

@@ -1,5 +1,7 @@
 #include <acd/handles.hpp>
 
+#include <acd/algo/union_find.hpp>
+
 #include <algorithm>
 #include <map>
 #include <numeric>
@@ -8,16 +10,6 @@
 
 namespace acd {
 namespace {
-
-struct UnionFind {
-  std::vector<int> parent;
-  explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void join(int a, int b) { parent[find(a)] = find(b); }
-};
 
 /// Edge-connected face components of the mesh once `blocked` edges are removed.
 int faceComponents(const TriMesh& mesh, const SurfaceGraph& graph,

@@ -2,6 +2,8 @@
 #define CGAL_EIGEN3_ENABLED 1  // fairing solves a sparse system with Eigen (linked publicly by libacd)
 #include <acd/hole_filling.hpp>
 
+#include <acd/algo/surface_mesh_copy.hpp>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
@@ -27,19 +29,6 @@ std::string describeLoop(const Mesh& m, Mesh::Halfedge_index h, int length) {
   s << "the hole through vertices " << m.source(h).idx() << "-" << m.target(h).idx() << " (" << length
     << " boundary edges)";
   return s.str();
-}
-
-/// The input as a Surface_mesh; false when a face does not fit an oriented manifold surface.
-bool toSurfaceMesh(const TriMesh& input, Mesh& m, std::size_t* badFace) {
-  for (const Vec3& p : input.vertices) m.add_vertex(Point(p.x(), p.y(), p.z()));
-  for (std::size_t f = 0; f < input.faces.size(); ++f) {
-    const Face& t = input.faces[f];
-    if (m.add_face(Mesh::Vertex_index(t[0]), Mesh::Vertex_index(t[1]), Mesh::Vertex_index(t[2])) == Mesh::null_face()) {
-      *badFace = f;
-      return false;
-    }
-  }
-  return true;
 }
 
 enum class Patch { Faired, Flat };
@@ -98,8 +87,7 @@ HoleFilling fillHoles(const TriMesh& input) {
     return out;
   };
   Mesh m;
-  std::size_t badFace = 0;
-  if (!toSurfaceMesh(input, m, &badFace))
+  if (const long badFace = copyToSurfaceMesh(input, m); badFace >= 0)
     return refuse("cannot fill holes: face " + std::to_string(badFace) +
                   " does not fit an oriented manifold surface");
 

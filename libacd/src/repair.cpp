@@ -2,6 +2,8 @@
 // CGAL's Polygon Mesh Processing provides are CGAL's; what is ours is the merge of close
 // vertices (CGAL 5.5 merges exact copies only) and the choice between the two sides of a
 // double-sided face, which needs the faces around it.
+#include <acd/algo/face_order.hpp>
+#include <acd/algo/union_find.hpp>
 #include <acd/repair.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -27,20 +29,6 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using SurfaceMesh = CGAL::Surface_mesh<Point>;
 using Polygon = std::array<std::size_t, 3>;
-
-struct UnionFind {
-  std::vector<int> parent;
-  explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  // The smaller index stays the representative: the result does not depend on visiting order.
-  void join(int a, int b) {
-    a = find(a), b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
 
 bool finite(const Vec3& p) { return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()); }
 
@@ -68,7 +56,7 @@ std::vector<int> mergeClose(const std::vector<Vec3>& vertices, const Box3& box, 
             const auto it = grid.find(key(c + Eigen::Array3i(dx, dy, dz)));
             if (it == grid.end()) continue;
             for (int u : it->second)
-              if ((vertices[u] - vertices[v]).squaredNorm() <= tolerance2) sets.join(u, v);
+              if ((vertices[u] - vertices[v]).squaredNorm() <= tolerance2) sets.joinKeepingSmallest(u, v);
           }
       grid[key(c)].push_back(v);
     }
@@ -76,12 +64,6 @@ std::vector<int> mergeClose(const std::vector<Vec3>& vertices, const Box3& box, 
   std::vector<int> rep(n);
   for (int v = 0; v < n; ++v) rep[v] = sets.find(v);
   return rep;
-}
-
-bool sameCyclicOrder(const Face& a, const Face& b) {
-  for (int r = 0; r < 3; ++r)
-    if (a[0] == b[r] && a[1] == b[(r + 1) % 3] && a[2] == b[(r + 2) % 3]) return true;
-  return false;
 }
 
 struct DuplicateOutcome {
@@ -135,7 +117,7 @@ DuplicateOutcome resolveDuplicates(const std::vector<Face>& faces) {
         const std::uint64_t e = edgeKey(faces[f][k], faces[f][(k + 1) % 3]);
         if (uses[e].second < 2) continue;
         auto [it, inserted] = firstPairOnEdge.emplace(e, f);
-        if (!inserted) sets.join(it->second, f);
+        if (!inserted) sets.joinKeepingSmallest(it->second, f);
       }
   std::unordered_map<int, char> setClosesNothing;  // root -> every outer edge where the rest is closed
   for (int f = 0; f < nf; ++f)

@@ -2,6 +2,8 @@
 // headers are slow to compile.
 #include <acd/diagnosis.hpp>
 
+#include <acd/algo/surface_mesh_copy.hpp>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
@@ -36,11 +38,7 @@ int countSelfIntersections(const TriMesh& mesh, int limit) {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   using SM = CGAL::Surface_mesh<K::Point_3>;
   SM sm;
-  std::vector<SM::Vertex_index> vs;
-  vs.reserve(mesh.vertices.size());
-  for (const Vec3& p : mesh.vertices) vs.push_back(sm.add_vertex(K::Point_3(p.x(), p.y(), p.z())));
-  for (const Face& f : mesh.faces)
-    if (sm.add_face(vs[f[0]], vs[f[1]], vs[f[2]]) == SM::null_face()) return -1;  // not a manifold surface
+  if (copyToSurfaceMesh(mesh, sm) >= 0) return -1;  // not a manifold surface
   int count = 0;
   using Pair = std::pair<SM::Face_index, SM::Face_index>;
   try {
