@@ -1,6 +1,7 @@
 // acd._core: libacd for Python. The pure-Python package acd (python/acd/) checks arguments and
 // shapes results; this file only moves arrays in and out and runs the library without the GIL.
 #include "binding.hpp"
+#include "model_reader.hpp"
 #include "progress.hpp"
 
 #include <acd/decompose.hpp>
@@ -39,7 +40,7 @@ py::tuple readMesh(const std::string& path) {
   acd::ReadResult r;
   {
     py::gil_scoped_release free;
-    r = acd::readMesh(path);
+    r = acdpy::readModel(path);
   }
   check(r.status);
   return toArrays(r.mesh);

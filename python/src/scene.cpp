@@ -1,6 +1,7 @@
 // The meshes `acd decompose --per-mesh` decomposes one by one: every mesh placed in a scene file
 // (glTF, GLB, COLLADA, 3MF, FBX), every object of an OBJ, or the one mesh of any other file.
 #include "binding.hpp"
+#include "model_reader.hpp"
 
 #include <acd/io.hpp>
 #include <acd/scene_io.hpp>
@@ -24,7 +25,7 @@ NamedMeshes readMeshes(const std::string& path) {
   NamedMeshes out;
   const std::string extension = std::filesystem::path(path).extension().string();
   if (acd::isSceneFormat(path)) {
-    acd::SceneMeshes scene = acd::readScene(path);
+    acd::SceneMeshes scene = acdpy::readSceneModel(path);
     out.status = scene.status;
     out.meshes = std::move(scene.meshes);
     out.names = std::move(scene.names);
@@ -34,7 +35,7 @@ NamedMeshes readMeshes(const std::string& path) {
     out.meshes = std::move(objects.objects);
     out.names = std::move(objects.names);
   } else {
-    acd::ReadResult r = acd::readMesh(path);
+    acd::ReadResult r = acdpy::readModel(path);
     out.status = r.status;
     out.meshes.push_back(std::move(r.mesh));
     out.names.push_back(std::filesystem::path(path).stem().string());
