@@ -30,6 +30,9 @@ def main():
         hi = [100 * p[3] for p in points]
         line, = ax.plot(n, rate, marker="o", label=name)
         ax.fill_between(n, lo, hi, color=line.get_color(), alpha=0.12)
+    all_n = [p[0] for points in rows.values() for p in points]
+    if all_n and max(all_n) > 20 * min(all_n):  # a doubling search: equal steps on a log axis
+        ax.set_xscale("log")
     ax.set_xlabel("sampled milestones N")
     ax.set_ylabel("success rate [%] (start and goal connected)")
     ax.set_ylim(-2, 102)

@@ -35,7 +35,8 @@ N90Search searchN90(PlanningProblem& problem, const std::string& sampler, int st
   };
   int below = 0, above = -1;
   SamplerRuns best;
-  for (int n = std::max(1, startN); n <= maxN; n *= 2) {
+  // Doubling, the last step clamped to maxN so that maxN itself is always tried.
+  for (int n = std::max(1, std::min(startN, maxN));; n = std::min(2 * n, maxN)) {
     SamplerRuns runs = evaluate(n);
     if (runs.summary.rate >= kTarget) {
       above = n;
@@ -43,6 +44,7 @@ N90Search searchN90(PlanningProblem& problem, const std::string& sampler, int st
       break;
     }
     below = n;
+    if (n == maxN) break;
   }
   if (above < 0) return out;
   while (above - below > std::max(1, above / 10)) {

@@ -20,7 +20,7 @@ struct N90Search {
   std::vector<SamplerSummary> points;  // every N evaluated, in order
 };
 
-/// Doubles N from `startN` until the success rate reaches 90 % (or N would pass `maxN`), then
+/// Doubles N from `startN` until the success rate reaches 90 % (the last step clamped to `maxN`), then
 /// bisects between the last N below and the first at or above until they are within 10 %.
 /// Success is not strictly monotone in N; the result is the N the search settles on.
 N90Search searchN90(PlanningProblem& problem, const std::string& sampler, int startN, int maxN, int trials,
