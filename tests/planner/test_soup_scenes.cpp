@@ -9,8 +9,12 @@
 #include <acd/inside.hpp>
 #include <acd/io.hpp>
 
+#include <helpers.hpp>
+
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace {
@@ -121,6 +125,35 @@ TEST(SoupScenes, OmplAppStylePoses) {
   // The reference point stays in the volume; the workspace is grown by the robot's reach.
   EXPECT_TRUE(s.bounds.hi.isApprox(Vec3(7, 3, 3)));
   EXPECT_NEAR(s.workspace.hi.x() - 7, s.robot.boundingRadius(), 1e-9);
+}
+
+TEST(SoupScenes, OmplAppCfgConvertsToTheSameProblem) {
+  // scenarios/generate/ompl_app_cfg_to_yaml.py on the twisty puzzle written as an OMPL.app .cfg.
+  if (!std::filesystem::exists("/usr/bin/python3")) GTEST_SKIP() << "no /usr/bin/python3";
+  acdtest::TempDir dir("planner_cfg");
+  std::ofstream(dir / "twisty.cfg") << "[problem]\nworld=" << kGenerated << "/twisty_env.dae\nrobot=" << kGenerated
+                                    << "/twisty_robot.dae\n"
+                                       "start.x=1.5\nstart.y=1.5\nstart.z=1.5\n"
+                                       "start.axis.x=0\nstart.axis.y=1\nstart.axis.z=0\nstart.theta=-1.5707963\n"
+                                       "goal.x=5.5\ngoal.y=1.5\ngoal.z=1.5\n"
+                                       "goal.axis.x=0\ngoal.axis.y=0\ngoal.axis.z=1\ngoal.theta=1.5707963\n"
+                                       "volume.min.x=0\nvolume.min.y=0\nvolume.min.z=0\n"
+                                       "volume.max.x=7\nvolume.max.y=3\nvolume.max.z=3\n"
+                                       "[benchmark]\ntime_limit=30.0\nrun_count=10\n";
+  const auto run = acdtest::runTool("/usr/bin/python3",
+                                    acdtest::quote(std::string(PLANNER_SCENARIO_DIR) + "/generate/ompl_app_cfg_to_yaml.py") +
+                                        " " + acdtest::quote(dir / "twisty.cfg"),
+                                    dir);
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_NE(run.out.find("--race --time-limit 30.0 --runs 10"), std::string::npos) << run.out;
+  const planner::Scenario converted = planner::parseScenario(run.out, "converted.yaml", dir.path().string());
+  const planner::Scenario shipped = planner::loadScenario(std::string(PLANNER_SCENARIO_DIR) + "/twisty.yaml");
+  EXPECT_TRUE(converted.start.position.isApprox(shipped.start.position));
+  EXPECT_TRUE(converted.goal.orientation.isApprox(shipped.goal.orientation, 1e-9));
+  EXPECT_TRUE(converted.start.orientation.isApprox(shipped.start.orientation, 1e-9));
+  EXPECT_TRUE(converted.bounds.lo.isApprox(shipped.bounds.lo) && converted.bounds.hi.isApprox(shipped.bounds.hi));
+  EXPECT_TRUE(converted.workspace.hi.isApprox(shipped.workspace.hi));
+  EXPECT_EQ(converted.robot.mesh.faces.size(), shipped.robot.mesh.faces.size());
 }
 
 TEST(SoupScenes, AcdThroughTheTwistyPassageWhereUniformFails) {
