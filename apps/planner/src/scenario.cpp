@@ -222,7 +222,10 @@ class Parser {
       }
       r.mesh = transformed(std::move(triangles), node, "robot");
       // Point location needs a closed robot; a soup is closed by repair or a thin wrap.
-      const double size = acd::boundingBox(r.mesh).size().minCoeff();
+      // The wrap's scale: the robot's thickness, or 1 % of its length for a flat robot.
+      const acd::Vec3 extent = acd::boundingBox(r.mesh).size();
+      const double size = std::max(extent.minCoeff(), 0.01 * extent.maxCoeff());
+      if (!(size > 0)) fail("'robot.mesh': " + r.meshPath + " has no extent");
       const SolidObstacle solid = solidify(r.mesh, {size / 4, size / 100});
       if (!solid.ok || solid.pieces.empty()) fail("'robot.mesh': " + r.meshPath + ": cannot be made a closed solid: " + solid.error);
       r.solid = concatenatedPieces(solid);
