@@ -1,5 +1,5 @@
 // A generated set of the broken meshes people export (Blender, CAD, scans, game assets), one
-// per class of problem, each with what acd must do with it. Used by tests/test_robust.cpp and
+// per class of problem, each with what acd must do with it. Used by tests/driver/test_robust.cpp and
 // written to a folder by the `bad_meshes` program (bench/bad_meshes.sh runs the CLI on them).
 // Nothing here is a copy of a real file: every mesh is built from boxes and spheres.
 #pragma once

@@ -5,11 +5,11 @@
 #pragma once
 
 #include <acd/algo/closest_point.hpp>
-#include <acd/concavity.hpp>
+#include <acd/algo/concavity.hpp>
+#include <acd/algo/surface_graph.hpp>
 #include <acd/decompose.hpp>
 #include <acd/mesh.hpp>
 #include <acd/normalize.hpp>
-#include <acd/surface_graph.hpp>
 
 #include <gtest/gtest.h>
 

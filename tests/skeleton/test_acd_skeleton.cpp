@@ -2,7 +2,7 @@
 #include "acd_skeleton.hpp"
 #include "ged.hpp"
 
-#include <acd/cut.hpp>
+#include <acd/algo/cut.hpp>
 #include <acd/decompose.hpp>
 #include <acd/io.hpp>
 #include <acd/shapes.hpp>

@@ -2,8 +2,8 @@
 #include "hull_mesher.hpp"
 #include "tet_checks.hpp"
 
+#include <acd/algo/merge.hpp>
 #include <acd/io.hpp>
-#include <acd/merge.hpp>
 #include <acd/shapes.hpp>
 
 #include <gtest/gtest.h>

@@ -21,7 +21,7 @@ struct DecomposeOptions {
   bool fillHoles = true;         // close an open mesh's holes first (false: refuse open meshes)
   bool repair = true;            // repairs, shells and the wrap (acd/robust.hpp); false: strict checks only
   bool wrap = true;              // with repair: wrap what cannot be made a clean solid (false: refuse it)
-  /// Decompose in a frame computed from the shape (acd/canonical_frame.hpp): the same parts for any
+  /// Decompose in a frame computed from the shape (acd/algo/canonical_frame.hpp): the same parts for any
   /// rotation, translation or order of faces. Input vertices on cut planes come back moved by up
   /// to 2.1e-7 of the model's radius (the frame's rounding grid); off by default for that reason.
   bool invariant = false;

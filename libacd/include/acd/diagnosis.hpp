@@ -42,7 +42,7 @@ int countSelfIntersections(const TriMesh& mesh, int limit = -1);
 
 /// What prepareSolid does with boundary edges.
 enum class OpenMeshPolicy {
-  FillHoles,  // close every hole (acd/hole_filling.hpp); refuse when that cannot be done safely
+  FillHoles,  // close every hole (acd/algo/hole_filling.hpp); refuse when that cannot be done safely
   Refuse,     // refuse open meshes (OpenMesh)
   KeepOpen,   // keep the holes: pieces may be open surfaces, consistently oriented (surface ACD)
 };

@@ -4,8 +4,8 @@
 //
 // The cost of a merge is the concavity of the union, so that the largest concavity over the
 // components grows as little as possible, ties going to the smaller growth of hull volume.
-// - Neighbours that share cut faces are glued along them (acd/merge.hpp) and the union's
-//   concavity is measured like any component's (acd/concavity.hpp, the decomposition's own
+// - Neighbours that share cut faces are glued along them (acd/algo/merge.hpp) and the union's
+//   concavity is measured like any component's (acd/algo/concavity.hpp, the decomposition's own
 //   measure and epsilon): the reported concavity can be compared with tau.
 // - Pieces that share no face (separate pieces of the input, or a glue that would not give a
 //   closed, connected mesh) are merged only when no neighbour pair is left. Their union is not

@@ -9,7 +9,7 @@ namespace acd {
 struct Normalization {
   Vec3 center = Vec3::Zero();
   double scale = 1.0;  // 1 / radius of the minimum enclosing sphere
-  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // rows: the frame's axes (acd/canonical_frame.hpp)
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // rows: the frame's axes (acd/algo/canonical_frame.hpp)
 
   Vec3 apply(const Vec3& p) const { return rotation * ((p - center) * scale); }
   Vec3 undo(const Vec3& p) const { return rotation.transpose() * p / scale + center; }

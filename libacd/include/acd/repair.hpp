@@ -49,7 +49,7 @@ struct MeshRepair {
 /// and orient every piece consistently (CGAL orient_polygon_soup); stitch borders; remove
 /// zero-area, needle and cap faces (CGAL remove_degenerate_faces and
 /// remove_almost_degenerate_faces); split vertices left non-manifold
-/// (duplicate_non_manifold_vertices). Holes are not closed here (acd/hole_filling.hpp), and
+/// (duplicate_non_manifold_vertices). Holes are not closed here (acd/algo/hole_filling.hpp), and
 /// self-intersections are left as they are. Never throws.
 MeshRepair repairMesh(const TriMesh& mesh, const RepairOptions& options = {});
 

@@ -1,5 +1,5 @@
 // Any mesh people bring, decomposed: repairs (acd/repair.hpp), hole filling, several shells
-// (acd/shells.hpp) and, as the last resort, the watertight wrap (acd/alpha_wrap.hpp). This is
+// (acd/algo/shells.hpp) and, as the last resort, the watertight wrap (acd/alpha_wrap.hpp). This is
 // what acd::decompose does when DecomposeOptions::repair is on (the default).
 #pragma once
 

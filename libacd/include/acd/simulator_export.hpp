@@ -1,5 +1,5 @@
 // Files a physics engine or robot simulator loads directly: one mesh file per hull (OBJ, STL),
-// glTF/GLB with one mesh node per hull (acd/gltf_export.hpp), and rigid-body descriptions that
+// glTF/GLB with one mesh node per hull (acd/algo/gltf_export.hpp), and rigid-body descriptions that
 // use the hulls as collision shapes and the model as the visual: URDF (ROS, PyBullet, Isaac,
 // Drake), MJCF (MuJoCo) and SDF (Gazebo). The XML is written with tinyxml2.
 //

@@ -1,7 +1,7 @@
 // Surface approximate convex decomposition (Lien & Amato 2007, Section 4.3): the surface is
 // split along the edges of global cuts, not cut by planes, until every patch's concavity
 // is at most tau. Patches are open surfaces, measured with Extension 2 of Section 4.1
-// (acd/open_surface.hpp). Works on open and closed meshes of any genus.
+// (acd/algo/open_surface.hpp). Works on open and closed meshes of any genus.
 #pragma once
 
 #include <acd/mesh.hpp>

@@ -1,7 +1,6 @@
-// Decomposes the L-shape with an installed libacd; prints "acd VERSION: N components".
-#include <acd/decompose.hpp>
-#include <acd/shapes.hpp>
-#include <acd/version.hpp>
+// Decomposes the L-shape with an installed libacd through its facade, acd/acd.hpp; prints
+// "acd VERSION: N components".
+#include <acd/acd.hpp>
 
 #include <cstdio>
 

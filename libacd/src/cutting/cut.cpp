@@ -1,0 +1,212 @@
+// Plane cut with capped cross-sections. The only CGAL part is the 2-D constrained
+// Delaunay triangulation of the section, whose exact predicates make the cap
+// triangulation reliable; its no-intersection tag turns a broken section into a
+// clean failure instead of a silently wrong mesh.
+#include <acd/algo/cut.hpp>
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Random.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <cmath>
+#include <list>
+#include <unordered_map>
+
+namespace acd {
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<int, K>;
+using Fbi = CGAL::Triangulation_face_base_with_info_2<int, K>;
+using Fb = CGAL::Constrained_triangulation_face_base_2<K, Fbi>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+using CDT = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::No_constraint_intersection_tag>;
+
+/// Triangulates the region bounded by the directed section edges (ccw around the
+/// region seen from +normal). Returns false when the loops are not simple and disjoint.
+bool triangulateSection(const std::vector<Vec3>& points, const std::vector<std::pair<int, int>>& edges,
+                        const Vec3& normal, std::vector<Face>& cap, std::string& error) {
+  const Vec3 n = normal.normalized();
+  const Vec3 u = n.unitOrthogonal();
+  const Vec3 w = n.cross(u);  // (u, w, n) right-handed: ccw in (u, w) is ccw seen from +n
+  // CGAL's default generator is per thread and steers point location: reset it so the cap
+  // triangulation (not unique for cocircular points) does not depend on which thread runs it.
+  CGAL::get_default_random() = CGAL::Random(0);
+  CDT cdt;
+  std::unordered_map<int, CDT::Vertex_handle> handle;
+  try {
+    for (const auto& [a, b] : edges)
+      for (int v : {a, b}) {
+        if (handle.count(v)) continue;
+        const Vec3& p = points[v];
+        const auto before = cdt.number_of_vertices();
+        auto vh = cdt.insert(K::Point_2(u.dot(p), w.dot(p)));
+        if (cdt.number_of_vertices() == before) {
+          error = "two section vertices project to the same point";
+          return false;
+        }
+        vh->info() = v + 1;
+        handle[v] = vh;
+      }
+    for (const auto& [a, b] : edges) cdt.insert_constraint(handle[a], handle[b]);
+  } catch (const std::exception&) {
+    error = "section loops intersect";
+    return false;
+  }
+  if (static_cast<std::size_t>(cdt.number_of_vertices()) != handle.size()) {
+    error = "section vertices merged";
+    return false;
+  }
+  // Nesting depth by flooding from the infinite face; odd depth = inside the section.
+  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = -1;
+  std::list<CDT::Face_handle> frontier{cdt.infinite_face()};
+  cdt.infinite_face()->info() = 0;
+  std::list<CDT::Face_handle> next;
+  for (int depth = 0; !frontier.empty(); ++depth) {
+    while (!frontier.empty()) {
+      auto f = frontier.front();
+      frontier.pop_front();
+      for (int i = 0; i < 3; ++i) {
+        auto g = f->neighbor(i);
+        if (g->info() != -1) continue;
+        if (cdt.is_constrained(CDT::Edge(f, i))) {
+          g->info() = depth + 1;
+          next.push_back(g);
+        } else {
+          g->info() = depth;
+          frontier.push_back(g);
+        }
+      }
+    }
+    frontier.swap(next);
+  }
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if (f->info() % 2 == 1)
+      cap.push_back({f->vertex(0)->info() - 1, f->vertex(1)->info() - 1, f->vertex(2)->info() - 1});
+  // Every constrained edge must be used by the cap in the loop's direction, else the loops
+  // were oriented against their nesting (a sign the section is not what we think).
+  std::unordered_map<std::uint64_t, int> directed;
+  for (const Face& f : cap)
+    for (int k = 0; k < 3; ++k)
+      directed[(static_cast<std::uint64_t>(f[k]) << 32) | static_cast<std::uint32_t>(f[(k + 1) % 3])]++;
+  for (const auto& [a, b] : edges)
+    if (!directed.count((static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b))) {
+      error = "section loops are inconsistently nested";
+      return false;
+    }
+  return true;
+}
+
+}  // namespace
+
+CutResult cutByPlane(const TriMesh& mesh, const Plane& plane, double snap) {
+  CutResult result;
+  const double len = plane.normal.norm();
+  if (!(len > 0.0) || !std::isfinite(plane.offset)) {
+    result.error = "invalid plane";
+    return result;
+  }
+  const Vec3 n = plane.normal / len;
+  const double offset = plane.offset / len;
+  std::vector<Vec3> points = mesh.vertices;
+  std::vector<double> dist(points.size());
+  std::vector<int> side(points.size());
+  bool anyBelow = false, anyAbove = false;
+  for (std::size_t v = 0; v < points.size(); ++v) {
+    dist[v] = n.dot(points[v]) - offset;
+    side[v] = std::abs(dist[v]) <= snap ? 0 : (dist[v] < 0 ? -1 : 1);
+    anyBelow |= side[v] < 0;
+    anyAbove |= side[v] > 0;
+  }
+  if (!anyBelow || !anyAbove) {  // nothing to cut: the whole mesh is on one side
+    (anyAbove ? result.above : result.below).push_back(mesh);
+    result.ok = true;
+    return result;
+  }
+
+  std::unordered_map<std::uint64_t, int> crossing;
+  auto crossPoint = [&](int a, int b) {
+    auto [it, inserted] = crossing.emplace(edgeKey(a, b), static_cast<int>(points.size()));
+    if (inserted) {
+      const int lo = std::min(a, b), hi = std::max(a, b);  // same point whichever face asks first
+      const double t = dist[lo] / (dist[lo] - dist[hi]);
+      points.push_back(points[lo] + t * (points[hi] - points[lo]));
+      side.push_back(0);
+      dist.push_back(0.0);
+    }
+    return it->second;
+  };
+
+  std::vector<Face> below, above;
+  auto emit = [&](int s, Face f) { (s < 0 ? below : above).push_back(f); };
+  for (const Face& f : mesh.faces) {
+    const int s0 = side[f[0]], s1 = side[f[1]], s2 = side[f[2]];
+    const bool hasBelow = s0 < 0 || s1 < 0 || s2 < 0, hasAbove = s0 > 0 || s1 > 0 || s2 > 0;
+    if (!hasBelow && !hasAbove) {  // in the plane: the solid lies on the side opposite its normal
+      const Vec3 fn = (points[f[1]] - points[f[0]]).cross(points[f[2]] - points[f[0]]);
+      emit(fn.dot(n) > 0 ? -1 : 1, f);
+    } else if (!hasAbove) {
+      emit(-1, f);
+    } else if (!hasBelow) {
+      emit(1, f);
+    } else {
+      // Rotate so that f[0] is the vertex alone on its side (or the one in the plane).
+      int r = 0;
+      for (int k = 0; k < 3; ++k) {
+        const int sk = side[f[k]], sa = side[f[(k + 1) % 3]], sb = side[f[(k + 2) % 3]];
+        if (sk == 0 || (sa == sb && sa == -sk)) r = k;
+      }
+      const int a = f[r], b = f[(r + 1) % 3], c = f[(r + 2) % 3];
+      if (side[a] == 0) {
+        const int p = crossPoint(b, c);
+        emit(side[b], {a, b, p});
+        emit(side[c], {a, p, c});
+      } else {
+        const int p = crossPoint(a, b), q = crossPoint(a, c);
+        emit(side[a], {a, p, q});
+        emit(side[b], {p, b, c});
+        emit(side[b], {p, c, q});
+      }
+    }
+  }
+
+  // The section: edges of the lower surface without a twin in it. The cap of the lower part
+  // runs them backwards (its normal is +n).
+  std::unordered_map<std::uint64_t, int> directed;
+  directed.reserve(below.size() * 3);
+  for (const Face& f : below)
+    for (int k = 0; k < 3; ++k)
+      directed[(static_cast<std::uint64_t>(f[k]) << 32) | static_cast<std::uint32_t>(f[(k + 1) % 3])]++;
+  std::vector<std::pair<int, int>> section;
+  for (const Face& f : below)
+    for (int k = 0; k < 3; ++k) {
+      const int a = f[k], b = f[(k + 1) % 3];
+      if (!directed.count((static_cast<std::uint64_t>(b) << 32) | static_cast<std::uint32_t>(a))) {
+        if (side[a] != 0 || side[b] != 0) {
+          result.error = "open edge off the plane (input not closed?)";
+          return result;
+        }
+        section.emplace_back(b, a);
+      }
+    }
+  std::vector<Face> cap;
+  if (!section.empty() && !triangulateSection(points, section, n, cap, result.error)) return result;
+  for (const Face& f : cap) {
+    below.push_back(f);
+    above.push_back({f[0], f[2], f[1]});
+  }
+  const TriMesh lower{points, below}, upper{points, above};
+  if (!isClosedOriented(lower) || !isClosedOriented(upper)) {
+    result.error = "cut pieces are not closed";
+    return result;
+  }
+  result.below = splitEdgeConnected(lower);
+  result.above = splitEdgeConnected(upper);
+  result.ok = true;
+  return result;
+}
+
+}  // namespace acd

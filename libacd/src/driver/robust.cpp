@@ -1,0 +1,327 @@
+// Repairs, shells, hole filling and the wrap around the solid decomposition (acd/robust.hpp).
+#include <acd/algo/canonical_frame.hpp>
+#include <acd/algo/shells.hpp>
+#include <acd/diagnosis.hpp>
+#include <acd/normalize.hpp>
+#include <acd/repair.hpp>
+#include <acd/robust.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <set>
+#include <sstream>
+
+namespace acd {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+std::string number(double x) {
+  std::ostringstream s;
+  s.precision(3);
+  s << x;
+  return s.str();
+}
+
+std::string plural(int n, const char* one, const char* many) { return std::to_string(n) + " " + (n == 1 ? one : many); }
+
+/// Wraps `pieces` together at the parameters for `tau` (normalised by `modelScale`); the wrap's
+/// edge-connected parts come back as closed outward shells.
+struct WrapShells {
+  Status status;
+  std::vector<TriMesh> shells;
+  WrapParameters parameters;  // normalised
+  int faces = 0;
+  double seconds = 0.0;
+};
+/// With `invariant` the pieces are wrapped in their canonical frame (acd/algo/canonical_frame.hpp): the
+/// wrap follows a grid of the scene's box, so it would change with the pose otherwise.
+WrapShells wrapPieces(const std::vector<TriMesh>& pieces, double tau, double modelScale, bool invariant) {
+  WrapShells out;
+  out.parameters = wrapParametersFor(tau);
+  Normalization frame;  // identity unless invariant
+  TriMesh input = concatenate(pieces);
+  if (invariant) {
+    frame = canonicalFrame(pieces);
+    input = canonicalMesh(input, frame).mesh;
+  }
+  const double unit = frame.scale / modelScale;  // one normalised unit in the wrap's coordinates
+  Wrap w = alphaWrap(input, out.parameters.alpha * unit, out.parameters.offset * unit);
+  out.seconds = w.seconds;
+  out.status = w.status;
+  if (!w.status.ok()) return out;
+  if (invariant) w.mesh = undoNormalization(w.mesh, frame);
+  out.faces = static_cast<int>(w.mesh.faces.size());
+  for (TriMesh& part : splitEdgeConnected(w.mesh)) {
+    if (signedVolume(part) < 0.0)
+      for (Face& f : part.faces) std::swap(f[1], f[2]);
+    if (!isClosedOriented(part)) {
+      out.status = Status::error(StatusCode::InternalError, "the alpha wrap is not a closed surface");
+      return out;
+    }
+    out.shells.push_back(std::move(part));
+  }
+  return out;
+}
+
+void addWrapToReport(WrapReport& report, const WrapShells& w, int pieces, const std::string& reason) {
+  report.used = true;
+  report.reason = report.reason.empty() ? reason : report.reason + "; " + reason;
+  report.wrappedPieces += pieces;
+  report.alpha = w.parameters.alpha;
+  report.offset = w.parameters.offset;
+  report.faces += w.faces;
+  report.seconds += w.seconds;
+}
+
+}  // namespace
+
+PreparedModel prepareModel(const TriMesh& mesh, const DecomposeOptions& options, bool buildWrap) {
+  const auto start = Clock::now();
+  PreparedModel out;
+  auto refuse = [&](const Status& s) {
+    out.status = s;
+    out.shells.clear();
+    out.isWrap.clear();
+    out.seconds = secondsSince(start);
+    return out;
+  };
+  const MeshRepair repaired = repairMesh(mesh);
+  if (!repaired.status.ok()) return refuse(repaired.status);
+  out.repairs = repaired.repairs;
+
+  PrepareOptions po;
+  po.openMeshes = options.fillHoles ? OpenMeshPolicy::FillHoles : OpenMeshPolicy::Refuse;
+  PreparedSolid whole = prepareSolid(repaired.mesh, po);
+  std::vector<TriMesh> unclosable;
+  if (whole.status.ok()) {
+    out.shells = std::move(whole.components);
+    out.holesFilled = whole.holesFilled;
+    // The copies repairMesh made of non-manifold vertices share a position: prepareSolid merges
+    // and splits them again; those lines would only repeat repairMesh's.
+    for (const std::string& line : whole.repairs)
+      if (line.rfind("merged ", 0) != 0 && line.find("non-manifold vertices") == std::string::npos &&
+          line.find("not used by any face") == std::string::npos)
+        out.repairs.push_back(line);
+  } else {
+    // Piece by piece: the pieces that can be made solid stay exact, the rest go to the wrap.
+    // (The whole can fail where no piece does: the copies repairMesh made of a non-manifold
+    // vertex share its position, and prepareSolid merges exact copies again.)
+    const std::vector<TriMesh> pieces = splitEdgeConnected(repaired.mesh);
+    Status firstFailure;
+    for (const TriMesh& piece : pieces) {
+      PreparedSolid p = prepareSolid(piece, po);
+      if (!p.status.ok()) {
+        if (unclosable.empty()) firstFailure = p.status;
+        unclosable.push_back(piece);
+        continue;
+      }
+      out.holesFilled += p.holesFilled;
+      for (TriMesh& c : p.components) out.shells.push_back(std::move(c));
+    }
+    if (!unclosable.empty() && !options.wrap) return refuse(firstFailure);  // today's refusal and message
+    if (out.holesFilled > 0) out.repairs.push_back("filled " + plural(out.holesFilled, "hole", "holes"));
+    if (!unclosable.empty())
+      out.wrapReason = plural(static_cast<int>(unclosable.size()), "piece", "pieces") + " of " +
+                       std::to_string(pieces.size()) + " cannot be made a clean solid (first: " + firstFailure.message +
+                       ")";
+  }
+  out.isWrap.assign(out.shells.size(), 0);
+  if (!unclosable.empty() && buildWrap) {
+    const double scale = minimumSphereNormalization(repaired.mesh).scale;
+    WrapShells w = wrapPieces(unclosable, options.tau, scale, options.invariant);
+    if (!w.status.ok()) return refuse(w.status);
+    addWrapToReport(out.wrap, w, static_cast<int>(unclosable.size()), out.wrapReason);
+    out.repairs.push_back(out.wrapReason + ": wrapped them (alpha " + number(w.parameters.alpha) + ", offset " +
+                          number(w.parameters.offset) + " normalised units, " + plural(w.faces, "face", "faces") +
+                          ", " + number(w.seconds) + " s)");
+    for (TriMesh& s : w.shells) {
+      out.shells.push_back(std::move(s));
+      out.isWrap.push_back(1);
+    }
+    out.wrappedInput = std::move(unclosable);
+  } else if (!unclosable.empty()) {
+    out.repairs.push_back(out.wrapReason + ": decompose wraps them");
+  }
+
+  // Shells: cavities go (the hulls of the shell around them cover them); overlapping ones stay apart.
+  const ShellNesting nesting = classifyShells(out.shells);
+  if (nesting.cavities > 0) {
+    std::vector<TriMesh> kept;
+    std::vector<char> keptWrap;
+    for (std::size_t i = 0; i < out.shells.size(); ++i)
+      if (nesting.depth[i] % 2 == 0) kept.push_back(std::move(out.shells[i])), keptWrap.push_back(out.isWrap[i]);
+    out.shells = std::move(kept);
+    out.isWrap = std::move(keptWrap);
+    out.cavitiesDropped = nesting.cavities;
+    out.repairs.push_back("dropped " + plural(nesting.cavities, "inner shell", "inner shells") +
+                          " bounding a cavity (inside another shell): the hulls of the shell around cover it");
+  }
+  out.overlappingShells = nesting.overlapping;
+  if (nesting.overlapping > 0)
+    out.repairs.push_back(plural(nesting.overlapping, "shell passes", "shells pass") +
+                          " through or touch another: each shell is decomposed on its own");
+  out.status = out.shells.empty() ? Status::error(StatusCode::EmptyMesh, "no solid left after the repairs")
+                                  : Status::success();
+  out.seconds = secondsSince(start);
+  return out;
+}
+
+namespace {
+
+/// One shell decomposed alone, at tau in the model's units, its figures brought back to them.
+Decomposition decomposeShell(const TriMesh& shell, int index, const DecomposeOptions& o, double modelScale,
+                             int doneBefore) {
+  DecomposeOptions inner = o;
+  inner.repair = false;
+  const double k = std::max(1.0, minimumSphereNormalization(shell).scale / modelScale);  // shell units per model unit
+  inner.tau = std::min(2.0, o.tau * k);
+  inner.epsilon = std::min(inner.tau, o.epsilon * k);
+  inner.delta = std::min(inner.tau, o.delta * k);
+  if (o.progress) inner.progress = [&](int done, int pending) { o.progress(doneBefore + done, pending); };
+  Decomposition d = decompose(shell, inner);
+  if (!d.status.ok()) return d;
+  const double k3 = k * k * k;
+  for (Component& c : d.components) {
+    c.concavity /= k;
+    c.volume /= k3;
+    c.hullVolume /= k3;
+    c.source = index;
+  }
+  d.stats.inputVolume /= k3;
+  return d;
+}
+
+/// A hull within t of the wrap is within t + d of the input, where d is how far the wrap stands
+/// off the input (sampled, with a tenth more for what the samples miss): the wrap is decomposed at
+/// tau - d so that the promise holds against the input. Never below three quarters of tau: where
+/// the wrap bridges a gap narrower than alpha, d is large but the hulls there cover the gap
+/// anyway, and a smaller tau would multiply the parts (cow: 116 at tau / 2, against 36).
+DecomposeOptions optionsForWrap(const DecomposeOptions& o, const TriMesh& wrap, const TriMesh& input, double scale) {
+  DecomposeOptions w = o;
+  const double standOff = 1.1 * surfaceDistance(wrap, input).aToB * scale;
+  w.tau = std::max(0.75 * o.tau, o.tau - standOff);
+  w.epsilon = std::min(w.epsilon, w.tau);
+  w.delta = std::min(w.delta, w.tau);
+  return w;
+}
+
+void accumulateShell(Decomposition& into, Decomposition&& d) {
+  for (Component& c : d.components) into.components.push_back(std::move(c));
+  DecomposeStats& s = into.stats;
+  s.cuts += d.stats.cuts;
+  s.fallbackCuts += d.stats.fallbackCuts;
+  s.failedCuts += d.stats.failedCuts;
+  s.bridges += d.stats.bridges;
+  s.refinements += d.stats.refinements;
+  s.merges += d.stats.merges;
+  s.inputEdges += d.stats.inputEdges;
+  s.inputNotches += d.stats.inputNotches;
+  s.inputVolume += d.stats.inputVolume;
+  PhaseTimes& t = into.times;
+  t.prepare += d.times.prepare;
+  t.concavity += d.times.concavity;
+  t.grouping += d.times.grouping;
+  t.cutting += d.times.cutting;
+  t.merging += d.times.merging;
+  t.hulls += d.times.hulls;
+}
+
+}  // namespace
+
+Decomposition decomposeRepaired(const TriMesh& mesh, const DecomposeOptions& options) {
+  const auto start = Clock::now();
+  Decomposition result;
+  result.status = validate(options);
+  if (!result.status.ok()) return result;
+  const DecomposeOptions o = resolvedOptions(options);
+  result.options = o;
+
+  PreparedModel prepared = prepareModel(mesh, o);
+  result.repairs = prepared.repairs;
+  result.stats.holesFilled = prepared.holesFilled;
+  result.wrap = prepared.wrap;
+  result.repairSeconds = prepared.seconds - prepared.wrap.seconds;
+  result.status = prepared.status;
+  if (!result.status.ok()) return result;
+  result.normalization = minimumSphereNormalization(concatenate(prepared.shells));
+  const double scale = result.normalization.scale;
+
+  // Each shell on its own; the ones left above tau get one more chance, on their wrap.
+  std::vector<std::vector<Component>> byShell(prepared.shells.size());
+  std::vector<TriMesh> wrapInputs = prepared.wrappedInput;  // for the fidelity measure
+  std::vector<TriMesh> wraps;
+  for (std::size_t i = 0; i < prepared.shells.size(); ++i)
+    if (prepared.isWrap[i]) wraps.push_back(prepared.shells[i]);
+  int done = 0;
+  const TriMesh wrappedInput = concatenate(prepared.wrappedInput);
+  for (std::size_t i = 0; i < prepared.shells.size(); ++i) {
+    const DecomposeOptions shellOptions =
+        prepared.isWrap[i] ? optionsForWrap(o, prepared.shells[i], wrappedInput, scale) : o;
+    Decomposition d = decomposeShell(prepared.shells[i], static_cast<int>(i), shellOptions, scale, done);
+    if (!d.status.ok()) {
+      result.status = d.status;
+      result.components.clear();
+      return result;
+    }
+    const int unresolved = static_cast<int>(
+        std::count_if(d.components.begin(), d.components.end(), [](const Component& c) { return c.unresolved; }));
+    bool redone = false;
+    if (unresolved > 0 && o.wrap && !prepared.isWrap[i]) {
+      const bool crosses = countSelfIntersections(prepared.shells[i], 1) > 0;
+      const std::string reason = plural(unresolved, "component", "components") + " of shell " + std::to_string(i) +
+                                 " stayed above tau" + (crosses ? " (the surface passes through itself)" : "");
+      WrapShells w = wrapPieces({prepared.shells[i]}, o.tau, scale, o.invariant);
+      if (w.status.ok()) {
+        Decomposition redo;
+        redo.status = Status::success();
+        redo.components.clear();
+        for (const TriMesh& s : w.shells) {
+          Decomposition part = decomposeShell(s, static_cast<int>(i), optionsForWrap(o, s, prepared.shells[i], scale),
+                                              scale, done);
+          if (!part.status.ok()) {
+            redo.status = part.status;
+            break;
+          }
+          accumulateShell(redo, std::move(part));
+        }
+        if (redo.status.ok()) {
+          addWrapToReport(result.wrap, w, 1, reason);
+          result.repairs.push_back(reason + ": decomposed its wrap instead (alpha " + number(w.parameters.alpha) +
+                                   ", offset " + number(w.parameters.offset) + " normalised units, " +
+                                   plural(w.faces, "face", "faces") + ")");
+          wrapInputs.push_back(prepared.shells[i]);
+          for (const TriMesh& s : w.shells) wraps.push_back(s);
+          // The first attempt's statistics are kept (work done), its components replaced. The
+          // volume decomposed is the wrap's now, as for a shell wrapped up front: the components
+          // add up to it, not to the shell's.
+          d.components = std::move(redo.components);
+          d.stats.inputVolume = redo.stats.inputVolume;
+          d.stats.cuts += redo.stats.cuts;
+          d.times.concavity += redo.times.concavity;
+          d.times.cutting += redo.times.cutting;
+          d.times.grouping += redo.times.grouping;
+          redone = true;
+        }
+      }
+    }
+    for (Component& c : d.components) c.ofWrap = prepared.isWrap[i] || redone;
+    done += static_cast<int>(d.components.size());
+    accumulateShell(result, std::move(d));
+  }
+  if (result.wrap.used && !wraps.empty()) {
+    const auto t = Clock::now();
+    const SurfaceDistance d = surfaceDistance(concatenate(wraps), concatenate(wrapInputs));
+    result.wrap.hausdorff = d.hausdorff() * scale;
+    result.wrap.wrapToInput = d.aToB * scale;
+    result.wrap.inputToWrap = d.bToA * scale;
+    result.wrap.seconds += secondsSince(t);
+  }
+  result.times.prepare += prepared.seconds;
+  result.times.total = secondsSince(start);
+  return result;
+}
+
+}  // namespace acd

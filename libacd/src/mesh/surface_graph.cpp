@@ -1,0 +1,118 @@
+#include <acd/algo/surface_graph.hpp>
+
+#include <algorithm>
+#include <limits>
+#include <queue>
+
+namespace acd {
+
+SurfaceGraph::SurfaceGraph(const TriMesh& mesh) : mesh_(&mesh) {
+  const int nv = static_cast<int>(mesh.vertices.size());
+  const int nf = static_cast<int>(mesh.faces.size());
+  directedFace_.reserve(3 * nf * 2);
+  std::vector<std::pair<int, int>> directed;
+  directed.reserve(3 * nf * 2);
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = mesh.faces[f][k], b = mesh.faces[f][(k + 1) % 3];
+      directedFace_[(static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b)] = f;
+      directed.emplace_back(a, b);
+      directed.emplace_back(b, a);
+    }
+  std::sort(directed.begin(), directed.end());
+  directed.erase(std::unique(directed.begin(), directed.end()), directed.end());
+  start_.assign(nv + 1, 0);
+  for (const auto& [a, b] : directed) ++start_[a + 1];
+  for (int v = 0; v < nv; ++v) start_[v + 1] += start_[v];
+  neighbour_.resize(directed.size());
+  length_.resize(directed.size());
+  for (std::size_t i = 0; i < directed.size(); ++i) {
+    neighbour_[i] = directed[i].second;
+    length_[i] = (mesh.vertices[directed[i].first] - mesh.vertices[directed[i].second]).norm();
+  }
+  across_.assign(3 * nf, -1);
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) across_[3 * f + k] = faceLeftOf(mesh.faces[f][(k + 1) % 3], mesh.faces[f][k]);
+}
+
+int SurfaceGraph::faceLeftOf(int a, int b) const {
+  auto it = directedFace_.find((static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b));
+  return it == directedFace_.end() ? -1 : it->second;
+}
+
+PathFinder::PathFinder(const SurfaceGraph& graph)
+    : graph_(graph),
+      dist_(graph.vertexCount(), std::numeric_limits<double>::infinity()),
+      parent_(graph.vertexCount(), -1) {}
+
+std::vector<int> PathFinder::path(int s, int t, const EdgeWeight& weight, const std::vector<char>* allowed) {
+  const auto& P = graph_.mesh().vertices;
+  const bool astar = !weight;
+  auto heuristic = [&](int v) { return astar ? (P[v] - P[t]).norm() : 0.0; };
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open;
+  for (int v : touched_) {
+    dist_[v] = std::numeric_limits<double>::infinity();
+    parent_[v] = -1;
+  }
+  touched_.clear();
+  dist_[s] = 0.0;
+  touched_.push_back(s);
+  open.emplace(heuristic(s), s);
+  bool found = false;
+  while (!open.empty()) {
+    const auto [key, v] = open.top();
+    open.pop();
+    if (v == t) {
+      found = true;
+      break;
+    }
+    if (key - heuristic(v) > dist_[v] * (1 + 1e-12) + 1e-300) continue;  // stale entry
+    for (int slot = graph_.begin(v); slot < graph_.end(v); ++slot) {
+      const int w = graph_.neighbour(slot);
+      if (allowed && w != t && !(*allowed)[w]) continue;
+      const double d = dist_[v] + (astar ? graph_.length(slot) : weight(v, w, slot));
+      if (d < dist_[w]) {
+        if (dist_[w] == std::numeric_limits<double>::infinity()) touched_.push_back(w);
+        dist_[w] = d;
+        parent_[w] = v;
+        open.emplace(d + heuristic(w), w);
+      }
+    }
+  }
+  std::vector<int> result;
+  if (!found) return result;
+  for (int v = t; v != -1; v = parent_[v]) result.push_back(v);
+  std::reverse(result.begin(), result.end());
+  return result;
+}
+
+void PathFinder::flood(const std::vector<int>& sources, const EdgeWeight& weight, const std::vector<char>* allowed,
+                       std::vector<double>& distance, std::vector<int>& parent) const {
+  const int n = graph_.vertexCount();
+  distance.assign(n, std::numeric_limits<double>::infinity());
+  parent.assign(n, -1);
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open;
+  for (int s : sources) {
+    distance[s] = 0.0;
+    open.emplace(0.0, s);
+  }
+  while (!open.empty()) {
+    const auto [d, v] = open.top();
+    open.pop();
+    if (d > distance[v]) continue;
+    for (int slot = graph_.begin(v); slot < graph_.end(v); ++slot) {
+      const int w = graph_.neighbour(slot);
+      if (allowed && !(*allowed)[w]) continue;
+      const double nd = d + (weight ? weight(v, w, slot) : graph_.length(slot));
+      if (nd < distance[w]) {
+        distance[w] = nd;
+        parent[w] = v;
+        open.emplace(nd, w);
+      }
+    }
+  }
+}
+
+}  // namespace acd

@@ -1,0 +1,343 @@
+// Convex hull, bridge estimation (Appendix A, Algorithm 2) and concavity (Section 4.1, Observation 4.1).
+#include <acd/algo/concavity.hpp>
+#include <acd/algo/surface_graph.hpp>
+#include <acd/hull.hpp>
+#include <acd/io.hpp>
+#include <acd/normalize.hpp>
+#include <acd/shapes.hpp>
+
+#include <gtest/gtest.h>
+
+#include "helpers.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <random>
+#include <set>
+#include <string>
+
+using namespace acd;
+using acdtest::corpus;
+using acdtest::normalised;
+using acdtest::measure;
+
+namespace {
+
+std::vector<Vec3> randomPoints(int n, std::uint64_t seed, bool ball = false) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> uni(-1.0, 1.0);
+  std::vector<Vec3> p;
+  while (static_cast<int>(p.size()) < n) {
+    const Vec3 q(uni(rng), uni(rng), uni(rng));
+    if (!ball || q.norm() <= 1.0) p.push_back(q);
+  }
+  return p;
+}
+
+void expectConvexHullOf(const ConvexHull& hull, const std::vector<Vec3>& points) {
+  ASSERT_FALSE(hull.degenerate);
+  ASSERT_FALSE(hull.mesh.empty());
+  EXPECT_TRUE(isClosedOriented(hull.mesh));
+  EXPECT_GT(signedVolume(hull.mesh), 0.0);
+  ASSERT_EQ(hull.source.size(), hull.mesh.vertices.size());
+  for (std::size_t i = 0; i < hull.source.size(); ++i) {
+    ASSERT_GE(hull.source[i], 0);
+    ASSERT_LT(hull.source[i], static_cast<int>(points.size()));
+    EXPECT_EQ(hull.mesh.vertices[i], points[hull.source[i]]) << "hull vertex " << i;
+  }
+  for (int f = 0; f < static_cast<int>(hull.mesh.faces.size()); ++f) {
+    const Vec3 n = faceNormal(hull.mesh, f).normalized();
+    const double d = n.dot(hull.mesh.vertices[hull.mesh.faces[f][0]]);
+    double worst = -1e300;
+    for (const Vec3& p : points) worst = std::max(worst, n.dot(p) - d);
+    EXPECT_LE(worst, 1e-9) << "facet " << f;
+  }
+}
+
+}  // namespace
+
+// ------------------------------------------------------------------ hull
+
+TEST(Hull, RandomPointsInACube) {
+  for (std::uint64_t seed : {1u, 2u, 3u}) {
+    SCOPED_TRACE(seed);
+    const auto points = randomPoints(500, seed);
+    expectConvexHullOf(convexHull(points), points);
+  }
+}
+
+TEST(Hull, PointsOnASphereAreAllHullVertices) {
+  const TriMesh sphere = shapes::icosphere(Vec3(1, 2, 3), 2.0, 2);
+  const ConvexHull hull = convexHull(sphere.vertices);
+  expectConvexHullOf(hull, sphere.vertices);
+  EXPECT_EQ(hull.mesh.vertices.size(), sphere.vertices.size());
+  std::set<int> sources(hull.source.begin(), hull.source.end());
+  EXPECT_EQ(sources.size(), sphere.vertices.size());
+}
+
+TEST(Hull, InteriorPointsAreNotHullVertices) {
+  std::vector<Vec3> points = shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1)).vertices;
+  const auto inner = randomPoints(100, 9);
+  for (const Vec3& p : inner) points.push_back(Vec3(0.5, 0.5, 0.5) + 0.4 * p);
+  const ConvexHull hull = convexHull(points);
+  expectConvexHullOf(hull, points);
+  EXPECT_EQ(hull.mesh.vertices.size(), 8u);
+  for (int s : hull.source) EXPECT_LT(s, 8);
+  EXPECT_NEAR(signedVolume(hull.mesh), 1.0, 1e-14);
+}
+
+TEST(Hull, DuplicatePointsMapToTheFirstOccurrence) {
+  std::vector<Vec3> points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1),
+                              Vec3(1, 0, 0), Vec3(0, 0, 1), Vec3(0.1, 0.1, 0.1)};
+  const ConvexHull hull = convexHull(points);
+  expectConvexHullOf(hull, points);
+  EXPECT_EQ(hull.mesh.vertices.size(), 4u);
+  std::set<int> sources(hull.source.begin(), hull.source.end());
+  EXPECT_EQ(sources, std::set<int>({0, 1, 2, 3}));
+}
+
+TEST(Hull, GridPointsWithCollinearAndCoplanarPointsGiveNoDegenerateFacets) {
+  // Points on a 5x4x3 grid: many coplanar points per hull face and collinear points on its edges.
+  std::vector<Vec3> points;
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 4; ++j)
+      for (int k = 0; k < 3; ++k) points.emplace_back(0.5 * i, 0.25 * j + 0.1, 0.3 * k);
+  const ConvexHull hull = convexHull(points);
+  expectConvexHullOf(hull, points);
+  EXPECT_NEAR(signedVolume(hull.mesh), 2.0 * 0.75 * 0.6, 1e-12);
+  for (int f = 0; f < static_cast<int>(hull.mesh.faces.size()); ++f)
+    EXPECT_GT(0.5 * faceNormal(hull.mesh, f).norm(), 1e-6) << "zero-area hull facet " << f;
+}
+
+// DISABLED: fails with the current library (see the report). Points on a plane section, computed in
+// floating point, are coplanar only up to rounding; the exact hull then contains facets of area
+// ~1e-18 spanning nearly collinear points (edges 0.1-0.5 long), whose floating-point normals are
+// noise: input points lie up to ~2e-3 outside such facet planes. measureConcavity takes bridge
+// planes from these normals (camel at tau 0.05 ends with a component 0.073 deep in its hull that
+// was measured 0.024). Cut pieces always have such planar sections.
+TEST(Hull, DISABLED_PointsOfACutSectionGiveFacetPlanesThatBoundThePoints) {
+  // A sphere cut obliquely: the section's points are coplanar up to rounding.
+  const TriMesh sphere = shapes::icosphere(Vec3(0, 0, 0), 1.0, 3);
+  const Vec3 n(0.3, 0.2, 1.0);
+  std::vector<Vec3> points;
+  for (const Vec3& v : sphere.vertices)
+    if (n.dot(v) <= 0.2) points.push_back(v);
+  for (const Face& f : sphere.faces)
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 &a = sphere.vertices[f[k]], &b = sphere.vertices[f[(k + 1) % 3]];
+      const double da = n.dot(a) - 0.2, db = n.dot(b) - 0.2;
+      if (da < 0 && db > 0) points.push_back(a + da / (da - db) * (b - a));
+    }
+  const ConvexHull hull = convexHull(points);
+  expectConvexHullOf(hull, points);
+  int slivers = 0;
+  for (int f = 0; f < static_cast<int>(hull.mesh.faces.size()); ++f) slivers += faceNormal(hull.mesh, f).norm() < 1e-14;
+  EXPECT_EQ(slivers, 0) << "hull facets with area below 5e-15";
+}
+
+TEST(Hull, DegenerateInputs) {
+  EXPECT_TRUE(convexHull({}).degenerate);
+  EXPECT_TRUE(convexHull({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}).degenerate);
+  std::vector<Vec3> planar;
+  for (const Vec3& p : randomPoints(50, 4)) planar.emplace_back(p.x(), p.y(), 0.25);
+  const ConvexHull h = convexHull(planar);
+  EXPECT_TRUE(h.degenerate);
+  EXPECT_TRUE(h.mesh.empty());
+}
+
+// ------------------------------------------------------------------ Algorithm 2
+
+TEST(BridgeCount, BoxHullHasSixBridgesUntilEpsilonExceedsItsSide) {
+  const TriMesh box = shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1));
+  const TriMesh hull = hullMesh(box.vertices);
+  for (double eps : {1e-9, 0.01, 0.5, 0.999}) {
+    std::vector<int> seeds;
+    EXPECT_EQ(estimateBridgeCount(hull, eps, &seeds), 6) << eps;
+    EXPECT_EQ(seeds.size(), 6u);
+    std::set<std::pair<int, int>> normals;  // one seed per box side
+    for (int s : seeds) {
+      const Vec3 n = faceNormal(hull, s).normalized();
+      int axis = 0;
+      n.cwiseAbs().maxCoeff(&axis);
+      normals.insert({axis, n[axis] > 0 ? 1 : -1});
+    }
+    EXPECT_EQ(normals.size(), 6u) << eps;
+  }
+  // Every facet of a unit cube lies within 1 of every facet plane: one bridge covers it all.
+  EXPECT_EQ(estimateBridgeCount(hull, 1.01), 1);
+  // epsilon <= 0: nothing is within epsilon, one bridge per facet.
+  EXPECT_EQ(estimateBridgeCount(hull, 0.0), static_cast<int>(hull.faces.size()));
+}
+
+TEST(BridgeCount, FlatBoxSeedsLargestFacesFirst) {
+  const TriMesh box = shapes::box(Vec3(0, 0, 0), Vec3(4, 3, 0.5));
+  const TriMesh hull = hullMesh(box.vertices);
+  std::vector<int> seeds;
+  EXPECT_EQ(estimateBridgeCount(hull, 0.1, &seeds), 6);
+  ASSERT_FALSE(seeds.empty());
+  EXPECT_GT(std::abs(faceNormal(hull, seeds[0]).normalized().z()), 0.999);  // a 4x3 face
+  // Every facet lies within 0.5 of the big faces' planes: above that one bridge covers the box.
+  EXPECT_EQ(estimateBridgeCount(hull, 0.6), 1);
+}
+
+TEST(BridgeCount, MonotoneInEpsilonOnAnIcosphereHull) {
+  const TriMesh sphere = shapes::icosphere(Vec3(0, 0, 0), 1.0, 3);
+  const TriMesh hull = hullMesh(sphere.vertices);
+  int previous = std::numeric_limits<int>::max();
+  std::vector<int> counts;
+  for (double eps : {0.0, 1e-4, 1e-3, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.3, 0.5, 0.8, 1.0, 1.5, 2.5}) {
+    const int n = estimateBridgeCount(hull, eps);
+    counts.push_back(n);
+    EXPECT_LE(n, previous) << "epsilon " << eps;
+    EXPECT_GE(n, 1);
+    previous = n;
+  }
+  EXPECT_EQ(counts.front(), static_cast<int>(hull.faces.size()));
+  EXPECT_EQ(counts.back(), 1);  // every facet is within the diameter 2 of every tangent plane
+  EXPECT_LT(counts[6], counts[1] / 4);  // 0.05 clusters the 1280 facets substantially
+}
+
+// ------------------------------------------------------------------ concavity
+
+TEST(Concavity, ConvexInputsAreWithinEpsilonOfZero) {
+  const std::vector<std::pair<const char*, TriMesh>> cases = {
+      {"box", shapes::box(Vec3(-1, 0, 2), Vec3(3, 1, 2.5))},
+      {"icosphere", shapes::icosphere(Vec3(0.5, 0.5, 0.5), 3.0, 3)},
+      {"hull", hullMesh(randomPoints(300, 11, true))}};
+  for (const auto& [name, mesh] : cases) {
+    for (double eps : {0.1, 0.025, 0.01}) {
+      SCOPED_TRACE(std::string(name) + " eps " + std::to_string(eps));
+      const TriMesh m = normalised(mesh);
+      const ConcavityMap map = measure(m, eps);
+      EXPECT_LT(map.concavity, eps);
+      EXPECT_GE(map.concavity, 0.0);
+      for (double c : map.facetConcavity) EXPECT_LE(c, 1e-12);  // every vertex is on the hull
+    }
+  }
+}
+
+TEST(Concavity, UShapeNotchIsAtTheSlotBottomAndItsDepthIsTheSlotDepth) {
+  const TriMesh u = shapes::uShape();  // slot x in [1,2], y in [1,3]: 2 deep
+  const Normalization n = minimumSphereNormalization(u);
+  EXPECT_NEAR(n.scale, 2.0 / std::sqrt(19.0), 1e-9);  // sphere of the 3x3x1 box
+  const TriMesh m = applyNormalization(u, n);
+  const double depth = 2.0 * n.scale;
+  for (double eps : {0.1, 0.025, 0.01}) {
+    SCOPED_TRACE(eps);
+    const ConcavityMap map = measure(m, eps);
+    EXPECT_NEAR(map.concavity, depth, eps);
+    EXPECT_GE(map.concavity, depth - 1e-12);  // the estimate never undershoots the true depth here
+    ASSERT_GE(map.notch, 0);
+    const Vec3 notch = u.vertices[map.notch];
+    EXPECT_EQ(notch.y(), 1.0) << notch.transpose();
+    EXPECT_TRUE(notch.x() == 1.0 || notch.x() == 2.0) << notch.transpose();
+    EXPECT_EQ(map.vertexConcavity[map.notch], map.concavity);
+    // The notch's bridge closes the slot: its plane is y = 3 (normal +y in input coordinates).
+    const Bridge& b = map.bridges[map.vertexBridge[map.notch]];
+    EXPECT_GT(b.normal.y(), 1 - 1e-9);
+  }
+}
+
+// Vertices on the U's outer boundary lie on the convex hull (true concavity 0: the paper's pockets are
+// the boundary minus the hull boundary). The Dijkstra projection of the hull edge (3,3,0)-(0,3,0)
+// shortcuts over bottom-face diagonals, so bottom triangles of the arms border the y = 3 bridge's
+// pocket too; they must still not inherit its depth.
+TEST(Concavity, UShapeVerticesOnTheHullHaveConcavityBelowEpsilon) {
+  const TriMesh u = shapes::uShape();
+  const TriMesh m = normalised(u);
+  for (double eps : {0.1, 0.025, 0.01}) {
+    SCOPED_TRACE(eps);
+    const ConcavityMap map = measure(m, eps);
+    for (std::size_t v = 0; v < u.vertices.size(); ++v) {
+      const Vec3& p = u.vertices[v];
+      const bool inSlot = p.x() > 0.5 && p.x() < 2.5 && p.y() > 0.5;
+      if (!inSlot) EXPECT_LT(map.vertexConcavity[v], eps) << p.transpose();
+    }
+  }
+}
+
+TEST(Concavity, LShapeConcavityIsTheInnerCornerDistance) {
+  // The L's hull cuts the inner corner (1,1) by the plane x + y = 3; the corner is 1/sqrt(2) below it.
+  const TriMesh l = shapes::lShape();
+  const Normalization n = minimumSphereNormalization(l);
+  const TriMesh m = applyNormalization(l, n);
+  const double depth = n.scale / std::sqrt(2.0);
+  for (double eps : {0.1, 0.025, 0.01}) {
+    const ConcavityMap map = measure(m, eps);
+    EXPECT_NEAR(map.concavity, depth, eps) << eps;
+    ASSERT_GE(map.notch, 0);
+    EXPECT_EQ(l.vertices[map.notch].x(), 1.0);
+    EXPECT_EQ(l.vertices[map.notch].y(), 1.0);
+  }
+}
+
+TEST(Concavity, DumbbellNotchIsOnTheBar) {
+  const TriMesh m = normalised(shapes::dumbbell());
+  const ConcavityMap map = measure(m, 0.025);
+  ASSERT_GE(map.notch, 0);
+  // Balls of radius 1 at z = +-2, normalised by 1/3: the bar (radius 0.15/3) lies 0.95/3 below the
+  // tangent plane x = 1/3 of the hull's cylindrical part.
+  EXPECT_NEAR(map.concavity, 0.85 / 3.0, 0.025);
+  const Vec3 notch = m.vertices[map.notch];
+  EXPECT_LE(std::abs(notch.z()), 1.0 / 3.0 + 1e-12) << notch.transpose();       // on the bar, ends included
+  EXPECT_NEAR(std::hypot(notch.x(), notch.y()), 0.15 / 3.0, 1e-9) << notch.transpose();
+}
+
+// Observation 4.1: the bridge-patch estimate exceeds the per-facet concavity by less than epsilon.
+class Observation41 : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Observation41, VertexConcavityIsWithinEpsilonOfFacetConcavity) {
+  const std::string name = GetParam();
+  TriMesh mesh;
+  if (name == "dumbbell") mesh = shapes::dumbbell();
+  else if (name == "U") mesh = shapes::uShape();
+  else if (name == "torus") mesh = shapes::torus(2.0, 0.5, 64, 32);
+  else {
+    const std::string path = corpus(name);
+    if (!std::ifstream(path)) GTEST_SKIP() << path << " not present";
+    ReadResult r = readMesh(path);
+    ASSERT_TRUE(r.status.ok()) << r.status.message;
+    mesh = std::move(r.mesh);
+  }
+  ASSERT_TRUE(isClosedOriented(mesh));
+  const TriMesh m = normalised(mesh);
+  SurfaceGraph graph(m);
+  for (double eps : {0.1, 0.025, 0.01}) {
+    SCOPED_TRACE("epsilon " + std::to_string(eps));
+    ConcavityOptions o;
+    o.epsilon = eps;
+    const ConcavityMap map = measureConcavity(m, graph, o);
+    ASSERT_EQ(map.vertexConcavity.size(), m.vertices.size());
+    ASSERT_EQ(map.facetConcavity.size(), m.vertices.size());
+    int below = 0, beyond = 0, worst = -1;
+    double worstGap = 0;
+    for (std::size_t v = 0; v < m.vertices.size(); ++v) {
+      const double gap = map.vertexConcavity[v] - map.facetConcavity[v];
+      below += gap < -1e-12;
+      beyond += gap >= eps;
+      if (gap > worstGap) worstGap = gap, worst = static_cast<int>(v);
+    }
+    RecordProperty("worst_gap_eps_" + std::to_string(eps), std::to_string(worstGap));
+    EXPECT_EQ(below, 0) << "vertices whose estimate is below their facet concavity";
+    EXPECT_EQ(beyond, 0) << "vertices with estimate - facet >= epsilon; worst gap " << worstGap << " at vertex "
+                         << worst << " (bridges " << map.bridges.size() << ", refinements " << map.refinements << ")";
+    EXPECT_GE(map.concavity, 0.0);
+    EXPECT_EQ(map.concavity, *std::max_element(map.vertexConcavity.begin(), map.vertexConcavity.end()));
+  }
+  // epsilon <= 0: one bridge per hull facet, so the estimate is the facet concavity itself.
+  const ConcavityMap exact = measure(m, 0.0);
+  EXPECT_EQ(exact.bridges.size(), exact.hull.mesh.faces.size());
+  int differ = 0;
+  for (std::size_t v = 0; v < m.vertices.size(); ++v) differ += exact.vertexConcavity[v] != exact.facetConcavity[v];
+  EXPECT_EQ(differ, 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Shapes, Observation41, ::testing::Values("dumbbell", "U", "torus"),
+                         [](const auto& info) { return info.param; });
+
+// DISABLED: fails with the current library. measureConcavity gives up refining after 16 patch
+// splits, leaving vertices whose estimate exceeds the per-facet concavity by epsilon or more:
+// elephant (eps 0.025: 5 vertices, worst gap 0.0280; eps 0.01: 56 vertices, worst 0.0152) and
+// armadillo (eps 0.025: 219 vertices, worst 0.0363; eps 0.01: 2059 vertices, worst 0.0232).
+INSTANTIATE_TEST_SUITE_P(Corpus, Observation41, ::testing::Values("elephant", "armadillo"),
+                         [](const auto& info) { return info.param; });

@@ -1,0 +1,72 @@
+// How far a hull stands off its mesh, against shapes whose answer is known in closed form.
+#include <acd/algo/hull_excess.hpp>
+#include <acd/hull.hpp>
+#include <acd/shapes.hpp>
+
+#include "helpers.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace {
+
+using acd::TriMesh;
+using acd::Vec3;
+
+TEST(HullExcess, ConvexMeshHasNone) {
+  const TriMesh box = acd::shapes::box(Vec3(0, 0, 0), Vec3(1, 2, 3));
+  const acd::HullExcess e = acd::measureHullExcess(box, acd::hullMesh(box.vertices), 0.01, 0.005);
+  EXPECT_FALSE(e.exceeds);
+  EXPECT_LT(e.distance, 1e-12);
+  EXPECT_LE(e.bound, 0.01 + 1e-12);
+}
+
+// Below the limit the search only proves "within the limit"; the excess itself is bracketed by
+// one limit just under it (a point beyond is found) and one just over it (none can be).
+void expectExcessBetween(const TriMesh& mesh, double lo, double hi) {
+  const TriMesh hull = acd::hullMesh(mesh.vertices);
+  const acd::HullExcess below = acd::measureHullExcess(mesh, hull, lo, 0.001);
+  EXPECT_TRUE(below.exceeds);
+  EXPECT_GT(below.distance, lo);
+  EXPECT_LE(below.distance, hi);
+  const acd::HullExcess above = acd::measureHullExcess(mesh, hull, hi, 0.001);
+  EXPECT_FALSE(above.exceeds);
+  EXPECT_LE(above.distance, hi);
+  EXPECT_LE(above.bound, hi + 1e-12);
+}
+
+TEST(HullExcess, LShapeStandsOffByHalfACell) {
+  // Cells (0,0), (1,0), (0,1): the hull covers the notch x, y in [1, 2], x + y <= 3; its point
+  // (1.5, 1.5) on the face across the notch is 0.5 from the faces y = 1 and x = 1, and no hull
+  // point is farther from the L.
+  const TriMesh l = acd::shapes::lShape();
+  expectExcessBetween(l, 0.49, 0.51);
+  // The reported points: over the notch, and its nearest surface point, checked with the tests'
+  // own distance code.
+  const acd::HullExcess e = acd::measureHullExcess(l, acd::hullMesh(l.vertices), 0.45, 0.001);
+  ASSERT_TRUE(e.exceeds);
+  EXPECT_GE(e.hullPoint.x(), 1.0);
+  EXPECT_GE(e.hullPoint.y(), 1.0);
+  EXPECT_LE(e.hullPoint.x() + e.hullPoint.y(), 3.0 + 1e-9);
+  acdtest::MeshIndex index(l);
+  EXPECT_NEAR(index.distance(e.hullPoint), e.distance, 1e-9);
+  EXPECT_NEAR((e.hullPoint - e.surfacePoint).norm(), e.distance, 1e-12);
+}
+
+TEST(HullExcess, UShapeSlotIsAsDeepAsItIsWide) {
+  // The slot (x in [1, 2], y in [1, 3]) is 1 wide and 2 deep. Every hull point over it (the lid
+  // y = 3 and the slot's parts of the faces z = 0 and z = 1) is at most 0.5 from a wall x = 1 or
+  // x = 2, and the points on the slot's middle plane x = 1.5 are exactly 0.5 from both.
+  expectExcessBetween(acd::shapes::uShape(), 0.49, 0.51);
+}
+
+TEST(HullExcess, StopsAtTheFirstPointBeyondTheLimit) {
+  const TriMesh u = acd::shapes::uShape();
+  const acd::HullExcess e = acd::measureHullExcess(u, acd::hullMesh(u.vertices), 0.1, 0.01);
+  EXPECT_TRUE(e.exceeds);
+  EXPECT_GT(e.distance, 0.1);
+  EXPECT_LE(e.distance, 0.5 + 1e-9);
+}
+
+}  // namespace
