@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Plots of `acd table --json FILE` (the analogues of the paper's Figures 18-19 and Table 1).
+"""Plots of `acd-table --json FILE` (the analogues of the paper's Figures 18-19 and Table 1).
 
 usage: /usr/bin/python3 scripts/plot_table.py TABLE.json [--out docs/images]
 
@@ -100,7 +100,7 @@ def plot_table(table, path):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("table", help="JSON written by `acd table --json`")
+    parser.add_argument("table", help="JSON written by `acd-table --json`")
     parser.add_argument("--out", default="docs/images", help="folder of the PNG files")
     a = parser.parse_args()
     with open(a.table) as f:

@@ -4,7 +4,6 @@
 //   acd evaluate MODEL HULLS.obj                how well any set of hulls approximates the model
 //   acd decompose MODEL --surface [-t TAU] -o OUT surface ACD: patches.obj, hulls.obj, report.json (surface.cpp)
 //   acd decompose MODEL --exact [--surface]     exact convex decomposition (exact.cpp)
-//   acd table [--models ...]                    the paper's Table 1 and Figures 18-19 (table.cpp)
 //   acd batch INPUT... -o OUT                   many meshes in capped workers, cached (batch.cpp)
 //   acd report OUT                              index.html over a batch, with a 3D view (report.cpp)
 // Exit codes are listed in exitCodes() and in --help.
@@ -25,7 +24,6 @@
 #include "scene_reader.hpp"
 #include "simulator.hpp"
 #include "surface.hpp"
-#include "table.hpp"
 #include <nlohmann/json.hpp>
 
 #include <unistd.h>
@@ -351,7 +349,6 @@ int main(int argc, char** argv) {
                 "stay open. With --exact: convex surface patches");
   // Keep after every other decompose option: --exact adds --surface if no one else has.
   acdcli::addExactOptions(*dec);
-  CLI::App* table = acdcli::addTableCommand(app);
   CLI::App* batch = acdcli::addBatchCommand(app, *dec);  // after every decompose option: it takes them all
   CLI::App* report = acdcli::addReportCommand(app);
 
@@ -389,7 +386,6 @@ int main(int argc, char** argv) {
       return acdcli::runSurfaceDecompose(sa);
     }
     if (*dec) return runDecompose(da);
-    if (*table) return acdcli::runTable();
     if (*batch) return acdcli::runBatch();
     if (*report) return acdcli::runReport();
     if (*info) return runInfo(infoModel);

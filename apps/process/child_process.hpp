@@ -1,6 +1,6 @@
 // Running a job in a child process under a wall-clock cap and a memory cap, and telling how it
 // ended: exit code, signal, time cap or memory cap, with its wall time and peak memory.
-// The one home for process isolation in the applications (acd batch, acd table, tetmesh).
+// The one home for process isolation in the applications (acd batch, acd-table, tetmesh).
 #pragma once
 
 #include <cstdint>

@@ -253,6 +253,40 @@ std::string seconds(double s) {
   return b;
 }
 
+/// Reads the worker's messages until it is done (or dies), the time limit passes (`timedOut`)
+/// or a message does not parse (`malformed`), reporting progress on the way.
+template <class Elapsed>
+void followWorker(int fd, const ExactOptions& options, const Elapsed& elapsed, std::size_t solids, WorkerState& st,
+                  bool& timedOut, bool& malformed) {
+  Reader in;
+  std::vector<char> chunk(1 << 16);
+  for (;;) {
+    int wait = -1;
+    if (options.timeLimitSeconds > 0) {
+      const double left = options.timeLimitSeconds - elapsed();
+      if (left <= 0) {
+        timedOut = true;
+        break;
+      }
+      wait = static_cast<int>(left * 1000.0) + 1;
+    }
+    if (options.progress) wait = wait < 0 ? 1000 : std::min(wait, 1000);
+    pollfd p{fd, POLLIN, 0};
+    const int r = ::poll(&p, 1, wait);
+    if (options.progress) options.progress(where(st, solids), elapsed());
+    if (r < 0 && errno == EINTR) continue;
+    if (r == 0) continue;  // the deadline is checked at the top
+    const ssize_t n = ::read(fd, chunk.data(), chunk.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;  // worker finished (or died)
+    in.append(chunk.data(), static_cast<std::size_t>(n));
+    if (!parse(in, st)) {
+      malformed = true;
+      break;
+    }
+  }
+}
+
 }  // namespace
 
 ExactDecomposition exactSolidDecomposition(const TriMesh& closedMesh, const ExactOptions& options) {
@@ -310,35 +344,9 @@ ExactDecomposition exactSolidDecomposition(const TriMesh& closedMesh, const Exac
   }
   ::close(fds[1]);
 
-  Reader in;
   WorkerState st;
   bool timedOut = false, malformed = false;
-  std::vector<char> chunk(1 << 16);
-  for (;;) {
-    int wait = -1;
-    if (options.timeLimitSeconds > 0) {
-      const double left = options.timeLimitSeconds - elapsed();
-      if (left <= 0) {
-        timedOut = true;
-        break;
-      }
-      wait = static_cast<int>(left * 1000.0) + 1;
-    }
-    if (options.progress) wait = wait < 0 ? 1000 : std::min(wait, 1000);
-    pollfd p{fds[0], POLLIN, 0};
-    const int r = ::poll(&p, 1, wait);
-    if (options.progress) options.progress(where(st, out.solids), elapsed());
-    if (r < 0 && errno == EINTR) continue;
-    if (r == 0) continue;  // the deadline is checked at the top
-    const ssize_t n = ::read(fds[0], chunk.data(), chunk.size());
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;  // worker finished (or died)
-    in.append(chunk.data(), static_cast<std::size_t>(n));
-    if (!parse(in, st)) {
-      malformed = true;
-      break;
-    }
-  }
+  followWorker(fds[0], options, elapsed, out.solids, st, timedOut, malformed);
   if (timedOut || malformed) ::kill(pid, SIGKILL);
   ::close(fds[0]);
   int wstatus = 0;

@@ -154,6 +154,123 @@ TriMesh toInput(const Piece& piece, const CanonicalInverse& inverse) {
 /// hulls it replaces (elephant at tau 0.05: 0.03 keeps IoU at the level without merging).
 constexpr double kMergeHullGrowth = 0.03;
 
+/// The planes that compete to cut a piece at its notch: the global cuts of feature grouping
+/// (Section 4.2) first, then the bisector and a fan of planes through the notch that contain the
+/// bridge normal. After stalls the fan widens; the lookahead in processPiece picks among them.
+std::vector<Plane> candidatePlanes(const Piece& piece, const SurfaceGraph& graph, const ConcavityMap& map,
+                                   const DecomposeOptions& o, int notchIndex, const Vec3& bridgeNormal, int stalls,
+                                   bool fromExcess, double& groupingSeconds) {
+  const Vec3& notch = piece.mesh.vertices[notchIndex];
+  std::vector<Plane> candidates;
+  if (o.featureGrouping && stalls == 0 && !fromExcess) {
+    const auto t = Clock::now();
+    // The paper's global cut: the minimum-weight cycle of the knot graph G_K through the root
+    // pocket cut (Section 4.2.4). Four greedily grown cuts compete with it (they also reach
+    // pockets without knots, where G_K has no edges): legs restricted to matched knots or free
+    // to take the cheapest knot, with a notch on a boundary taken as an end of the root cut or
+    // not. The lookahead (cutByLookahead) keeps whichever plane serves better.
+    {
+      const KnotGraph kg = buildKnotGraph(piece.mesh, graph, map, o.delta);
+      const GlobalCut cycle = knotGraphCycle(piece.mesh, map, kg);
+      if (cycle.vertices.size() >= 3)
+        candidates.push_back(Plane::through(notch, fitCutPlane(piece.mesh, cycle, bridgeNormal, 0.5 * o.tau).normal));
+    }
+    for (int variant = 0; variant < 4; ++variant) {
+      const bool matchKnots = variant < 2;
+      FeatureOptions fo;
+      fo.delta = o.delta;
+      fo.matchKnots = matchKnots;
+      fo.notchAsEnd = variant % 2 == 0;
+      const GlobalCut cut = findGlobalCut(piece.mesh, graph, map, fo);
+      if (cut.vertices.size() < 2) continue;
+      const Plane plane = fitCutPlane(piece.mesh, cut, bridgeNormal, 0.5 * o.tau);
+      // A plane (nearly) parallel to the bridge only skims the pocket: the cup-shaped case of
+      // Figure 13. Split the cup through its deepest point instead, across its longest extent.
+      if (variant == 0 && (cut.cupShaped || std::abs(plane.normal.normalized().dot(bridgeNormal)) > 0.9))
+        candidates.push_back(splitCupPlane(piece.mesh, map, map.notch));
+      // The plane must resolve the notch it was grown from: it passes through it. (A plane a hair
+      // away from the notch would only shave off a sliver and leave the notch as it was.)
+      candidates.push_back(Plane::through(notch, plane.normal));
+    }
+    groupingSeconds += secondsSince(t);
+  }
+  if (stalls <= 1) candidates.push_back(bisectorPlane(piece.mesh, graph, notchIndex, bridgeNormal));
+  // Planes through the notch that contain the bridge normal split the pocket between the bridge's
+  // ends (two orthogonal ones; a different pair after each stall).
+  // (unitOrthogonal follows the frame's axes: the canonical frame's, so the fan is the shape's.)
+  const Vec3 u = bridgeNormal.unitOrthogonal(), w = bridgeNormal.cross(u);
+  const double pi = std::acos(-1.0);
+  // After repeated stalls, a wider fan (and the plane parallel to the bridge) compete by lookahead.
+  const int fan = stalls >= 2 || fromExcess ? 8 : 2;
+  if (stalls >= 2) candidates.push_back(Plane::through(notch, bridgeNormal));
+  for (int k = 0; k < fan; ++k) {
+    const double angle = pi * k / fan + 0.25 * pi * (stalls % 2);  // a different set on each stall
+    candidates.push_back(Plane::through(notch, std::cos(angle) * u + std::sin(angle) * w));
+  }
+  return candidates;
+}
+
+/// The paper's baseline: the first plane that cuts cleanly.
+void cutByFirstPlane(const Piece& piece, const std::vector<Plane>& candidates, const Vec3& notch, double concavity,
+                     int stalls, const DecomposeOptions& o, Outcome& out) {
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (tryCut(piece, candidates[i], notch, concavity, stalls, out.children)) {
+      out.final = false;
+      ++out.stats.cuts;
+      if (o.featureGrouping && (i > 0 || stalls > 0)) ++out.stats.fallbackCuts;
+      break;
+    }
+    ++out.stats.failedCuts;
+  }
+}
+
+/// One step of lookahead: cut with every candidate and keep the plane whose children are best
+/// approximated by their hulls (least hull volume beyond the children's own volume). After a
+/// stall the notch itself is the problem: keep the plane whose children are least concave.
+/// Candidates are cut and scored in parallel into their own slots; the best is picked in order.
+void cutByLookahead(const Piece& piece, const std::vector<Plane>& candidates, const Vec3& notch, double concavity,
+                    int stalls, bool fromExcess, const ConcavityOptions& co, const DecomposeOptions& o, Outcome& out) {
+  std::vector<std::vector<Piece>> children(candidates.size());
+  std::vector<char> cutOk(candidates.size(), 0);
+  std::vector<double> score(candidates.size(), 0.0);
+  std::vector<int> exceeding(candidates.size(), 0);
+  tbb::parallel_for(std::size_t(0), candidates.size(), [&](std::size_t i) {
+    cutOk[i] = tryCut(piece, candidates[i], notch, concavity, stalls, children[i]);
+    if (!cutOk[i]) return;
+    for (const Piece& child : children[i]) {
+      if (stalls > 0) {
+        SurfaceGraph childGraph(child.mesh);
+        score[i] = std::max(score[i], measureConcavity(child.mesh, childGraph, co).concavity);
+      } else {
+        const TriMesh hull = convexHull(child.mesh.vertices).mesh;
+        score[i] += signedVolume(hull) - signedVolume(child.mesh);
+        // A cut for a hull standing off its piece is judged first by how many children still do.
+        if (fromExcess)
+          exceeding[i] += measureHullExcess(child.mesh, hull, kExcessLimit * o.tau, kExcessResolution * o.tau).exceeds;
+      }
+    }
+  });
+  double bestScore = std::numeric_limits<double>::infinity();
+  std::size_t bestIndex = 0;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (!cutOk[i]) {
+      ++out.stats.failedCuts;
+      continue;
+    }
+    if (out.final || exceeding[i] < exceeding[bestIndex] ||
+        (exceeding[i] == exceeding[bestIndex] && score[i] < bestScore)) {
+      bestScore = score[i];
+      bestIndex = i;
+      out.final = false;
+    }
+  }
+  if (!out.final) out.children = std::move(children[bestIndex]);
+  if (!out.final) {
+    ++out.stats.cuts;
+    if (bestIndex > 0 || stalls > 0) ++out.stats.fallbackCuts;
+  }
+}
+
 Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
   Outcome out;
   auto t = Clock::now();
@@ -206,116 +323,107 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
     c.note = "nine cuts in a row left the notch's concavity unchanged";
     return out;
   }
-  std::vector<Plane> candidates;
-  if (o.featureGrouping && stalls == 0 && !fromExcess) {
-    t = Clock::now();
-    // The paper's global cut: the minimum-weight cycle of the knot graph G_K through the root
-    // pocket cut (Section 4.2.4). Four greedily grown cuts compete with it (they also reach
-    // pockets without knots, where G_K has no edges): legs restricted to matched knots or free
-    // to take the cheapest knot, with a notch on a boundary taken as an end of the root cut or
-    // not. The lookahead below keeps whichever plane serves better.
-    {
-      const KnotGraph kg = buildKnotGraph(piece.mesh, graph, map, o.delta);
-      const GlobalCut cycle = knotGraphCycle(piece.mesh, map, kg);
-      if (cycle.vertices.size() >= 3)
-        candidates.push_back(Plane::through(notch, fitCutPlane(piece.mesh, cycle, bridgeNormal, 0.5 * o.tau).normal));
-    }
-    for (int variant = 0; variant < 4; ++variant) {
-      const bool matchKnots = variant < 2;
-      FeatureOptions fo;
-      fo.delta = o.delta;
-      fo.matchKnots = matchKnots;
-      fo.notchAsEnd = variant % 2 == 0;
-      const GlobalCut cut = findGlobalCut(piece.mesh, graph, map, fo);
-      if (cut.vertices.size() < 2) continue;
-      const Plane plane = fitCutPlane(piece.mesh, cut, bridgeNormal, 0.5 * o.tau);
-      // A plane (nearly) parallel to the bridge only skims the pocket: the cup-shaped case of
-      // Figure 13. Split the cup through its deepest point instead, across its longest extent.
-      if (variant == 0 && (cut.cupShaped || std::abs(plane.normal.normalized().dot(bridgeNormal)) > 0.9))
-        candidates.push_back(splitCupPlane(piece.mesh, map, map.notch));
-      // The plane must resolve the notch it was grown from: it passes through it. (A plane a hair
-      // away from the notch would only shave off a sliver and leave the notch as it was.)
-      candidates.push_back(Plane::through(notch, plane.normal));
-    }
-    out.times.grouping += secondsSince(t);
-  }
-  if (stalls <= 1) candidates.push_back(bisectorPlane(piece.mesh, graph, notchIndex, bridgeNormal));
-  // Planes through the notch that contain the bridge normal split the pocket between the bridge's
-  // ends (two orthogonal ones; a different pair after each stall).
-  // (unitOrthogonal follows the frame's axes: the canonical frame's, so the fan is the shape's.)
-  const Vec3 u = bridgeNormal.unitOrthogonal(), w = bridgeNormal.cross(u);
-  const double pi = std::acos(-1.0);
-  // After repeated stalls, a wider fan (and the plane parallel to the bridge) compete by lookahead.
-  const int fan = stalls >= 2 || fromExcess ? 8 : 2;
-  if (stalls >= 2) candidates.push_back(Plane::through(notch, bridgeNormal));
-  for (int k = 0; k < fan; ++k) {
-    const double angle = pi * k / fan + 0.25 * pi * (stalls % 2);  // a different set on each stall
-    candidates.push_back(Plane::through(notch, std::cos(angle) * u + std::sin(angle) * w));
-  }
-
+  const std::vector<Plane> candidates =
+      candidatePlanes(piece, graph, map, o, notchIndex, bridgeNormal, stalls, fromExcess, out.times.grouping);
   t = Clock::now();
-  if ((!o.featureGrouping && stalls == 0) || candidates.size() == 1) {
-    // The paper's baseline: the first plane that cuts cleanly.
-    for (std::size_t i = 0; i < candidates.size(); ++i) {
-      if (tryCut(piece, candidates[i], notch, concavity, stalls, out.children)) {
-        out.final = false;
-        ++out.stats.cuts;
-        if (o.featureGrouping && (i > 0 || stalls > 0)) ++out.stats.fallbackCuts;
-        break;
-      }
-      ++out.stats.failedCuts;
-    }
-  } else {
-    // One step of lookahead: cut with every candidate and keep the plane whose children are best
-    // approximated by their hulls (least hull volume beyond the children's own volume). After a
-    // stall the notch itself is the problem: keep the plane whose children are least concave.
-    // Candidates are cut and scored in parallel into their own slots; the best is picked in order.
-    std::vector<std::vector<Piece>> children(candidates.size());
-    std::vector<char> cutOk(candidates.size(), 0);
-    std::vector<double> score(candidates.size(), 0.0);
-    std::vector<int> exceeding(candidates.size(), 0);
-    tbb::parallel_for(std::size_t(0), candidates.size(), [&](std::size_t i) {
-      cutOk[i] = tryCut(piece, candidates[i], notch, concavity, stalls, children[i]);
-      if (!cutOk[i]) return;
-      for (const Piece& child : children[i]) {
-        if (stalls > 0) {
-          SurfaceGraph childGraph(child.mesh);
-          score[i] = std::max(score[i], measureConcavity(child.mesh, childGraph, co).concavity);
-        } else {
-          const TriMesh hull = convexHull(child.mesh.vertices).mesh;
-          score[i] += signedVolume(hull) - signedVolume(child.mesh);
-          // A cut for a hull standing off its piece is judged first by how many children still do.
-          if (fromExcess)
-            exceeding[i] += measureHullExcess(child.mesh, hull, kExcessLimit * o.tau, kExcessResolution * o.tau).exceeds;
-        }
-      }
-    });
-    double bestScore = std::numeric_limits<double>::infinity();
-    std::size_t bestIndex = 0;
-    for (std::size_t i = 0; i < candidates.size(); ++i) {
-      if (!cutOk[i]) {
-        ++out.stats.failedCuts;
-        continue;
-      }
-      if (out.final || exceeding[i] < exceeding[bestIndex] ||
-          (exceeding[i] == exceeding[bestIndex] && score[i] < bestScore)) {
-        bestScore = score[i];
-        bestIndex = i;
-        out.final = false;
-      }
-    }
-    if (!out.final) out.children = std::move(children[bestIndex]);
-    if (!out.final) {
-      ++out.stats.cuts;
-      if (bestIndex > 0 || stalls > 0) ++out.stats.fallbackCuts;
-    }
-  }
+  if ((!o.featureGrouping && stalls == 0) || candidates.size() == 1)
+    cutByFirstPlane(piece, candidates, notch, concavity, stalls, o, out);
+  else
+    cutByLookahead(piece, candidates, notch, concavity, stalls, fromExcess, co, o, out);
   out.times.cutting += secondsSince(t);
   if (out.final) {
     c.unresolved = true;
     c.note = "no plane through the notch gives a clean section (crossing section loops: the input self-intersects there)";
   }
   return out;
+}
+
+/// The prepared components as the first round's pieces, in normalised units; with `invariant` in
+/// the shape's own frame and in canonical order, so that the result does not depend on the
+/// input's pose or on the order of its vertices, faces and pieces. `inverse` learns the way back.
+std::vector<Piece> firstPieces(const std::vector<TriMesh>& components, bool invariant, Decomposition& result,
+                               CanonicalInverse& inverse) {
+  std::vector<CanonicalMesh> canonical;
+  for (const TriMesh& c : components) {
+    if (invariant) {
+      canonical.push_back(canonicalMesh(c, result.normalization));
+    } else {
+      std::vector<int> same(c.vertices.size());
+      std::iota(same.begin(), same.end(), 0);
+      canonical.push_back({applyNormalization(c, result.normalization), std::move(same)});
+    }
+    inverse.add(canonical.back(), c);  // input vertices come back exactly
+  }
+  std::vector<int> order(canonical.size());
+  std::iota(order.begin(), order.end(), 0);
+  if (invariant)
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return canonicalLess(canonical[a].mesh, canonical[b].mesh); });
+  std::vector<Piece> pending;
+  for (int i : order) {
+    Piece p{std::move(canonical[i].mesh), 0, i};
+    result.stats.inputEdges += static_cast<int>(p.mesh.faces.size() * 3 / 2);
+    result.stats.inputNotches += countNotches(p.mesh);
+    result.stats.inputVolume += signedVolume(applyNormalization(components[i], result.normalization));
+    pending.push_back(std::move(p));
+  }
+  return pending;
+}
+
+/// Merge pass: the greedy recursion sometimes cuts where a coarser split would have done. Glue
+/// neighbours back along their shared cut faces while the union stays within tau, largest contact
+/// first. Sequential and in a fixed order, so the result does not depend on the thread count.
+void mergePieces(std::vector<Piece>& finals, std::vector<Component>& finalInfo, const DecomposeOptions& o,
+                 DecomposeStats& stats) {
+  ConcavityOptions co;
+  co.epsilon = o.epsilon;
+  std::vector<char> alive(finals.size(), 1);
+  for (bool merged = true; merged;) {
+    merged = false;
+    std::vector<TriMesh> meshes;
+    std::vector<int> id;
+    for (std::size_t i = 0; i < finals.size(); ++i)
+      if (alive[i] && !finalInfo[i].unresolved) meshes.push_back(finals[i].mesh), id.push_back(static_cast<int>(i));
+    // Every candidate union is measured in parallel; then, in order, a union is taken if neither
+    // side has changed in this round. Pairs that touch a changed piece are looked at again next round.
+    const std::vector<SharedFaces> pairs = sharedFacePairs(meshes);
+    std::vector<TriMesh> glued(pairs.size());
+    std::vector<double> concavity(pairs.size(), std::numeric_limits<double>::infinity());
+    tbb::parallel_for(std::size_t(0), pairs.size(), [&](std::size_t k) {
+      const int i = id[pairs[k].a], j = id[pairs[k].b];
+      if (!glueAlongSharedFaces(finals[i].mesh, finals[j].mesh, glued[k])) return;
+      // The union's hull may not swell much beyond the two hulls: a merge must not cost fidelity.
+      const TriMesh hull = convexHull(glued[k].vertices).mesh;
+      auto excess = [](const TriMesh& m) { return signedVolume(convexHull(m.vertices).mesh) - signedVolume(m); };
+      const double growth = signedVolume(hull) - signedVolume(glued[k]) - excess(finals[i].mesh) - excess(finals[j].mesh);
+      if (growth > kMergeHullGrowth * signedVolume(glued[k])) return;
+      SurfaceGraph graph(glued[k]);
+      const double measured = measureConcavity(glued[k], graph, co).concavity;
+      if (measured > o.tau) return;
+      // A union is held to the same promise as a final piece: its hull within tau of it.
+      const HullExcess e = measureHullExcess(glued[k], hull, kExcessLimit * o.tau, kExcessResolution * o.tau);
+      if (!e.exceeds) concavity[k] = std::max(measured, e.distance);
+    });
+    std::vector<char> changed(finals.size(), 0);
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+      const int i = id[pairs[k].a], j = id[pairs[k].b];
+      if (concavity[k] > o.tau || changed[i] || changed[j]) continue;
+      finals[i].mesh = std::move(glued[k]);
+      finals[i].cuts.insert(finals[i].cuts.end(), finals[j].cuts.begin(), finals[j].cuts.end());
+      finalInfo[i].concavity = concavity[k];
+      finalInfo[i].depth = std::min(finalInfo[i].depth, finalInfo[j].depth);
+      alive[j] = 0;
+      changed[i] = changed[j] = 1;
+      ++stats.merges;
+      merged = true;
+    }
+  }
+  std::vector<Piece> keptPieces;
+  std::vector<Component> keptInfo;
+  for (std::size_t i = 0; i < finals.size(); ++i)
+    if (alive[i]) keptPieces.push_back(std::move(finals[i])), keptInfo.push_back(finalInfo[i]);
+  finals = std::move(keptPieces);
+  finalInfo = std::move(keptInfo);
 }
 
 void accumulate(PhaseTimes& into, const PhaseTimes& t) {
@@ -395,30 +503,7 @@ Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options) {
   result.normalization = o.invariant ? canonicalFrame(prepared.components)
                                      : minimumSphereNormalization(concatenate(prepared.components));
   CanonicalInverse inverse(result.normalization);
-  std::vector<CanonicalMesh> canonical;
-  for (const TriMesh& c : prepared.components) {
-    if (o.invariant) {
-      canonical.push_back(canonicalMesh(c, result.normalization));
-    } else {
-      std::vector<int> same(c.vertices.size());
-      std::iota(same.begin(), same.end(), 0);
-      canonical.push_back({applyNormalization(c, result.normalization), std::move(same)});
-    }
-    inverse.add(canonical.back(), c);  // input vertices come back exactly
-  }
-  std::vector<int> order(canonical.size());
-  std::iota(order.begin(), order.end(), 0);
-  if (o.invariant)
-    std::stable_sort(order.begin(), order.end(),
-                     [&](int a, int b) { return canonicalLess(canonical[a].mesh, canonical[b].mesh); });
-  std::vector<Piece> pending;
-  for (int i : order) {
-    Piece p{std::move(canonical[i].mesh), 0, i};
-    result.stats.inputEdges += static_cast<int>(p.mesh.faces.size() * 3 / 2);
-    result.stats.inputNotches += countNotches(p.mesh);
-    result.stats.inputVolume += signedVolume(applyNormalization(prepared.components[i], result.normalization));
-    pending.push_back(std::move(p));
-  }
+  std::vector<Piece> pending = firstPieces(prepared.components, o.invariant, result, inverse);
   result.times.prepare = secondsSince(t);
 
   const ThreadLimit limit(o.threads);
@@ -440,61 +525,8 @@ Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options) {
   std::vector<Component> finalInfo;
   for (Outcome& out : rounds.outcomes) finalInfo.push_back(std::move(out.component));
 
-  // Merge pass: the greedy recursion sometimes cuts where a coarser split would have done. Glue
-  // neighbours back along their shared cut faces while the union stays within tau, largest contact
-  // first. Sequential and in a fixed order, so the result does not depend on the thread count.
   t = Clock::now();
-  if (o.merge) {
-    ConcavityOptions co;
-    co.epsilon = o.epsilon;
-    std::vector<char> alive(finals.size(), 1);
-    for (bool merged = true; merged;) {
-      merged = false;
-      std::vector<TriMesh> meshes;
-      std::vector<int> id;
-      for (std::size_t i = 0; i < finals.size(); ++i)
-        if (alive[i] && !finalInfo[i].unresolved) meshes.push_back(finals[i].mesh), id.push_back(static_cast<int>(i));
-      // Every candidate union is measured in parallel; then, in order, a union is taken if neither
-      // side has changed in this round. Pairs that touch a changed piece are looked at again next round.
-      const std::vector<SharedFaces> pairs = sharedFacePairs(meshes);
-      std::vector<TriMesh> glued(pairs.size());
-      std::vector<double> concavity(pairs.size(), std::numeric_limits<double>::infinity());
-      tbb::parallel_for(std::size_t(0), pairs.size(), [&](std::size_t k) {
-        const int i = id[pairs[k].a], j = id[pairs[k].b];
-        if (!glueAlongSharedFaces(finals[i].mesh, finals[j].mesh, glued[k])) return;
-        // The union's hull may not swell much beyond the two hulls: a merge must not cost fidelity.
-        const TriMesh hull = convexHull(glued[k].vertices).mesh;
-        auto excess = [](const TriMesh& m) { return signedVolume(convexHull(m.vertices).mesh) - signedVolume(m); };
-        const double growth = signedVolume(hull) - signedVolume(glued[k]) - excess(finals[i].mesh) - excess(finals[j].mesh);
-        if (growth > kMergeHullGrowth * signedVolume(glued[k])) return;
-        SurfaceGraph graph(glued[k]);
-        const double measured = measureConcavity(glued[k], graph, co).concavity;
-        if (measured > o.tau) return;
-        // A union is held to the same promise as a final piece: its hull within tau of it.
-        const HullExcess e = measureHullExcess(glued[k], hull, kExcessLimit * o.tau, kExcessResolution * o.tau);
-        if (!e.exceeds) concavity[k] = std::max(measured, e.distance);
-      });
-      std::vector<char> changed(finals.size(), 0);
-      for (std::size_t k = 0; k < pairs.size(); ++k) {
-        const int i = id[pairs[k].a], j = id[pairs[k].b];
-        if (concavity[k] > o.tau || changed[i] || changed[j]) continue;
-        finals[i].mesh = std::move(glued[k]);
-        finals[i].cuts.insert(finals[i].cuts.end(), finals[j].cuts.begin(), finals[j].cuts.end());
-        finalInfo[i].concavity = concavity[k];
-        finalInfo[i].depth = std::min(finalInfo[i].depth, finalInfo[j].depth);
-        alive[j] = 0;
-        changed[i] = changed[j] = 1;
-        ++result.stats.merges;
-        merged = true;
-      }
-    }
-    std::vector<Piece> keptPieces;
-    std::vector<Component> keptInfo;
-    for (std::size_t i = 0; i < finals.size(); ++i)
-      if (alive[i]) keptPieces.push_back(std::move(finals[i])), keptInfo.push_back(finalInfo[i]);
-    finals = std::move(keptPieces);
-    finalInfo = std::move(keptInfo);
-  }
+  if (o.merge) mergePieces(finals, finalInfo, o, result.stats);
   result.times.merging = secondsSince(t);
 
   t = Clock::now();

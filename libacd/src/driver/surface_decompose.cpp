@@ -318,6 +318,90 @@ SurfaceDecomposeOptions resolvedOptions(const SurfaceDecomposeOptions& options) 
   return o;
 }
 
+/// The prepared components as one surface, piece after piece, and the first round's pieces; each
+/// open piece is turned to face away from its hull (Extension 2 needs "outward").
+std::vector<Piece> firstPieces(std::vector<TriMesh>& components, TriMesh& surface, std::vector<std::string>& repairs) {
+  std::vector<Piece> pending;
+  int turned = 0;
+  for (std::size_t i = 0; i < components.size(); ++i) {
+    TriMesh& c = components[i];
+    turned += orientTowardHull(c);
+    const int vbase = static_cast<int>(surface.vertices.size());
+    const int fbase = static_cast<int>(surface.faces.size());
+    surface.vertices.insert(surface.vertices.end(), c.vertices.begin(), c.vertices.end());
+    Piece p;
+    p.source = static_cast<int>(i);
+    for (std::size_t f = 0; f < c.faces.size(); ++f) {
+      const Face& x = c.faces[f];
+      surface.faces.push_back({x[0] + vbase, x[1] + vbase, x[2] + vbase});
+      p.faces.push_back(fbase + static_cast<int>(f));
+    }
+    pending.push_back(std::move(p));
+  }
+  if (turned > 0)
+    repairs.push_back("turned " + std::to_string(turned) + " open piece(s) to face away from their hull");
+  return pending;
+}
+
+/// Merge pass: neighbours that share edges are glued back while their union stays within tau,
+/// longest shared boundary first; sequential and in a fixed order.
+void mergePatches(const TriMesh& surface, const SurfaceGraph& graph, std::vector<Piece>& finals,
+                  std::vector<Outcome>& finalInfo, const SurfaceDecomposeOptions& o, SurfaceDecomposeStats& stats) {
+  std::vector<char> alive(finals.size(), 1);
+  // Union concavity of pairs measured in earlier rounds, dropped when either side changes:
+  // a round only measures the pairs next to the patches the previous round glued.
+  std::map<std::pair<int, int>, double> known;
+  for (bool merged = true; merged;) {
+    merged = false;
+    std::vector<int> patchOf(surface.faces.size(), -1);
+    for (std::size_t i = 0; i < finals.size(); ++i)
+      if (alive[i] && !finalInfo[i].unresolved)
+        for (int f : finals[i].faces) patchOf[f] = static_cast<int>(i);
+    const auto shared = sharedEdges(surface, graph, patchOf);
+    std::vector<std::pair<int, int>> pairs;
+    std::vector<int> length;
+    for (const auto& [pair, count] : shared) pairs.push_back(pair), length.push_back(count);
+    std::vector<std::size_t> order(pairs.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return length[a] > length[b]; });
+    std::vector<double> concavity(pairs.size());
+    std::vector<char> cached(pairs.size(), 0);
+    for (std::size_t k = 0; k < pairs.size(); ++k)
+      if (auto it = known.find(pairs[k]); it != known.end()) concavity[k] = it->second, cached[k] = 1;
+    auto unionOf = [&](int a, int b) {
+      std::vector<int> faces;
+      std::merge(finals[a].faces.begin(), finals[a].faces.end(), finals[b].faces.begin(), finals[b].faces.end(),
+                 std::back_inserter(faces));
+      return faces;
+    };
+    tbb::parallel_for(std::size_t(0), pairs.size(), [&](std::size_t k) {
+      if (!cached[k]) concavity[k] = measure(subMesh(surface, unionOf(pairs[k].first, pairs[k].second)), o.epsilon);
+    });
+    for (std::size_t k = 0; k < pairs.size(); ++k) known[pairs[k]] = concavity[k];
+    std::vector<char> changed(finals.size(), 0);
+    for (std::size_t k : order) {
+      const auto [a, b] = pairs[k];
+      if (concavity[k] > o.tau || changed[a] || changed[b]) continue;
+      finals[a].faces = unionOf(a, b);
+      finals[a].depth = std::min(finals[a].depth, finals[b].depth);
+      finalInfo[a].concavity = concavity[k];
+      alive[b] = 0;
+      changed[a] = changed[b] = 1;
+      ++stats.merges;
+      merged = true;
+    }
+    for (auto it = known.begin(); it != known.end();)
+      it = changed[it->first.first] || changed[it->first.second] ? known.erase(it) : std::next(it);
+  }
+  std::vector<Piece> keptPieces;
+  std::vector<Outcome> keptInfo;
+  for (std::size_t i = 0; i < finals.size(); ++i)
+    if (alive[i]) keptPieces.push_back(std::move(finals[i])), keptInfo.push_back(std::move(finalInfo[i]));
+  finals = std::move(keptPieces);
+  finalInfo = std::move(keptInfo);
+
+}
+
 Status validate(const SurfaceDecomposeOptions& options) {
   DecomposeOptions d;
   d.tau = options.tau;
@@ -345,26 +429,7 @@ SurfaceDecomposition decomposeSurface(const TriMesh& mesh, const SurfaceDecompos
   result.status = prepared.status;
   result.repairs = prepared.repairs;
   if (!result.status.ok()) return result;
-  // One surface, piece after piece; each open piece faces its hull (Extension 2 needs "outward").
-  std::vector<Piece> pending;
-  int turned = 0;
-  for (std::size_t i = 0; i < prepared.components.size(); ++i) {
-    TriMesh& c = prepared.components[i];
-    turned += orientTowardHull(c);
-    const int vbase = static_cast<int>(result.surface.vertices.size());
-    const int fbase = static_cast<int>(result.surface.faces.size());
-    result.surface.vertices.insert(result.surface.vertices.end(), c.vertices.begin(), c.vertices.end());
-    Piece p;
-    p.source = static_cast<int>(i);
-    for (std::size_t f = 0; f < c.faces.size(); ++f) {
-      const Face& x = c.faces[f];
-      result.surface.faces.push_back({x[0] + vbase, x[1] + vbase, x[2] + vbase});
-      p.faces.push_back(fbase + static_cast<int>(f));
-    }
-    pending.push_back(std::move(p));
-  }
-  if (turned > 0)
-    result.repairs.push_back("turned " + std::to_string(turned) + " open piece(s) to face away from their hull");
+  std::vector<Piece> pending = firstPieces(prepared.components, result.surface, result.repairs);
   result.normalization = minimumSphereNormalization(result.surface);
   const TriMesh surface = applyNormalization(result.surface, result.normalization);
   const SurfaceGraph graph(surface);
@@ -414,63 +479,8 @@ SurfaceDecomposition decomposeSurface(const TriMesh& mesh, const SurfaceDecompos
   std::vector<Piece> finals = std::move(rounds.pieces);
   std::vector<Outcome> finalInfo = std::move(rounds.outcomes);
 
-  // Merge pass: neighbours that share edges are glued back while their union stays within tau,
-  // longest shared boundary first; sequential and in a fixed order.
   t = Clock::now();
-  if (o.merge) {
-    std::vector<char> alive(finals.size(), 1);
-    // Union concavity of pairs measured in earlier rounds, dropped when either side changes:
-    // a round only measures the pairs next to the patches the previous round glued.
-    std::map<std::pair<int, int>, double> known;
-    for (bool merged = true; merged;) {
-      merged = false;
-      std::vector<int> patchOf(surface.faces.size(), -1);
-      for (std::size_t i = 0; i < finals.size(); ++i)
-        if (alive[i] && !finalInfo[i].unresolved)
-          for (int f : finals[i].faces) patchOf[f] = static_cast<int>(i);
-      const auto shared = sharedEdges(surface, graph, patchOf);
-      std::vector<std::pair<int, int>> pairs;
-      std::vector<int> length;
-      for (const auto& [pair, count] : shared) pairs.push_back(pair), length.push_back(count);
-      std::vector<std::size_t> order(pairs.size());
-      std::iota(order.begin(), order.end(), 0);
-      std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return length[a] > length[b]; });
-      std::vector<double> concavity(pairs.size());
-      std::vector<char> cached(pairs.size(), 0);
-      for (std::size_t k = 0; k < pairs.size(); ++k)
-        if (auto it = known.find(pairs[k]); it != known.end()) concavity[k] = it->second, cached[k] = 1;
-      auto unionOf = [&](int a, int b) {
-        std::vector<int> faces;
-        std::merge(finals[a].faces.begin(), finals[a].faces.end(), finals[b].faces.begin(), finals[b].faces.end(),
-                   std::back_inserter(faces));
-        return faces;
-      };
-      tbb::parallel_for(std::size_t(0), pairs.size(), [&](std::size_t k) {
-        if (!cached[k]) concavity[k] = measure(subMesh(surface, unionOf(pairs[k].first, pairs[k].second)), o.epsilon);
-      });
-      for (std::size_t k = 0; k < pairs.size(); ++k) known[pairs[k]] = concavity[k];
-      std::vector<char> changed(finals.size(), 0);
-      for (std::size_t k : order) {
-        const auto [a, b] = pairs[k];
-        if (concavity[k] > o.tau || changed[a] || changed[b]) continue;
-        finals[a].faces = unionOf(a, b);
-        finals[a].depth = std::min(finals[a].depth, finals[b].depth);
-        finalInfo[a].concavity = concavity[k];
-        alive[b] = 0;
-        changed[a] = changed[b] = 1;
-        ++result.stats.merges;
-        merged = true;
-      }
-      for (auto it = known.begin(); it != known.end();)
-        it = changed[it->first.first] || changed[it->first.second] ? known.erase(it) : std::next(it);
-    }
-    std::vector<Piece> keptPieces;
-    std::vector<Outcome> keptInfo;
-    for (std::size_t i = 0; i < finals.size(); ++i)
-      if (alive[i]) keptPieces.push_back(std::move(finals[i])), keptInfo.push_back(std::move(finalInfo[i]));
-    finals = std::move(keptPieces);
-    finalInfo = std::move(keptInfo);
-  }
+  if (o.merge) mergePatches(surface, graph, finals, finalInfo, o, result.stats);
   result.times.merging = secondsSince(t);
 
   // Patches in order of their first face: a stable, readable numbering.

@@ -461,6 +461,154 @@ Status checkMesh(const TriMesh& m, const std::string& name, bool needClosed) {
 
 }  // namespace
 
+namespace {
+
+/// The hulls to measure: the convex hull of each one's (used) vertices, normalised with the
+/// model's transform. Hulls without 4 non-coplanar vertices are counted in `skipped`.
+std::vector<Hull> normalisedHulls(const std::vector<TriMesh>& hulls, const Normalization& norm, int& skipped) {
+  std::vector<Hull> hs;
+  for (const TriMesh& in : hulls) {
+    std::vector<Vec3> pts;
+    if (in.faces.empty()) {
+      for (const Vec3& p : in.vertices) pts.push_back(norm.apply(p));
+    } else {
+      std::vector<char> used(in.vertices.size(), 0);
+      for (const Face& f : in.faces)
+        for (int v : f) used[v] = 1;
+      for (std::size_t v = 0; v < in.vertices.size(); ++v)
+        if (used[v]) pts.push_back(norm.apply(in.vertices[v]));
+    }
+    Hull h;
+    if (buildHull(pts, h))
+      hs.push_back(std::move(h));
+    else
+      ++skipped;
+  }
+  return hs;
+}
+
+/// Monte-Carlo volumes: uniform points in the box, in the model, in the union of the hulls, in both.
+void sampleVolumes(const Box3& box, const HullIndex& index, const InsideTest& locator, tbb::task_arena& arena,
+                   const EvaluateOptions& options, Evaluation& ev) {
+  const Vec3 size = box.size();
+  constexpr std::int64_t kBlock = 1 << 14;
+  const std::int64_t n = options.volumeSamples;
+  const std::size_t blocks = static_cast<std::size_t>((n + kBlock - 1) / kBlock);
+  struct Counts { std::int64_t model = 0, onion = 0, both = 0; };
+  std::vector<Counts> per(blocks);
+  const Stream rng(options.seed, 1);
+  forEachBlock(arena, blocks, [&](std::size_t b) {
+    Counts c;
+    const std::int64_t end = std::min<std::int64_t>(n, static_cast<std::int64_t>(b + 1) * kBlock);
+    for (std::int64_t i = static_cast<std::int64_t>(b) * kBlock; i < end; ++i) {
+      const auto u = static_cast<std::uint64_t>(i);
+      const Vec3 p(box.lo.x() + size.x() * rng.uniform(u, 0), box.lo.y() + size.y() * rng.uniform(u, 1),
+                   box.lo.z() + size.z() * rng.uniform(u, 2));
+      const bool inU = index.inUnion(p), inM = locator.inside(p);
+      c.model += inM;
+      c.onion += inU;
+      c.both += inM && inU;
+    }
+    per[b] = c;
+  });
+  for (const Counts& c : per) {
+    ev.samplesInModel += c.model;
+    ev.samplesInUnion += c.onion;
+    ev.samplesInBoth += c.both;
+  }
+  ev.volumeSamples = n;
+  const double N = static_cast<double>(n);
+  const double pU = ev.samplesInUnion / N;
+  ev.unionVolume = ev.boxVolume * pU;
+  ev.unionVolumeStdErr = ev.boxVolume * std::sqrt(pU * (1.0 - pU) / N);
+  ev.unionToModelRatio = ev.unionVolume / ev.modelVolume;
+  ev.misclassifiedShare = static_cast<double>(ev.samplesInModel + ev.samplesInUnion - 2 * ev.samplesInBoth) / N;
+  // IoU standard error: given the K samples that fell in model or union, the number in both is
+  // Binomial(K, IoU), so SE = sqrt(IoU (1 - IoU) / K) (the randomness of K itself is ignored).
+  const std::int64_t k = ev.samplesInModel + ev.samplesInUnion - ev.samplesInBoth;
+  if (k > 0) {
+    ev.iou = static_cast<double>(ev.samplesInBoth) / static_cast<double>(k);
+    ev.iouStdErr = std::sqrt(ev.iou * (1.0 - ev.iou) / static_cast<double>(k));
+  }
+
+}
+
+/// Surface distances: from sample points on the hulls to the model (outside it only), and from
+/// sample points on the model to the union of the hulls.
+void sampleSurfaceDistances(const TriMesh& m, const std::vector<Hull>& hs, const HullIndex& index,
+                            const InsideTest& locator, tbb::task_arena& arena, const EvaluateOptions& options,
+                            Evaluation& ev) {
+  constexpr std::int64_t kBlock = 1 << 12;
+  const std::int64_t n = options.surfaceSamples;
+  const std::size_t blocks = static_cast<std::size_t>((n + kBlock - 1) / kBlock);
+  struct Acc { double sum = 0.0, max = 0.0; };
+
+  // Hull surfaces -> model solid.
+  std::vector<std::array<Vec3, 3>> modelSurface;
+  modelSurface.reserve(m.faces.size());
+  for (const Face& f : m.faces) modelSurface.push_back({m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]});
+  const TriangleBvh tree(modelSurface);
+
+  std::vector<std::array<Vec3, 3>> hullSurface;
+  for (const Hull& h : hs) hullSurface.insert(hullSurface.end(), h.triangles.begin(), h.triangles.end());
+  const SurfaceSampler hullSampler(std::move(hullSurface)), modelSampler(std::move(modelSurface));
+
+  std::vector<Acc> per(blocks);
+  const Stream hullRng(options.seed, 2), modelRng(options.seed, 3);
+  forEachBlock(arena, blocks, [&](std::size_t b) {
+    Acc acc;
+    const std::int64_t end = std::min<std::int64_t>(n, static_cast<std::int64_t>(b + 1) * kBlock);
+    for (std::int64_t i = static_cast<std::int64_t>(b) * kBlock; i < end; ++i) {
+      const Vec3 p = hullSampler.sample(hullRng, static_cast<std::uint64_t>(i));
+      if (locator.inside(p)) continue;
+      const double d = tree.distance(p);
+      acc.sum += d;
+      acc.max = std::max(acc.max, d);
+    }
+    per[b] = acc;
+  });
+  double sum = 0.0;
+  for (const Acc& a : per) {
+    sum += a.sum;
+    ev.hullOutsideMax = std::max(ev.hullOutsideMax, a.max);
+  }
+  ev.hullOutsideMean = sum / static_cast<double>(n);
+
+  // Model surface -> union of hulls.
+  std::fill(per.begin(), per.end(), Acc{});
+  if (modelSampler.area() > 0.0) {
+    forEachBlock(arena, blocks, [&](std::size_t b) {
+      Acc acc;
+      std::vector<std::pair<double, int>> order(hs.size());
+      const std::int64_t end = std::min<std::int64_t>(n, static_cast<std::int64_t>(b + 1) * kBlock);
+      for (std::int64_t i = static_cast<std::int64_t>(b) * kBlock; i < end; ++i) {
+        const Vec3 p = modelSampler.sample(modelRng, static_cast<std::uint64_t>(i));
+        if (index.inUnion(p)) continue;
+        // Nearest hulls first by box distance, a lower bound of the hull distance.
+        for (std::size_t h = 0; h < hs.size(); ++h) order[h] = {boxDistance(hs[h].lo, hs[h].hi, p), static_cast<int>(h)};
+        std::sort(order.begin(), order.end());
+        double best = std::numeric_limits<double>::infinity();
+        for (const auto& [bound, h] : order) {
+          if (bound >= best) break;
+          best = std::min(best, distanceToHull(hs[h], p));
+        }
+        acc.sum += best;
+        acc.max = std::max(acc.max, best);
+      }
+      per[b] = acc;
+    });
+  }
+  sum = 0.0;
+  for (const Acc& a : per) {
+    sum += a.sum;
+    ev.modelToHullsMax = std::max(ev.modelToHullsMax, a.max);
+  }
+  ev.modelToHullsMean = sum / static_cast<double>(n);
+
+}
+
+}  // namespace
+
 Evaluation evaluate(const TriMesh& model, const std::vector<TriMesh>& hulls, const EvaluateOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   Evaluation ev;
@@ -483,25 +631,7 @@ Evaluation evaluate(const TriMesh& model, const std::vector<TriMesh>& hulls, con
   ev.modelVolume = std::abs(signedVolume(m));
   if (!(ev.modelVolume > 1e-12)) return fail(Status::error(StatusCode::InvalidParameter, "model encloses no volume"));
 
-  // Hulls: convex hull of the (used) vertices, normalised with the model's transform.
-  std::vector<Hull> hs;
-  for (const TriMesh& in : hulls) {
-    std::vector<Vec3> pts;
-    if (in.faces.empty()) {
-      for (const Vec3& p : in.vertices) pts.push_back(norm.apply(p));
-    } else {
-      std::vector<char> used(in.vertices.size(), 0);
-      for (const Face& f : in.faces)
-        for (int v : f) used[v] = 1;
-      for (std::size_t v = 0; v < in.vertices.size(); ++v)
-        if (used[v]) pts.push_back(norm.apply(in.vertices[v]));
-    }
-    Hull h;
-    if (buildHull(pts, h))
-      hs.push_back(std::move(h));
-    else
-      ++ev.skippedHulls;
-  }
+  std::vector<Hull> hs = normalisedHulls(hulls, norm, ev.skippedHulls);
   ev.hulls = static_cast<int>(hs.size());
   if (hs.empty())
     return fail(Status::error(StatusCode::InvalidParameter,
@@ -520,118 +650,9 @@ Evaluation evaluate(const TriMesh& model, const std::vector<TriMesh>& hulls, con
   const HullIndex index(hs, box);
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
 
-  // ---- Monte-Carlo volumes.
-  {
-    constexpr std::int64_t kBlock = 1 << 14;
-    const std::int64_t n = options.volumeSamples;
-    const std::size_t blocks = static_cast<std::size_t>((n + kBlock - 1) / kBlock);
-    struct Counts { std::int64_t model = 0, onion = 0, both = 0; };
-    std::vector<Counts> per(blocks);
-    const Stream rng(options.seed, 1);
-    forEachBlock(arena, blocks, [&](std::size_t b) {
-      Counts c;
-      const std::int64_t end = std::min<std::int64_t>(n, static_cast<std::int64_t>(b + 1) * kBlock);
-      for (std::int64_t i = static_cast<std::int64_t>(b) * kBlock; i < end; ++i) {
-        const auto u = static_cast<std::uint64_t>(i);
-        const Vec3 p(box.lo.x() + size.x() * rng.uniform(u, 0), box.lo.y() + size.y() * rng.uniform(u, 1),
-                     box.lo.z() + size.z() * rng.uniform(u, 2));
-        const bool inU = index.inUnion(p), inM = locator.inside(p);
-        c.model += inM;
-        c.onion += inU;
-        c.both += inM && inU;
-      }
-      per[b] = c;
-    });
-    for (const Counts& c : per) {
-      ev.samplesInModel += c.model;
-      ev.samplesInUnion += c.onion;
-      ev.samplesInBoth += c.both;
-    }
-    ev.volumeSamples = n;
-    const double N = static_cast<double>(n);
-    const double pU = ev.samplesInUnion / N;
-    ev.unionVolume = ev.boxVolume * pU;
-    ev.unionVolumeStdErr = ev.boxVolume * std::sqrt(pU * (1.0 - pU) / N);
-    ev.unionToModelRatio = ev.unionVolume / ev.modelVolume;
-    ev.misclassifiedShare = static_cast<double>(ev.samplesInModel + ev.samplesInUnion - 2 * ev.samplesInBoth) / N;
-    // IoU standard error: given the K samples that fell in model or union, the number in both is
-    // Binomial(K, IoU), so SE = sqrt(IoU (1 - IoU) / K) (the randomness of K itself is ignored).
-    const std::int64_t k = ev.samplesInModel + ev.samplesInUnion - ev.samplesInBoth;
-    if (k > 0) {
-      ev.iou = static_cast<double>(ev.samplesInBoth) / static_cast<double>(k);
-      ev.iouStdErr = std::sqrt(ev.iou * (1.0 - ev.iou) / static_cast<double>(k));
-    }
-  }
+  sampleVolumes(box, index, locator, arena, options, ev);
 
-  // ---- Surface distances.
-  if (options.surfaceSamples > 0) {
-    constexpr std::int64_t kBlock = 1 << 12;
-    const std::int64_t n = options.surfaceSamples;
-    const std::size_t blocks = static_cast<std::size_t>((n + kBlock - 1) / kBlock);
-    struct Acc { double sum = 0.0, max = 0.0; };
-
-    // Hull surfaces -> model solid.
-    std::vector<std::array<Vec3, 3>> modelSurface;
-    modelSurface.reserve(m.faces.size());
-    for (const Face& f : m.faces) modelSurface.push_back({m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]});
-    const TriangleBvh tree(modelSurface);
-
-    std::vector<std::array<Vec3, 3>> hullSurface;
-    for (const Hull& h : hs) hullSurface.insert(hullSurface.end(), h.triangles.begin(), h.triangles.end());
-    const SurfaceSampler hullSampler(std::move(hullSurface)), modelSampler(std::move(modelSurface));
-
-    std::vector<Acc> per(blocks);
-    const Stream hullRng(options.seed, 2), modelRng(options.seed, 3);
-    forEachBlock(arena, blocks, [&](std::size_t b) {
-      Acc acc;
-      const std::int64_t end = std::min<std::int64_t>(n, static_cast<std::int64_t>(b + 1) * kBlock);
-      for (std::int64_t i = static_cast<std::int64_t>(b) * kBlock; i < end; ++i) {
-        const Vec3 p = hullSampler.sample(hullRng, static_cast<std::uint64_t>(i));
-        if (locator.inside(p)) continue;
-        const double d = tree.distance(p);
-        acc.sum += d;
-        acc.max = std::max(acc.max, d);
-      }
-      per[b] = acc;
-    });
-    double sum = 0.0;
-    for (const Acc& a : per) {
-      sum += a.sum;
-      ev.hullOutsideMax = std::max(ev.hullOutsideMax, a.max);
-    }
-    ev.hullOutsideMean = sum / static_cast<double>(n);
-
-    // Model surface -> union of hulls.
-    std::fill(per.begin(), per.end(), Acc{});
-    if (modelSampler.area() > 0.0) {
-      forEachBlock(arena, blocks, [&](std::size_t b) {
-        Acc acc;
-        std::vector<std::pair<double, int>> order(hs.size());
-        const std::int64_t end = std::min<std::int64_t>(n, static_cast<std::int64_t>(b + 1) * kBlock);
-        for (std::int64_t i = static_cast<std::int64_t>(b) * kBlock; i < end; ++i) {
-          const Vec3 p = modelSampler.sample(modelRng, static_cast<std::uint64_t>(i));
-          if (index.inUnion(p)) continue;
-          // Nearest hulls first by box distance, a lower bound of the hull distance.
-          for (std::size_t h = 0; h < hs.size(); ++h) order[h] = {boxDistance(hs[h].lo, hs[h].hi, p), static_cast<int>(h)};
-          std::sort(order.begin(), order.end());
-          double best = std::numeric_limits<double>::infinity();
-          for (const auto& [bound, h] : order) {
-            if (bound >= best) break;
-            best = std::min(best, distanceToHull(hs[h], p));
-          }
-          acc.sum += best;
-          acc.max = std::max(acc.max, best);
-        }
-        per[b] = acc;
-      });
-    }
-    sum = 0.0;
-    for (const Acc& a : per) {
-      sum += a.sum;
-      ev.modelToHullsMax = std::max(ev.modelToHullsMax, a.max);
-    }
-    ev.modelToHullsMean = sum / static_cast<double>(n);
-  }
+  if (options.surfaceSamples > 0) sampleSurfaceDistances(m, hs, index, locator, arena, options, ev);
 
   if (ev.skippedHulls > 0)
     ev.status.message = "skipped " + std::to_string(ev.skippedHulls) + " of " + std::to_string(hulls.size()) +

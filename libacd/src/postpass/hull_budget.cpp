@@ -96,6 +96,41 @@ Ball ballAround(const TriMesh& m) {
   return b;
 }
 
+/// Each group with its four nearest others (by the gap between the spheres around them, which
+/// does not depend on the pose), as sorted index pairs without repeats.
+std::vector<std::pair<int, int>> nearestPairs(const std::vector<Group>& groups) {
+  std::vector<std::pair<int, int>> pairs;
+  std::vector<Ball> balls;
+  for (const Group& g : groups) balls.push_back(ballAround(g.mesh));
+  const int m = static_cast<int>(groups.size());
+  for (int i = 0; i < m; ++i) {
+    std::vector<std::pair<double, int>> near;
+    for (int j = 0; j < m; ++j)
+      if (j != i) near.emplace_back((balls[i].centre - balls[j].centre).norm() - balls[i].radius - balls[j].radius, j);
+    std::sort(near.begin(), near.end());
+    for (int k = 0; k < std::min<int>(4, static_cast<int>(near.size())); ++k)
+      pairs.emplace_back(std::min(i, near[k].second), std::max(i, near[k].second));
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
+}
+
+/// Group a takes in group b, merged as `best` says.
+void absorb(Group& a, const Group& b, const Candidate& best) {
+  a.mesh = best.mesh;
+  a.members.insert(a.members.end(), b.members.begin(), b.members.end());
+  std::sort(a.members.begin(), a.members.end());
+  a.info.concavity = best.cost;
+  a.info.depth = std::min(a.info.depth, b.info.depth);
+  a.info.source = std::min(a.info.source, b.info.source);
+  a.info.volume += b.info.volume;
+  a.info.hullVolume = a.info.hullVolume + b.info.hullVolume + best.growth;
+  a.info.unresolved = a.info.unresolved || b.info.unresolved;
+  if (b.info.unresolved && a.info.note.empty()) a.info.note = b.info.note;
+  a.hullGap = a.hullGap || b.hullGap || !best.glued;
+}
+
 }  // namespace
 
 HullBudgetReport limitHullCount(Decomposition& d, const HullBudgetOptions& options) {
@@ -151,20 +186,7 @@ HullBudgetReport limitHullCount(Decomposition& d, const HullBudgetOptions& optio
     if (!glueable) {
       // No neighbours left to glue: join each group with its nearest few (gap between the
       // spheres around them, which does not depend on the pose).
-      pairs.clear();
-      std::vector<Ball> balls;
-      for (const Group& g : groups) balls.push_back(ballAround(g.mesh));
-      const int m = static_cast<int>(groups.size());
-      for (int i = 0; i < m; ++i) {
-        std::vector<std::pair<double, int>> near;
-        for (int j = 0; j < m; ++j)
-          if (j != i) near.emplace_back((balls[i].centre - balls[j].centre).norm() - balls[i].radius - balls[j].radius, j);
-        std::sort(near.begin(), near.end());
-        for (int k = 0; k < std::min<int>(4, static_cast<int>(near.size())); ++k)
-          pairs.emplace_back(std::min(i, near[k].second), std::max(i, near[k].second));
-      }
-      std::sort(pairs.begin(), pairs.end());
-      pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+      pairs = nearestPairs(groups);
       // A pair measured by gluing (and found not glueable) is measured again by joining.
       for (const auto& [i, j] : pairs) {
         auto it = measured.find({groups[i].uid, groups[j].uid});
@@ -186,17 +208,7 @@ HullBudgetReport limitHullCount(Decomposition& d, const HullBudgetOptions& optio
     }
     Group& a = groups[bi];
     const Group& b = groups[bj];
-    a.mesh = best->mesh;
-    a.members.insert(a.members.end(), b.members.begin(), b.members.end());
-    std::sort(a.members.begin(), a.members.end());
-    a.info.concavity = best->cost;
-    a.info.depth = std::min(a.info.depth, b.info.depth);
-    a.info.source = std::min(a.info.source, b.info.source);
-    a.info.volume += b.info.volume;
-    a.info.hullVolume = a.info.hullVolume + b.info.hullVolume + best->growth;
-    a.info.unresolved = a.info.unresolved || b.info.unresolved;
-    if (b.info.unresolved && a.info.note.empty()) a.info.note = b.info.note;
-    a.hullGap = a.hullGap || b.hullGap || !best->glued;
+    absorb(a, b, *best);
     (best->glued ? r.gluedMerges : r.joinedMerges) += 1;
     const int oldA = a.uid, oldB = b.uid;
     a.uid = nextUid++;

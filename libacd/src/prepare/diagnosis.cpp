@@ -234,6 +234,39 @@ std::string outOfRangeMessage(int face, const Face& f, int vertexCount) {
   return {};
 }
 
+/// The edge and vertex checks of diagnose(): boundary, non-manifold and misoriented edges,
+/// pinched vertices; `note(order, message)` records the first problem of each kind.
+template <class Note>
+void checkTopology(const std::vector<Face>& faces, const Topology& topology, const std::vector<int>& original, int nv,
+                   MeshDiagnosis& d, const Note& note) {
+  d.edges = static_cast<int>(topology.edges.size());
+  d.components = topology.components;
+  for (const EdgeUse& use : topology.edges) {
+    d.boundaryEdges += isBoundary(use);
+    d.nonManifoldEdges += isNonManifold(use);
+    if (isMisoriented(use)) d.orientationConsistent = false;
+  }
+  if (const int e = firstEdgeWhere(topology, isNonManifold); e >= 0)
+    note(7, "non-manifold edge " + formatEdge(topology.edges[e].key) + " is shared by " +
+                std::to_string(topology.edges[e].count) + " faces");
+  const std::vector<int> fans = fansPerVertex(faces, topology, nv);
+  for (int v = 0; v < nv; ++v)
+    if (fans[v] > 1) {
+      ++d.nonManifoldVertices;
+      note(8, "vertex " + std::to_string(v) + " is non-manifold: its faces form " + std::to_string(fans[v]) +
+                  " fans that meet only at this vertex");
+    }
+  if (const int e = firstEdgeWhere(topology, isBoundary); e >= 0)
+    note(9, "boundary edge " + formatEdge(topology.edges[e].key) + " has only one face (" +
+                std::to_string(d.boundaryEdges) + " boundary edges)");
+  if (const int e = firstEdgeWhere(topology, isMisoriented); e >= 0) {
+    const EdgeUse& use = topology.edges[e];
+    note(10, "faces " + std::to_string(original[use.corners[0] / 3]) + " and " +
+                 std::to_string(original[use.corners[1] / 3]) + " use edge " + formatEdge(use.key) +
+                 " in the same direction (inconsistent orientation)");
+  }
+}
+
 }  // namespace
 
 MeshDiagnosis diagnose(const TriMesh& mesh) {
@@ -310,32 +343,7 @@ MeshDiagnosis diagnose(const TriMesh& mesh) {
   }
 
   const Topology topology(faces);
-  d.edges = static_cast<int>(topology.edges.size());
-  d.components = topology.components;
-  for (const EdgeUse& use : topology.edges) {
-    d.boundaryEdges += isBoundary(use);
-    d.nonManifoldEdges += isNonManifold(use);
-    if (isMisoriented(use)) d.orientationConsistent = false;
-  }
-  if (const int e = firstEdgeWhere(topology, isNonManifold); e >= 0)
-    note(7, "non-manifold edge " + formatEdge(topology.edges[e].key) + " is shared by " +
-                std::to_string(topology.edges[e].count) + " faces");
-  const std::vector<int> fans = fansPerVertex(faces, topology, nv);
-  for (int v = 0; v < nv; ++v)
-    if (fans[v] > 1) {
-      ++d.nonManifoldVertices;
-      note(8, "vertex " + std::to_string(v) + " is non-manifold: its faces form " + std::to_string(fans[v]) +
-                  " fans that meet only at this vertex");
-    }
-  if (const int e = firstEdgeWhere(topology, isBoundary); e >= 0)
-    note(9, "boundary edge " + formatEdge(topology.edges[e].key) + " has only one face (" +
-                std::to_string(d.boundaryEdges) + " boundary edges)");
-  if (const int e = firstEdgeWhere(topology, isMisoriented); e >= 0) {
-    const EdgeUse& use = topology.edges[e];
-    note(10, "faces " + std::to_string(original[use.corners[0] / 3]) + " and " +
-                 std::to_string(original[use.corners[1] / 3]) + " use edge " + formatEdge(use.key) +
-                 " in the same direction (inconsistent orientation)");
-  }
+  checkTopology(faces, topology, original, nv, d, note);
 
   d.closed = !faces.empty() && d.indexOutOfRange == 0 && d.boundaryEdges == 0 && d.nonManifoldEdges == 0;
   if (d.closed && d.nonManifoldVertices == 0) d.genus = genusOf(faces, topology, nv);
@@ -357,6 +365,127 @@ MeshDiagnosis diagnose(const TriMesh& mesh) {
     }
   return d;
 }
+
+namespace {
+
+/// An exact copy adds nothing; a copy facing the other way is a two-sided sheet we cannot interpret.
+Status dropDuplicateFaces(std::vector<Face>& faces, std::vector<int>& original, std::vector<std::string>& repairs) {
+  const std::vector<int> sameVertices = firstWithSameVertices(faces);
+  std::vector<Face> unique;
+  std::vector<int> uniqueOriginal;
+  unique.reserve(faces.size());
+  uniqueOriginal.reserve(faces.size());
+  int duplicates = 0;
+  for (size_t i = 0; i < faces.size(); ++i) {
+    const int first = sameVertices[i];
+    if (first == static_cast<int>(i)) {
+      unique.push_back(faces[i]);
+      uniqueOriginal.push_back(original[i]);
+    } else if (sameCyclicOrder(faces[i], faces[first])) {
+      ++duplicates;
+    } else {
+      return Status::error(StatusCode::DuplicateFace, "face " + std::to_string(original[i]) + " " + formatFace(faces[i]) +
+                                                          " is face " + std::to_string(original[first]) +
+                                                          " with the opposite orientation");
+    }
+  }
+  if (duplicates > 0) repairs.push_back("dropped " + std::to_string(duplicates) + " duplicate faces");
+  faces.swap(unique);
+  original.swap(uniqueOriginal);
+  return Status::success();
+}
+
+/// A vertex where several fans meet (two parts touching at a point) is safely split: each fan
+/// after the first gets its own copy of the vertex, at the same position.
+void splitPinchedVertices(std::vector<Face>& faces, const Topology& topology, int nv, std::vector<Vec3>& vertices,
+                          std::vector<std::string>& repairs) {
+  std::vector<int> fanOfCorner;
+  const std::vector<int> fans = fansPerVertex(faces, topology, nv, &fanOfCorner);
+  std::unordered_map<int, int> copyOfFan;  // fan root corner -> vertex
+  std::vector<int> firstFan(nv, -1);
+  int split = 0;
+  for (int c = 0; c < static_cast<int>(fanOfCorner.size()); ++c) {
+    int& v = faces[c / 3][c % 3];
+    if (fans[v] <= 1) continue;
+    const int fan = fanOfCorner[c];
+    if (firstFan[v] < 0) firstFan[v] = fan;
+    if (firstFan[v] == fan) continue;
+    auto [it, inserted] = copyOfFan.emplace(fan, static_cast<int>(vertices.size()));
+    if (inserted) {
+      vertices.push_back(vertices[v]);
+      ++split;
+    }
+    v = it->second;
+  }
+  if (split > 0)
+    repairs.push_back("split " + std::to_string(split) +
+                      " non-manifold vertices (parts touching at a point) into one copy per fan");
+}
+
+/// Orient each component by breadth-first search across its (now all manifold) edges.
+Status orientConsistently(std::vector<Face>& faces, const Topology& topology, const std::vector<int>& original,
+                          std::vector<std::string>& repairs) {
+  const int nf = static_cast<int>(faces.size());
+  std::vector<signed char> flip(nf, -1);  // -1: not reached yet
+  int flipped = 0;
+  for (int seed = 0; seed < nf; ++seed) {
+    if (flip[seed] >= 0) continue;
+    std::vector<int> members{seed};
+    flip[seed] = 0;
+    for (size_t next = 0; next < members.size(); ++next) {
+      const int f = members[next];
+      for (int corner = 3 * f; corner < 3 * f + 3; ++corner) {
+        const EdgeUse& use = topology.edges[topology.edgeOfCorner[corner]];
+        if (use.count < 2) continue;  // a boundary edge has no face across
+        const int g = (use.corners[0] == corner ? use.corners[1] : use.corners[0]) / 3;
+        // Both faces running the edge the same way means exactly one of them must turn.
+        const signed char wanted = static_cast<signed char>(flip[f] ^ (use.forward != 1));
+        if (flip[g] < 0) {
+          flip[g] = wanted;
+          members.push_back(g);
+        } else if (flip[g] != wanted) {
+          return Status::error(StatusCode::InconsistentOrientation,
+                        "faces " + std::to_string(original[f]) + " and " + std::to_string(original[g]) +
+                            " cannot be oriented consistently: the piece containing face " +
+                            std::to_string(original[seed]) + " is non-orientable");
+        }
+      }
+    }
+    // Turn the minority: the outward step below fixes the direction of the whole piece anyway.
+    const int count = static_cast<int>(std::count_if(members.begin(), members.end(), [&](int f) { return flip[f]; }));
+    const bool invert = 2 * count > static_cast<int>(members.size());
+    for (int f : members) {
+      if (invert) flip[f] = !flip[f];
+      if (flip[f]) {
+        std::swap(faces[f][1], faces[f][2]);
+        ++flipped;
+      }
+    }
+  }
+  if (flipped > 0)
+    repairs.push_back("flipped " + std::to_string(flipped) + " faces to make the orientation consistent");
+  return Status::success();
+}
+
+/// Closes every open piece with filled holes (the solid decomposition needs closed pieces).
+Status fillOpenPieces(std::vector<TriMesh>& pieces, int& holesFilled, std::vector<std::string>& repairs) {
+  int addedFaces = 0;
+  for (TriMesh& piece : pieces) {
+    if (isClosedOriented(piece)) continue;
+    const int before = static_cast<int>(piece.faces.size());
+    HoleFilling filled = fillHoles(piece);
+    if (!filled.status.ok())
+      return Status::error(StatusCode::OpenMesh, "open mesh: " + filled.status.message + "; solid decomposition needs a closed mesh (surface decomposition works on the open mesh)");
+    holesFilled += filled.holes;
+    addedFaces += static_cast<int>(filled.mesh.faces.size()) - before;
+    piece = std::move(filled.mesh);
+  }
+  repairs.push_back("filled " + std::to_string(holesFilled) + (holesFilled == 1 ? " hole" : " holes") +
+                        " (" + std::to_string(addedFaces) + " faces added) to close the open mesh");
+  return Status::success();
+}
+
+}  // namespace
 
 PreparedSolid prepareSolid(const TriMesh& mesh, const PrepareOptions& options) {
   PreparedSolid out;
@@ -407,31 +536,7 @@ PreparedSolid prepareSolid(const TriMesh& mesh, const PrepareOptions& options) {
   if (repeated > 0)
     out.repairs.push_back("dropped " + std::to_string(repeated) + " faces with a repeated vertex");
 
-  // An exact copy adds nothing; a copy facing the other way is a two-sided sheet we cannot interpret.
-  {
-    const std::vector<int> sameVertices = firstWithSameVertices(faces);
-    std::vector<Face> unique;
-    std::vector<int> uniqueOriginal;
-    unique.reserve(faces.size());
-    uniqueOriginal.reserve(faces.size());
-    int duplicates = 0;
-    for (size_t i = 0; i < faces.size(); ++i) {
-      const int first = sameVertices[i];
-      if (first == static_cast<int>(i)) {
-        unique.push_back(faces[i]);
-        uniqueOriginal.push_back(original[i]);
-      } else if (sameCyclicOrder(faces[i], faces[first])) {
-        ++duplicates;
-      } else {
-        return refuse(StatusCode::DuplicateFace, "face " + std::to_string(original[i]) + " " + formatFace(faces[i]) +
-                                                     " is face " + std::to_string(original[first]) +
-                                                     " with the opposite orientation");
-      }
-    }
-    if (duplicates > 0) out.repairs.push_back("dropped " + std::to_string(duplicates) + " duplicate faces");
-    faces.swap(unique);
-    original.swap(uniqueOriginal);
-  }
+  if (Status s = dropDuplicateFaces(faces, original, out.repairs); !s.ok()) return refuse(s.code, s.message);
   if (faces.empty()) return refuse(StatusCode::EmptyMesh, "mesh has no faces left after dropping degenerate faces");
 
   const double squaredDiag = squaredDiagonal(boundingBox(mesh));
@@ -445,32 +550,8 @@ PreparedSolid prepareSolid(const TriMesh& mesh, const PrepareOptions& options) {
     return refuse(StatusCode::NonManifoldEdge, "non-manifold edge " + formatEdge(topology.edges[e].key) +
                                                    " is shared by " + std::to_string(topology.edges[e].count) +
                                                    " faces");
-  // A vertex where several fans meet (two parts touching at a point) is safely split: each fan
-  // after the first gets its own copy of the vertex, at the same position.
   std::vector<Vec3> vertices = mesh.vertices;
-  {
-    std::vector<int> fanOfCorner;
-    const std::vector<int> fans = fansPerVertex(faces, topology, nv, &fanOfCorner);
-    std::unordered_map<int, int> copyOfFan;  // fan root corner -> vertex
-    std::vector<int> firstFan(nv, -1);
-    int split = 0;
-    for (int c = 0; c < static_cast<int>(fanOfCorner.size()); ++c) {
-      int& v = faces[c / 3][c % 3];
-      if (fans[v] <= 1) continue;
-      const int fan = fanOfCorner[c];
-      if (firstFan[v] < 0) firstFan[v] = fan;
-      if (firstFan[v] == fan) continue;
-      auto [it, inserted] = copyOfFan.emplace(fan, static_cast<int>(vertices.size()));
-      if (inserted) {
-        vertices.push_back(vertices[v]);
-        ++split;
-      }
-      v = it->second;
-    }
-    if (split > 0)
-      out.repairs.push_back("split " + std::to_string(split) +
-                            " non-manifold vertices (parts touching at a point) into one copy per fan");
-  }
+  splitPinchedVertices(faces, topology, nv, vertices, out.repairs);
   const bool open = firstEdgeWhere(topology, isBoundary) >= 0;
   if (open && options.openMeshes == OpenMeshPolicy::Refuse) {
     const int e = firstEdgeWhere(topology, isBoundary);
@@ -480,46 +561,7 @@ PreparedSolid prepareSolid(const TriMesh& mesh, const PrepareOptions& options) {
                                             "); solid decomposition needs a closed mesh");
   }
 
-  // Orient each component by breadth-first search across its (now all manifold) edges.
-  const int nf = static_cast<int>(faces.size());
-  std::vector<signed char> flip(nf, -1);  // -1: not reached yet
-  int flipped = 0;
-  for (int seed = 0; seed < nf; ++seed) {
-    if (flip[seed] >= 0) continue;
-    std::vector<int> members{seed};
-    flip[seed] = 0;
-    for (size_t next = 0; next < members.size(); ++next) {
-      const int f = members[next];
-      for (int corner = 3 * f; corner < 3 * f + 3; ++corner) {
-        const EdgeUse& use = topology.edges[topology.edgeOfCorner[corner]];
-        if (use.count < 2) continue;  // a boundary edge has no face across
-        const int g = (use.corners[0] == corner ? use.corners[1] : use.corners[0]) / 3;
-        // Both faces running the edge the same way means exactly one of them must turn.
-        const signed char wanted = static_cast<signed char>(flip[f] ^ (use.forward != 1));
-        if (flip[g] < 0) {
-          flip[g] = wanted;
-          members.push_back(g);
-        } else if (flip[g] != wanted) {
-          return refuse(StatusCode::InconsistentOrientation,
-                        "faces " + std::to_string(original[f]) + " and " + std::to_string(original[g]) +
-                            " cannot be oriented consistently: the piece containing face " +
-                            std::to_string(original[seed]) + " is non-orientable");
-        }
-      }
-    }
-    // Turn the minority: the outward step below fixes the direction of the whole piece anyway.
-    const int count = static_cast<int>(std::count_if(members.begin(), members.end(), [&](int f) { return flip[f]; }));
-    const bool invert = 2 * count > static_cast<int>(members.size());
-    for (int f : members) {
-      if (invert) flip[f] = !flip[f];
-      if (flip[f]) {
-        std::swap(faces[f][1], faces[f][2]);
-        ++flipped;
-      }
-    }
-  }
-  if (flipped > 0)
-    out.repairs.push_back("flipped " + std::to_string(flipped) + " faces to make the orientation consistent");
+  if (Status s = orientConsistently(faces, topology, original, out.repairs); !s.ok()) return refuse(s.code, s.message);
 
   std::vector<TriMesh> pieces = splitEdgeConnected(TriMesh{vertices, faces});
   if (open && options.openMeshes == OpenMeshPolicy::KeepOpen) {
@@ -534,21 +576,8 @@ PreparedSolid prepareSolid(const TriMesh& mesh, const PrepareOptions& options) {
     out.status = Status::success();
     return out;
   }
-  if (open) {
-    int addedFaces = 0;
-    for (TriMesh& piece : pieces) {
-      if (isClosedOriented(piece)) continue;
-      const int before = static_cast<int>(piece.faces.size());
-      HoleFilling filled = fillHoles(piece);
-      if (!filled.status.ok())
-        return refuse(StatusCode::OpenMesh, "open mesh: " + filled.status.message + "; solid decomposition needs a closed mesh (surface decomposition works on the open mesh)");
-      out.holesFilled += filled.holes;
-      addedFaces += static_cast<int>(filled.mesh.faces.size()) - before;
-      piece = std::move(filled.mesh);
-    }
-    out.repairs.push_back("filled " + std::to_string(out.holesFilled) + (out.holesFilled == 1 ? " hole" : " holes") +
-                          " (" + std::to_string(addedFaces) + " faces added) to close the open mesh");
-  }
+  if (open)
+    if (Status s = fillOpenPieces(pieces, out.holesFilled, out.repairs); !s.ok()) return refuse(s.code, s.message);
   int reversed = 0;
   for (TriMesh& piece : pieces) {
     if (signedVolume(piece) < 0.0) {

@@ -152,53 +152,9 @@ std::string count(int n, const char* singular, const char* plural) {
   return std::to_string(n) + " " + (n == 1 ? singular : plural);
 }
 
-}  // namespace
-
-MeshRepair repairMesh(const TriMesh& input, const RepairOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
-  MeshRepair r;
-  auto refuse = [&](StatusCode code, std::string message) {
-    r.status = Status::error(code, std::move(message));
-    r.mesh = TriMesh{};
-    return r;
-  };
-  const int nv = static_cast<int>(input.vertices.size());
-  if (input.faces.empty()) return refuse(StatusCode::EmptyMesh, "mesh has no faces");
-  for (int v = 0; v < nv; ++v)
-    if (!finite(input.vertices[v]))
-      return refuse(StatusCode::NonFiniteVertex, "vertex " + std::to_string(v) + " has a non-finite coordinate");
-  for (int f = 0; f < static_cast<int>(input.faces.size()); ++f)
-    for (int v : input.faces[f])
-      if (v < 0 || v >= nv)
-        return refuse(StatusCode::IndexOutOfRange, "face " + std::to_string(f) + " refers to vertex " +
-                                                       std::to_string(v) + " but the mesh has " + std::to_string(nv) +
-                                                       " vertices");
-  const TriMesh used = compact(input);
-  const Box3 box = boundingBox(used);
-  const double diagonal = box.size().norm();
-
-  // 1. Close vertices.
-  const std::vector<int> rep = mergeClose(used.vertices, box, options.mergeTolerance * diagonal);
-  for (int v = 0; v < static_cast<int>(rep.size()); ++v) r.mergedVertices += rep[v] != v;
-  std::vector<Face> faces;
-  faces.reserve(used.faces.size());
-  for (Face f : used.faces) {
-    for (int& v : f) v = rep[v];
-    if (f[0] == f[1] || f[1] == f[2] || f[2] == f[0]) {
-      ++r.droppedCollapsedFaces;
-      continue;
-    }
-    faces.push_back(f);
-  }
-  // 2. Copies and double-sided faces.
-  DuplicateOutcome dup = resolveDuplicates(faces);
-  r.droppedDuplicateFaces = dup.exactCopies;
-  r.doubleSidedKeptOne = dup.keptOne;
-  r.doubleSidedDroppedBoth = dup.droppedBoth;
-  faces = std::move(dup.faces);
-  if (faces.empty()) return refuse(StatusCode::EmptyMesh, "mesh has no faces left after dropping degenerate faces");
-  const TriMesh merged = compact(TriMesh{used.vertices, faces});  // the merged-away vertices go
-
+/// Steps 3 to 6, with CGAL's polygon-soup and mesh repairs; `r.mesh` is the result. Should CGAL
+/// give up, `r.mesh` is `merged`, what the steps before it made.
+void repairWithCgal(const TriMesh& merged, const RepairOptions& options, double diagonal, MeshRepair& r) {
   // 3. Manifold and oriented (CGAL): points are copied where edges or vertices are non-manifold.
   std::vector<Point> points;
   points.reserve(merged.vertices.size());
@@ -270,7 +226,10 @@ MeshRepair repairMesh(const TriMesh& input, const RepairOptions& options) {
     r.mesh = merged;
     r.repairs.push_back("mesh repair stopped early (" + failure + "); later checks decide");
   }
+}
 
+/// What the repair did, one line per kind of change, for report.json and `acd info`.
+void describeRepairs(const RepairOptions& options, MeshRepair& r) {
   if (r.mergedVertices > 0)
     r.repairs.push_back("merged " + count(r.mergedVertices, "vertex", "vertices") + " lying within " +
                         std::to_string(options.mergeTolerance) + " of the model's diagonal of another vertex");
@@ -298,6 +257,58 @@ MeshRepair repairMesh(const TriMesh& input, const RepairOptions& options) {
                         " by edge collapse or flip");
   if (r.leftDegenerateFaces > 0)
     r.repairs.push_back(count(r.leftDegenerateFaces, "zero-area face", "zero-area faces") + " could not be removed");
+}
+
+}  // namespace
+
+MeshRepair repairMesh(const TriMesh& input, const RepairOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  MeshRepair r;
+  auto refuse = [&](StatusCode code, std::string message) {
+    r.status = Status::error(code, std::move(message));
+    r.mesh = TriMesh{};
+    return r;
+  };
+  const int nv = static_cast<int>(input.vertices.size());
+  if (input.faces.empty()) return refuse(StatusCode::EmptyMesh, "mesh has no faces");
+  for (int v = 0; v < nv; ++v)
+    if (!finite(input.vertices[v]))
+      return refuse(StatusCode::NonFiniteVertex, "vertex " + std::to_string(v) + " has a non-finite coordinate");
+  for (int f = 0; f < static_cast<int>(input.faces.size()); ++f)
+    for (int v : input.faces[f])
+      if (v < 0 || v >= nv)
+        return refuse(StatusCode::IndexOutOfRange, "face " + std::to_string(f) + " refers to vertex " +
+                                                       std::to_string(v) + " but the mesh has " + std::to_string(nv) +
+                                                       " vertices");
+  const TriMesh used = compact(input);
+  const Box3 box = boundingBox(used);
+  const double diagonal = box.size().norm();
+
+  // 1. Close vertices.
+  const std::vector<int> rep = mergeClose(used.vertices, box, options.mergeTolerance * diagonal);
+  for (int v = 0; v < static_cast<int>(rep.size()); ++v) r.mergedVertices += rep[v] != v;
+  std::vector<Face> faces;
+  faces.reserve(used.faces.size());
+  for (Face f : used.faces) {
+    for (int& v : f) v = rep[v];
+    if (f[0] == f[1] || f[1] == f[2] || f[2] == f[0]) {
+      ++r.droppedCollapsedFaces;
+      continue;
+    }
+    faces.push_back(f);
+  }
+  // 2. Copies and double-sided faces.
+  DuplicateOutcome dup = resolveDuplicates(faces);
+  r.droppedDuplicateFaces = dup.exactCopies;
+  r.doubleSidedKeptOne = dup.keptOne;
+  r.doubleSidedDroppedBoth = dup.droppedBoth;
+  faces = std::move(dup.faces);
+  if (faces.empty()) return refuse(StatusCode::EmptyMesh, "mesh has no faces left after dropping degenerate faces");
+  const TriMesh merged = compact(TriMesh{used.vertices, faces});  // the merged-away vertices go
+
+  repairWithCgal(merged, options, diagonal, r);
+
+  describeRepairs(options, r);
   r.status = Status::success();
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

@@ -1,4 +1,4 @@
-// acd table: every cell is one run of this same program (`acd decompose ... -q`), so the table
+// acd-table: every cell is one run of the acd program (`acd decompose ... -q`), so the table
 // measures exactly what a user gets, and methods that are not built in (surface ACD) show "n/a"
 // until they are. Components and times come from each run's report.json; sizes are those of
 // the pieces written as one OBJ file (one object per piece), the same writer for every method.
@@ -48,6 +48,7 @@ struct TableArgs {
   bool keep = false;
   int threads = 0;
   std::string commandLine;
+  std::string acd;  // the acd program; empty: beside this one
 };
 TableArgs args;
 
@@ -74,7 +75,11 @@ void progress(const std::string& text) {
   std::fflush(stderr);
 }
 
-std::string selfPath() { return acdproc::selfExecutable("acd"); }
+/// The acd program the runs use: --acd, else the one beside this program.
+std::string acdPath() {
+  if (!args.acd.empty()) return args.acd;
+  return (fs::path(acdproc::selfExecutable("acd-table")).parent_path() / "acd").string();
+}
 
 std::string format(double v) {
   char b[32];
@@ -137,7 +142,7 @@ Cell runDecompose(const std::string& model, const std::vector<std::string>& extr
   const fs::path dir = fs::path(args.work) / tag;
   std::error_code ec;
   fs::remove_all(dir, ec);
-  std::vector<std::string> argv{selfPath(), "decompose", model};
+  std::vector<std::string> argv{acdPath(), "decompose", model};
   argv.insert(argv.end(), extra.begin(), extra.end());
   argv.insert(argv.end(), {"-q", "-o", dir.string(), "--threads", std::to_string(args.threads)});
   const std::string log = (fs::path(args.work) / (tag + ".log")).string();
@@ -283,10 +288,8 @@ int writeOutputs(const json& j, const std::string& md) {
 
 }  // namespace
 
-CLI::App* addTableCommand(CLI::App& app) {
-  auto* t = app.add_subcommand(
-      "table", "The paper's Table 1 over corpus models (solid and surface ACD against exact decomposition), "
-               "and with --sweep-taus the data of Figures 18-19");
+void addTableOptions(CLI::App& app) {
+  CLI::App* t = &app;
   t->add_option("--models", args.models, "Models: names in --data (NAME.off) or paths")->delimiter(',')->capture_default_str();
   t->add_option("--data", args.data, "Folder of the corpus models")->capture_default_str();
   t->add_option("--taus", args.taus, "Tolerances of the ACD columns")->delimiter(',')->capture_default_str();
@@ -302,7 +305,7 @@ CLI::App* addTableCommand(CLI::App& app) {
   t->add_option("--work", args.work, "Scratch folder for the runs' outputs (default: a fresh temporary folder)");
   t->add_flag("--keep", args.keep, "Keep every run's output folder and log in --work");
   t->add_option("--threads", args.threads, "Worker threads of each ACD run, 0 = all cores")->capture_default_str();
-  return t;
+  t->add_option("--acd", args.acd, "The acd program to run (default: the one beside acd-table)");
 }
 
 int runTable() {
@@ -316,7 +319,7 @@ int runTable() {
   {
     std::ifstream in("/proc/self/cmdline", std::ios::binary);
     std::string part;
-    while (std::getline(in, part, '\0')) args.commandLine += (args.commandLine.empty() ? "acd" : " " + part);
+    while (std::getline(in, part, '\0')) args.commandLine += (args.commandLine.empty() ? "acd-table" : " " + part);
   }
 
   // Read every model first: a typo fails now, not after an hour of runs.

@@ -1,4 +1,4 @@
-// `acd table`: the Table 1 rows (|e|, notch %, every method's components, size and time), the
+// acd-table (bench/table/): the Table 1 rows (|e|, notch %, every method's components, size and time), the
 // Result 1 summary and the tau sweep, on generated shapes whose exact decompositions are known.
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
@@ -23,8 +23,8 @@ TEST(Table, RowsSummaryAndSweep) {
   ASSERT_TRUE(writeMesh(dir / "L.off", l).ok());
   ASSERT_TRUE(writeMesh(dir / "U.off", u).ok());
   const auto r = acdtest::runTool(
-      ACD_CLI,
-      "table --models " + quote(dir / "L.off") + "," + quote(dir / "U.off") + " --taus 0.2 --exact-time-limit 60" +
+      ACD_TABLE,
+      "--models " + quote(dir / "L.off") + "," + quote(dir / "U.off") + " --taus 0.2 --exact-time-limit 60" +
           " --sweep-models " + quote(dir / "L.off") + " --sweep-taus 0.3,0.1 --json " + quote(dir / "t.json") +
           " --markdown " + quote(dir / "t.md") + " --work " + quote(dir / "work"),
       dir);
@@ -62,10 +62,10 @@ TEST(Table, RowsSummaryAndSweep) {
 
 TEST(Table, BadArguments) {
   acdtest::TempDir dir("table_bad");
-  auto r = acdtest::runTool(ACD_CLI, "table --models " + quote(dir / "missing.off"), dir);
+  auto r = acdtest::runTool(ACD_TABLE, "--models " + quote(dir / "missing.off"), dir);
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("missing.off"), std::string::npos) << r.err;
   ASSERT_TRUE(writeMesh(dir / "L.off", shapes::lShape()).ok());
-  r = acdtest::runTool(ACD_CLI, "table --models " + quote(dir / "L.off") + " --taus 0.2,-1", dir);
+  r = acdtest::runTool(ACD_TABLE, "--models " + quote(dir / "L.off") + " --taus 0.2,-1", dir);
   EXPECT_EQ(r.code, 3) << r.err;
 }
