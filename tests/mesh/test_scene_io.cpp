@@ -202,7 +202,9 @@ TEST(SceneIo, BinaryFormatsExportedByAssimpReadBackTheSameScene) {
 
 TEST(SceneIo, BadFilesAreStatusesNeverCrashes) {
   TempDir dir("scene_bad");
-  writeText(dir / "garbage.glb", std::string("glTF\x02\0\0\0\xff\xff\xff\x7f garbage", 24));
+  // A GLB header (magic, version 2, an absurd length) then text; the NULs need the explicit size.
+  static const char garbage[] = "glTF\x02\0\0\0\xff\xff\xff\x7f garbage";
+  writeText(dir / "garbage.glb", std::string(garbage, sizeof garbage - 1));
   writeText(dir / "empty.fbx", "");
   writeText(dir / "text.3mf", "not a zip archive");
   writeText(dir / "nogeometry.dae",
