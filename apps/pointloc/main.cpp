@@ -14,6 +14,7 @@
 #include "point_stream.hpp"
 #include "statistics.hpp"
 
+#include <acd/algo/parallel.hpp>
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/inside.hpp>
@@ -65,15 +66,7 @@ std::uint64_t overBlocks(tbb::task_arena& arena, std::uint64_t n, const char* pr
   const std::uint64_t round = progress ? std::max<std::uint64_t>(1, blocks / 100) : std::max<std::uint64_t>(blocks, 1);
   for (std::uint64_t b0 = 0; b0 < blocks; b0 += round) {
     const std::uint64_t b1 = std::min(blocks, b0 + round);
-    arena.execute([&] {
-      tbb::parallel_for(
-          tbb::blocked_range<std::uint64_t>(b0, b1, 1),
-          [&](const tbb::blocked_range<std::uint64_t>& r) {
-            for (std::uint64_t b = r.begin(); b != r.end(); ++b)
-              counts[b] = body(b * kBlock, std::min(n, (b + 1) * kBlock));
-          },
-          tbb::simple_partitioner());
-    });
+    acd::forEachBlock(arena, b0, b1, [&](std::uint64_t b) { counts[b] = body(b * kBlock, std::min(n, (b + 1) * kBlock)); });
     if (progress) std::fprintf(stderr, "\r%s: %3.0f%%", progress, 100.0 * static_cast<double>(b1) / blocks);
   }
   if (progress && blocks > 0) std::fprintf(stderr, "\n");
@@ -299,7 +292,7 @@ int main(int argc, char** argv) {
   }
 
   const PointStream points(seed, box);
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  tbb::task_arena arena = acd::workerArena(threads);
   const int usedThreads = arena.max_concurrency();
   const auto tGrid = Clock::now();
   if (!noIndex) hulls.buildIndex(box, gridCells, arena);
@@ -425,7 +418,7 @@ int main(int argc, char** argv) {
       m.disagreements = disagreements();
       return m;
     };
-    tbb::task_arena single(1);
+    tbb::task_arena single = acd::workerArena(1);
 
     Method acdAll{"ACD hulls (grid)", false, decomposeSeconds + indexSeconds, usedThreads, samples, locateSeconds,
                   inside};

@@ -9,6 +9,7 @@
 #include <acd/algo/hull_excess.hpp>
 #include <acd/algo/knot_graph.hpp>
 #include <acd/algo/merge.hpp>
+#include <acd/algo/parallel.hpp>
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/hull.hpp>
@@ -506,43 +507,46 @@ Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options) {
   std::vector<Piece> pending = firstPieces(prepared.components, o.invariant, result, inverse);
   result.times.prepare = secondsSince(t);
 
-  const ThreadLimit limit(o.threads);
-  FinalPieces<Piece, Outcome> rounds = runRounds(
-      std::move(pending), o.maxComponents, [&](const Piece& piece) { return processPiece(piece, o); },
-      [&](const Outcome& out) {
-        accumulate(result.times, out.times);
-        accumulate(result.stats, out.stats);
-      },
-      [](Outcome& out) {
-        out.component.unresolved = true;
-        out.component.note = "maximum number of components reached";
-      },
-      [](const Piece&, Outcome& out, std::vector<Piece>& next) {
-        for (Piece& child : out.children) next.push_back(std::move(child));
-      },
-      o.progress);
-  std::vector<Piece> finals = std::move(rounds.pieces);
-  std::vector<Component> finalInfo;
-  for (Outcome& out : rounds.outcomes) finalInfo.push_back(std::move(out.component));
+  // Every parallel loop below, nested ones included, runs on these workers only.
+  tbb::task_arena arena = workerArena(o.threads);
+  arena.execute([&] {
+    FinalPieces<Piece, Outcome> rounds = runRounds(
+        std::move(pending), o.maxComponents, [&](const Piece& piece) { return processPiece(piece, o); },
+        [&](const Outcome& out) {
+          accumulate(result.times, out.times);
+          accumulate(result.stats, out.stats);
+        },
+        [](Outcome& out) {
+          out.component.unresolved = true;
+          out.component.note = "maximum number of components reached";
+        },
+        [](const Piece&, Outcome& out, std::vector<Piece>& next) {
+          for (Piece& child : out.children) next.push_back(std::move(child));
+        },
+        o.progress);
+    std::vector<Piece> finals = std::move(rounds.pieces);
+    std::vector<Component> finalInfo;
+    for (Outcome& out : rounds.outcomes) finalInfo.push_back(std::move(out.component));
 
-  t = Clock::now();
-  if (o.merge) mergePieces(finals, finalInfo, o, result.stats);
-  result.times.merging = secondsSince(t);
+    t = Clock::now();
+    if (o.merge) mergePieces(finals, finalInfo, o, result.stats);
+    result.times.merging = secondsSince(t);
 
-  t = Clock::now();
-  result.components.resize(finals.size());
-  tbb::parallel_for(std::size_t(0), finals.size(), [&](std::size_t i) {
-    Component& c = result.components[i];
-    c = finalInfo[i];
-    // The hull is computed in the input's coordinates, so that it contains the component (vertex
-    // order is canonical, so is the hull's triangulation). Volumes are measured on both brought to
-    // the normalised frame: in the input's coordinates a model far from the origin loses digits.
-    c.mesh = o.invariant ? toInput(finals[i], inverse) : inverse(finals[i].mesh);
-    c.hull = convexHull(c.mesh.vertices).mesh;
-    c.volume = signedVolume(applyNormalization(c.mesh, result.normalization));
-    c.hullVolume = signedVolume(applyNormalization(c.hull, result.normalization));
+    t = Clock::now();
+    result.components.resize(finals.size());
+    tbb::parallel_for(std::size_t(0), finals.size(), [&](std::size_t i) {
+      Component& c = result.components[i];
+      c = finalInfo[i];
+      // The hull is computed in the input's coordinates, so that it contains the component (vertex
+      // order is canonical, so is the hull's triangulation). Volumes are measured on both brought to
+      // the normalised frame: in the input's coordinates a model far from the origin loses digits.
+      c.mesh = o.invariant ? toInput(finals[i], inverse) : inverse(finals[i].mesh);
+      c.hull = convexHull(c.mesh.vertices).mesh;
+      c.volume = signedVolume(applyNormalization(c.mesh, result.normalization));
+      c.hullVolume = signedVolume(applyNormalization(c.hull, result.normalization));
+    });
+    result.times.hulls = secondsSince(t);
   });
-  result.times.hulls = secondsSince(t);
   result.times.total = secondsSince(start);
   return result;
 }

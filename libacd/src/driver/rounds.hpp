@@ -1,30 +1,17 @@
 // The recursion of Algorithm 1, shared by the solid and the surface decomposition. Breadth first:
 // every round processes all pending pieces in parallel, each into its own slot, then takes the
-// outcomes in piece order, so the result does not depend on the number of threads.
+// outcomes in piece order, so the result does not depend on the number of threads. The caller
+// runs it in its arena (acd/algo/parallel.hpp).
 #pragma once
 
-#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
 #include <functional>
-#include <memory>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
 namespace acd {
-
-/// Caps the worker threads of all parallel work while it lives (0: no cap).
-class ThreadLimit {
- public:
-  explicit ThreadLimit(int threads) {
-    if (threads > 0)
-      limit_ = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
-  }
-
- private:
-  std::unique_ptr<tbb::global_control> limit_;
-};
 
 /// The pieces that came out final, each with the outcome that made it final.
 template <class Piece, class Outcome>

@@ -9,6 +9,7 @@
 #include <acd/algo/features.hpp>
 #include <acd/algo/knot_graph.hpp>
 #include <acd/algo/open_surface.hpp>
+#include <acd/algo/parallel.hpp>
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/hull.hpp>
@@ -450,61 +451,64 @@ SurfaceDecomposition decomposeSurface(const TriMesh& mesh, const SurfaceDecompos
   }
   result.times.prepare = secondsSince(t);
 
-  const ThreadLimit limit(o.threads);
-  FinalPieces<Piece, Outcome> rounds = runRounds(
-      std::move(pending), o.maxPatches, [&](const Piece& piece) { return processPiece(surface, piece, o); },
-      [&](const Outcome& out) {
-        result.times.concavity += out.concavitySeconds;
-        result.times.splitting += out.splittingSeconds;
-      },
-      [](Outcome& out) {
-        out.unresolved = true;
-        out.note = "maximum number of patches reached";
-      },
-      [&](const Piece& parent, Outcome& out, std::vector<Piece>& next) {
-        ++result.stats.splits;
-        if (out.kind == SplitKind::GlobalCut) ++result.stats.globalCutSplits;
-        if (out.kind == SplitKind::Plane) ++result.stats.planeSplits;
-        if (out.kind == SplitKind::Geodesic) ++result.stats.geodesicSplits;
-        for (std::size_t c = 0; c < out.children.size(); ++c) {
-          Piece child;
-          child.faces = std::move(out.children[c]);
-          child.depth = parent.depth + 1;
-          child.source = parent.source;
-          child.concavity = c < out.childConcavity.size() ? out.childConcavity[c] : -1.0;
-          next.push_back(std::move(child));
-        }
-      },
-      o.progress);
-  std::vector<Piece> finals = std::move(rounds.pieces);
-  std::vector<Outcome> finalInfo = std::move(rounds.outcomes);
+  // Every parallel loop below, nested ones included, runs on these workers only.
+  tbb::task_arena arena = workerArena(o.threads);
+  arena.execute([&] {
+    FinalPieces<Piece, Outcome> rounds = runRounds(
+        std::move(pending), o.maxPatches, [&](const Piece& piece) { return processPiece(surface, piece, o); },
+        [&](const Outcome& out) {
+          result.times.concavity += out.concavitySeconds;
+          result.times.splitting += out.splittingSeconds;
+        },
+        [](Outcome& out) {
+          out.unresolved = true;
+          out.note = "maximum number of patches reached";
+        },
+        [&](const Piece& parent, Outcome& out, std::vector<Piece>& next) {
+          ++result.stats.splits;
+          if (out.kind == SplitKind::GlobalCut) ++result.stats.globalCutSplits;
+          if (out.kind == SplitKind::Plane) ++result.stats.planeSplits;
+          if (out.kind == SplitKind::Geodesic) ++result.stats.geodesicSplits;
+          for (std::size_t c = 0; c < out.children.size(); ++c) {
+            Piece child;
+            child.faces = std::move(out.children[c]);
+            child.depth = parent.depth + 1;
+            child.source = parent.source;
+            child.concavity = c < out.childConcavity.size() ? out.childConcavity[c] : -1.0;
+            next.push_back(std::move(child));
+          }
+        },
+        o.progress);
+    std::vector<Piece> finals = std::move(rounds.pieces);
+    std::vector<Outcome> finalInfo = std::move(rounds.outcomes);
 
-  t = Clock::now();
-  if (o.merge) mergePatches(surface, graph, finals, finalInfo, o, result.stats);
-  result.times.merging = secondsSince(t);
+    t = Clock::now();
+    if (o.merge) mergePatches(surface, graph, finals, finalInfo, o, result.stats);
+    result.times.merging = secondsSince(t);
 
-  // Patches in order of their first face: a stable, readable numbering.
-  std::vector<std::size_t> order(finals.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return finals[a].faces.front() < finals[b].faces.front(); });
-  t = Clock::now();
-  result.patches.resize(finals.size());
-  tbb::parallel_for(std::size_t(0), finals.size(), [&](std::size_t k) {
-    const std::size_t i = order[k];
-    SurfacePatch& p = result.patches[k];
-    p.faces = finals[i].faces;
-    p.depth = finals[i].depth;
-    p.source = finals[i].source;
-    p.concavity = finalInfo[i].concavity;
-    p.unresolved = finalInfo[i].unresolved;
-    p.note = finalInfo[i].note;
-    const TriMesh normalised = subMesh(surface, p.faces);
-    p.area = surfaceArea(normalised);
-    const ConvexHull hull = convexHull(normalised.vertices);
-    p.mesh = undoNormalization(normalised, result.normalization);
-    if (!hull.degenerate) p.hull = undoNormalization(hull.mesh, result.normalization);
+    // Patches in order of their first face: a stable, readable numbering.
+    std::vector<std::size_t> order(finals.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return finals[a].faces.front() < finals[b].faces.front(); });
+    t = Clock::now();
+    result.patches.resize(finals.size());
+    tbb::parallel_for(std::size_t(0), finals.size(), [&](std::size_t k) {
+      const std::size_t i = order[k];
+      SurfacePatch& p = result.patches[k];
+      p.faces = finals[i].faces;
+      p.depth = finals[i].depth;
+      p.source = finals[i].source;
+      p.concavity = finalInfo[i].concavity;
+      p.unresolved = finalInfo[i].unresolved;
+      p.note = finalInfo[i].note;
+      const TriMesh normalised = subMesh(surface, p.faces);
+      p.area = surfaceArea(normalised);
+      const ConvexHull hull = convexHull(normalised.vertices);
+      p.mesh = undoNormalization(normalised, result.normalization);
+      if (!hull.degenerate) p.hull = undoNormalization(hull.mesh, result.normalization);
+    });
+    result.times.hulls = secondsSince(t);
   });
-  result.times.hulls = secondsSince(t);
   result.times.total = secondsSince(start);
   return result;
 }

@@ -11,6 +11,7 @@
 // non-convexity is harmless), as half-spaces n.x <= d for the volume test, as triangles
 // (a canonical fan per planar facet) for surface sampling and exact point-to-hull distances.
 #include <acd/algo/closest_point.hpp>
+#include <acd/algo/parallel.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/evaluate.hpp>
 #include <acd/inside.hpp>
@@ -52,20 +53,6 @@ struct Stream {
     return unitInterval(mix64(key ^ mix64(i * 4 + k)));
   }
 };
-
-// ---------------------------------------------------------------- parallel blocks
-
-template <class F>
-void forEachBlock(tbb::task_arena& arena, std::size_t blocks, const F& f) {
-  arena.execute([&] {
-    tbb::parallel_for(
-        tbb::blocked_range<std::size_t>(0, blocks, 1),
-        [&](const tbb::blocked_range<std::size_t>& r) {
-          for (std::size_t b = r.begin(); b != r.end(); ++b) f(b);
-        },
-        tbb::simple_partitioner());
-  });
-}
 
 // ---------------------------------------------------------------- convex hulls
 
@@ -497,7 +484,7 @@ void sampleVolumes(const Box3& box, const HullIndex& index, const InsideTest& lo
   struct Counts { std::int64_t model = 0, onion = 0, both = 0; };
   std::vector<Counts> per(blocks);
   const Stream rng(options.seed, 1);
-  forEachBlock(arena, blocks, [&](std::size_t b) {
+  forEachBlock(arena, std::size_t(0), blocks, [&](std::size_t b) {
     Counts c;
     const std::int64_t end = std::min<std::int64_t>(n, static_cast<std::int64_t>(b + 1) * kBlock);
     for (std::int64_t i = static_cast<std::int64_t>(b) * kBlock; i < end; ++i) {
@@ -555,7 +542,7 @@ void sampleSurfaceDistances(const TriMesh& m, const std::vector<Hull>& hs, const
 
   std::vector<Acc> per(blocks);
   const Stream hullRng(options.seed, 2), modelRng(options.seed, 3);
-  forEachBlock(arena, blocks, [&](std::size_t b) {
+  forEachBlock(arena, std::size_t(0), blocks, [&](std::size_t b) {
     Acc acc;
     const std::int64_t end = std::min<std::int64_t>(n, static_cast<std::int64_t>(b + 1) * kBlock);
     for (std::int64_t i = static_cast<std::int64_t>(b) * kBlock; i < end; ++i) {
@@ -577,7 +564,7 @@ void sampleSurfaceDistances(const TriMesh& m, const std::vector<Hull>& hs, const
   // Model surface -> union of hulls.
   std::fill(per.begin(), per.end(), Acc{});
   if (modelSampler.area() > 0.0) {
-    forEachBlock(arena, blocks, [&](std::size_t b) {
+    forEachBlock(arena, std::size_t(0), blocks, [&](std::size_t b) {
       Acc acc;
       std::vector<std::pair<double, int>> order(hs.size());
       const std::int64_t end = std::min<std::int64_t>(n, static_cast<std::int64_t>(b + 1) * kBlock);
@@ -648,7 +635,7 @@ Evaluation evaluate(const TriMesh& model, const std::vector<TriMesh>& hulls, con
 
   const InsideTest locator(m);
   const HullIndex index(hs, box);
-  tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+  tbb::task_arena arena = workerArena(options.threads);
 
   sampleVolumes(box, index, locator, arena, options, ev);
 

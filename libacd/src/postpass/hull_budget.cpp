@@ -3,6 +3,7 @@
 
 #include <acd/algo/concavity.hpp>
 #include <acd/algo/merge.hpp>
+#include <acd/algo/parallel.hpp>
 #include <acd/algo/surface_graph.hpp>
 #include <acd/evaluate.hpp>
 #include <acd/hull.hpp>
@@ -157,7 +158,7 @@ HullBudgetReport limitHullCount(Decomposition& d, const HullBudgetOptions& optio
   }
   int nextUid = n;
   std::map<std::pair<int, int>, Candidate> measured;  // by (uid, uid): pairs untouched by a merge keep their cost
-  tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+  tbb::task_arena arena = workerArena(options.threads);
 
   while (static_cast<int>(groups.size()) > options.maxHulls) {
     std::vector<TriMesh> meshes;
