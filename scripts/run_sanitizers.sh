@@ -19,6 +19,7 @@ rm -rf "$LOGS"
 mkdir -p "$LOGS"
 export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:strict_string_checks=1:check_initialization_order=1:log_path=$LOGS/asan"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:log_path=$LOGS/ubsan"
+export LSAN_OPTIONS="suppressions=$ROOT/scripts/lsan_suppressions.txt:print_suppressions=0"
 
 skip="$(sed -e 's/#.*//' -e 's/[[:space:]]*$//' -e '/^$/d' scripts/sanitizer_skip.txt | paste -sd'|' -)"
 exclude=()
