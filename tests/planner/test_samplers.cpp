@@ -112,7 +112,9 @@ TEST_F(Samplers, EverySamplerReturnsOnlyValidStates) {
 
 TEST_F(Samplers, AcdCandidatesGatherAroundTheOpenings) {
   problem_->seeds()->reset(5);
-  planner::AcdValidStateSampler sampler(problem_->si().get(), *problem_, 0.1, 0.0, 1, 1234);
+  planner::AcdSamplerSettings settings;
+  settings.uniformFraction = 0.0, settings.orientationTries = 1, settings.alignedFraction = 0.0;
+  planner::AcdValidStateSampler sampler(problem_->si().get(), *problem_, 0.1, settings, 1234);
   auto* state = problem_->si()->allocState();
   double meanDistance = 0;
   const int n = 400;

@@ -8,15 +8,17 @@
 namespace planner {
 
 AcdValidStateSampler::AcdValidStateSampler(const ompl::base::SpaceInformation* si, const PlanningProblem& problem,
-                                           double spread, double uniformFraction, unsigned orientationTries,
-                                           std::uint32_t seed)
+                                           double spread, const AcdSamplerSettings& settings, std::uint32_t seed)
     : ValidStateSampler(si),
       problem_(problem),
       sampler_(si->allocStateSampler()),
       rng_(seed),
       spread_(spread),
-      uniformFraction_(uniformFraction),
-      orientationTries_(std::max(1u, orientationTries)) {
+      uniformFraction_(settings.uniformFraction),
+      alignedFraction_(settings.alignedFraction),
+      tilt_(settings.tilt),
+      orientationTries_(static_cast<unsigned>(std::max(1, settings.orientationTries))),
+      alignment_(problem.alignment()) {
   name_ = "acd";
   // Narrow openings first: weight 1 / area, with areas below pi spread^2 counted as that much,
   // so that slivers left by the decomposition do not take every sample.
@@ -36,13 +38,15 @@ AcdValidStateSampler::AcdValidStateSampler(const ompl::base::SpaceInformation* s
   }
 }
 
-acd::Vec3 AcdValidStateSampler::pointNearOpening() {
-  const auto& openings = problem_.openings();
+int AcdValidStateSampler::chooseOpening() {
   const double w = rng_.uniformReal(0.0, cumulativeWeight_.back());
-  const int which = static_cast<int>(std::min<std::size_t>(
+  return static_cast<int>(std::min<std::size_t>(
       std::lower_bound(cumulativeWeight_.begin(), cumulativeWeight_.end(), w) - cumulativeWeight_.begin(),
-      openings.size() - 1));
-  const Opening& o = openings[which];
+      cumulativeWeight_.size() - 1));
+}
+
+acd::Vec3 AcdValidStateSampler::pointNearOpening(int which) {
+  const Opening& o = problem_.openings()[which];
   const std::vector<double>& cumulative = cumulativeArea_[which];
   const double r = rng_.uniformReal(0.0, cumulative.back());
   const int f = static_cast<int>(std::min<std::size_t>(
@@ -56,23 +60,31 @@ acd::Vec3 AcdValidStateSampler::pointNearOpening() {
   return a + s * (b - a) + t * (c - a) + rng_.gaussian(0.0, spread_) * o.normal;
 }
 
-void AcdValidStateSampler::candidate(ompl::base::State* state) {
+bool AcdValidStateSampler::candidate(ompl::base::State* state) {
   sampler_->sampleUniform(state);  // uniform orientation (and position, kept for the uniform share)
-  if (problem_.openings().empty() || rng_.uniform01() < uniformFraction_) return;
-  problem_.setPosition(state, pointNearOpening());
+  if (problem_.openings().empty() || rng_.uniform01() < uniformFraction_) return false;
+  const int which = chooseOpening();
+  if (alignment_ && rng_.uniform01() < alignedFraction_) {
+    const Pose pose = alignment_->sample(which, rng_, tilt_, spread_);
+    problem_.setPose(state, pose.position, pose.orientation);
+    return true;
+  }
+  problem_.setPosition(state, pointNearOpening(which));
+  return false;
 }
 
 bool AcdValidStateSampler::sample(ompl::base::State* state) {
   ompl::base::State* turned = si_->allocState();
   bool found = false;
   for (unsigned attempt = 0; attempt < attempts_ && !found; ++attempt) {
-    candidate(state);
+    const bool aligned = candidate(state);
     // Where the reference point itself is blocked no orientation helps: next position.
     if (!si_->satisfiesBounds(state) || !problem_.world().pointFree(problem_.position(state))) continue;
     if (si_->isValid(state)) {
       found = true;
       break;
     }
+    if (aligned) continue;  // its orientation is the point of it: a new candidate, not random turns
     // Keep the position and turn the robot: in a passage few orientations fit, and without
     // this the valid states would gather where every orientation fits, away from the passage.
     const acd::Vec3 p = problem_.position(state);

@@ -2,6 +2,7 @@
 // components of the free space (Lien & Amato 2007, Section 7, "Motion planning", Figure 3).
 #pragma once
 
+#include "aligned_poses.hpp"
 #include "openings.hpp"
 
 #include <ompl/base/ValidStateSampler.h>
@@ -15,32 +16,39 @@ namespace planner {
 
 class PlanningProblem;
 
-/// Each attempt draws a position: with probability `uniformFraction` a plain uniform state;
+/// Each attempt draws a candidate: with probability `uniformFraction` a plain uniform state;
 /// otherwise an opening chosen with probability proportional to 1 / max(area, pi spread^2)
-/// (narrow openings first), a point uniform on its shared triangles, moved along the opening's normal by a
-/// normal deviate of std. deviation `spread`. A position whose reference point is not free
-/// is dropped at once; otherwise up to `orientationTries` uniformly random orientations are
-/// tried there. The first valid state within getNrAttempts() positions is returned.
+/// (narrow openings first), and there, for a robot that turns, with probability
+/// `alignedFraction` a pose aligned to the opening (OpeningAlignment::sample, tilt `tilt`),
+/// else a point uniform on the opening's triangles, moved along its normal by a normal deviate
+/// of std. deviation `spread`, where up to `orientationTries` uniformly random orientations are
+/// tried. A candidate whose reference point is not free is dropped at once. The first valid
+/// state within getNrAttempts() candidates is returned.
 class AcdValidStateSampler : public ompl::base::ValidStateSampler {
  public:
   AcdValidStateSampler(const ompl::base::SpaceInformation* si, const PlanningProblem& problem, double spread,
-                       double uniformFraction, unsigned orientationTries, std::uint32_t seed);
+                       const AcdSamplerSettings& settings, std::uint32_t seed);
 
   bool sample(ompl::base::State* state) override;
   bool sampleNear(ompl::base::State* state, const ompl::base::State* near, double distance) override;
 
-  /// One candidate (not checked for validity): exposed for tests.
-  void candidate(ompl::base::State* state);
+  /// One candidate (not checked for validity): exposed for tests. Returns true for an
+  /// aligned pose (whose orientation is not to be replaced by random ones).
+  bool candidate(ompl::base::State* state);
 
  private:
-  acd::Vec3 pointNearOpening();
+  int chooseOpening();
+  acd::Vec3 pointNearOpening(int which);
 
   const PlanningProblem& problem_;
   ompl::base::StateSamplerPtr sampler_;
   ompl::RNG rng_;
   double spread_;
   double uniformFraction_;
+  double alignedFraction_;
+  double tilt_;
   unsigned orientationTries_;
+  const OpeningAlignment* alignment_;                // null: the robot does not turn (a point or a sphere)
   std::vector<double> cumulativeWeight_;             // per opening
   std::vector<std::vector<double>> cumulativeArea_;  // per opening, per triangle
 };

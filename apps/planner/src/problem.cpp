@@ -77,6 +77,9 @@ PlanningProblem::PlanningProblem(const Scenario& scenario, const acd::TriMesh& f
     for (const Opening& o : openings_) reach = std::max(reach, o.radius);
   spread_ = scenario.acd.spread > 0 ? scenario.acd.spread : std::max(0.5 * reach, 1e-6 * scenario.workspace.size().norm());
 
+  if ((robot.kind == RobotKind::Box || robot.kind == RobotKind::Mesh) && !openings_.empty())
+    alignment_ = std::make_unique<OpeningAlignment>(robot, openings_, robot.planar);
+
   start_ = si_->allocState();
   goal_ = si_->allocState();
   setPose(start_, scenario.start.position, scenario.start.orientation);
@@ -164,10 +167,10 @@ void PlanningProblem::useSampler(const std::string& name) {
       return std::make_shared<ob::BridgeTestValidStateSampler>(si);
     });
   } else if (name == "acd") {
-    const double spread = spread_, fraction = scenario_.acd.uniformFraction;
-    const unsigned tries = static_cast<unsigned>(scenario_.acd.orientationTries);
-    si_->setValidStateSamplerAllocator([self, seeds, spread, fraction, tries](const ob::SpaceInformation* si) -> ob::ValidStateSamplerPtr {
-      return std::make_shared<AcdValidStateSampler>(si, *self, spread, fraction, tries, seeds->next());
+    const double spread = spread_;
+    const AcdSamplerSettings settings = scenario_.acd;
+    si_->setValidStateSamplerAllocator([self, seeds, spread, settings](const ob::SpaceInformation* si) -> ob::ValidStateSamplerPtr {
+      return std::make_shared<AcdValidStateSampler>(si, *self, spread, settings, seeds->next());
     });
   } else {
     throw ScenarioError("unknown sampler '" + name + "'");

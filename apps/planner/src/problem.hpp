@@ -3,6 +3,7 @@
 // CollisionWorld, discrete motion checking, and the samplers by name.
 #pragma once
 
+#include "aligned_poses.hpp"
 #include "collision_world.hpp"
 #include "openings.hpp"
 #include "scenario.hpp"
@@ -41,6 +42,9 @@ class PlanningProblem {
   /// "bridge_test") on the space information; samplers allocated later use it.
   void useSampler(const std::string& name);
 
+  /// Poses aligned to the openings; null for a robot that does not turn (a point or a sphere).
+  const OpeningAlignment* alignment() const { return alignment_.get(); }
+
   /// Std. deviation of the ACD sampler across the openings (length units), as resolved.
   double acdSpread() const { return spread_; }
 
@@ -50,6 +54,7 @@ class PlanningProblem {
   const Scenario& scenario_;
   std::vector<Opening> openings_;
   std::unique_ptr<CollisionWorld> world_;
+  std::unique_ptr<OpeningAlignment> alignment_;
   ompl::base::StateSpacePtr space_;
   ompl::base::SpaceInformationPtr si_;
   std::shared_ptr<SeedSource> seeds_;

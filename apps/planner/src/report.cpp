@@ -70,6 +70,7 @@ std::string resultsJson(const Scenario& scenario, const Preprocessing& pre, doub
   j["scenario"] = {{"name", scenario.name}, {"file", scenario.path}, {"seed", scenario.seed},
                    {"samples", scenario.samples}, {"trials", scenario.trials}, {"tau", scenario.acd.tau},
                    {"spread", spread}, {"uniform_fraction", scenario.acd.uniformFraction},
+                   {"aligned_fraction", scenario.acd.alignedFraction}, {"tilt", scenario.acd.tilt},
                    {"neighbors", scenario.prm.neighbors}, {"resolution", scenario.prm.resolution}};
   nlohmann::json openings = nlohmann::json::array();
   for (const Opening& o : pre.openings)

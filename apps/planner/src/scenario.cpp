@@ -362,13 +362,21 @@ class Parser {
     }
     if (root["acd"]) {
       const YAML::Node& n = root["acd"];
-      checkKeys(n, "acd", {"tau", "spread", "uniform_fraction", "orientation_tries"});
+      checkKeys(n, "acd", {"tau", "spread", "uniform_fraction", "orientation_tries", "aligned_fraction", "tilt"});
       if (n["orientation_tries"]) s.acd.orientationTries = positiveInt(n["orientation_tries"], "acd.orientation_tries");
       if (n["tau"]) s.acd.tau = positive(n["tau"], "acd.tau");
       if (n["spread"]) s.acd.spread = positive(n["spread"], "acd.spread");
       if (n["uniform_fraction"]) {
         s.acd.uniformFraction = finite(n["uniform_fraction"], "acd.uniform_fraction");
         if (s.acd.uniformFraction < 0 || s.acd.uniformFraction > 1) fail("'acd.uniform_fraction' must be in [0, 1]");
+      }
+      if (n["aligned_fraction"]) {
+        s.acd.alignedFraction = finite(n["aligned_fraction"], "acd.aligned_fraction");
+        if (s.acd.alignedFraction < 0 || s.acd.alignedFraction > 1) fail("'acd.aligned_fraction' must be in [0, 1]");
+      }
+      if (n["tilt"]) {
+        s.acd.tilt = finite(n["tilt"], "acd.tilt");
+        if (s.acd.tilt < 0) fail("'acd.tilt' must not be negative");
       }
     }
     if (root["seed"]) {

@@ -61,6 +61,8 @@ struct AcdSamplerSettings {
   double spread = -1.0;           // std. deviation across the opening, length units; < 0: half the robot's bounding radius
   double uniformFraction = 0.1;   // share of plain uniform samples mixed in
   int orientationTries = 20;      // random orientations tried at one free position
+  double alignedFraction = 0.5;   // share of the opening samples posed aligned to the opening (turning robots)
+  double tilt = 0.1;              // std. deviation of the aligned poses' random tilt, radians
 };
 
 struct Scenario {
