@@ -1,5 +1,7 @@
 #include "scenario.hpp"
 
+#include "scene_reader.hpp"
+
 #include <acd/diagnosis.hpp>
 #include <acd/inside.hpp>
 #include <acd/io.hpp>
@@ -123,10 +125,12 @@ class Parser {
   }
 
   /// The triangles of a mesh file (OFF/OBJ/PLY/STL, or a scene through assimp), as they are.
+  /// Scene files are read as the acd command reads them, in a child process under a memory
+  /// and a time cap: a file on which assimp crashes or runs away is a refusal, not an abort.
   acd::TriMesh meshFile(const YAML::Node& node, const std::string& where) const {
     const std::string file = resolve(scalar<std::string>(node, where));
     if (!std::filesystem::exists(file)) fail("'" + where + "': " + file + ": file not found");
-    acd::ReadResult read = acd::readMesh(file);
+    acd::ReadResult read = acdcli::readModel(file);
     if (!read.status.ok()) fail("'" + where + "': " + read.status.message);
     return std::move(read.mesh);
   }
