@@ -3,7 +3,7 @@
 // the harness aborts when the reader's promises do not hold.
 // With ACD_FUZZ_SCENE the first byte picks one of the scene formats read through assimp
 // (kSceneNames) and the rest is the file: one harness, one smoke run, for five formats. Those
-// are read as the acd command reads them, in a capped child (apps/acd/scene_reader.hpp): assimp
+// are read as the acd command reads them, in a capped child (sandbox/scene_reader.hpp): assimp
 // aborts and allocates without bound on some inputs, which must come back as refusals.
 #include <acd/diagnosis.hpp>
 #include <acd/io.hpp>
@@ -77,10 +77,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const acd::TriMesh& object : read.objects) checkMesh(object);
 #elif defined(ACD_FUZZ_SCENE)
   // Short caps: an input that needs more is a refusal here, as a larger cap would make it one in acd.
-  acdcli::SceneReaderCaps caps;
+  acdsandbox::SceneReaderCaps caps;
   caps.wallSeconds = 8;
   caps.memoryBytes = std::uint64_t(2) << 30;
-  const acd::SceneMeshes scene = acdcli::readSceneFromMemoryIsolated(bytes, name, caps);
+  const acd::SceneMeshes scene = acdsandbox::readSceneFromMemoryIsolated(bytes, name, caps);
   acd::ReadResult read{scene.status, {}};
   if (scene.status.ok()) {
     require(scene.meshes.size() == scene.names.size(), "one name per placed mesh");

@@ -163,7 +163,7 @@ int summarize(std::vector<json> records, double wallSeconds, bool table, const s
 }
 
 std::string hashOfSelf(std::string& executable) {
-  executable = acdproc::selfExecutable("acd");
+  executable = acdsandbox::selfExecutable("acd");
   std::string hex, error;
   if (!sha256File(executable, hex, error)) return "unknown";
   return hex;
@@ -283,7 +283,7 @@ CLI::App* addBatchCommand(CLI::App& app, const CLI::App& decompose) {
 /// --dask: the same command line, less --dask, handed to python/acd/batch.py (Debian's python3).
 /// The file is run as a script, not as `-m acd.batch`: it needs nothing else of the package.
 int runOnDask() {
-  const std::string self = acdproc::selfExecutable("acd");
+  const std::string self = acdsandbox::selfExecutable("acd");
   // The copy next to this executable (the build tree's python/), else the source tree's.
   std::string script;
   for (const fs::path& dir : {fs::path(self).parent_path().parent_path() / "python", fs::path(ACD_PYTHON_SOURCE_DIR)})

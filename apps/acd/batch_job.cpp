@@ -76,13 +76,13 @@ char testFault(const std::string& meshPath) {
   return 0;
 }
 
-std::string statusOf(const acdproc::ChildOutcome& o) {
+std::string statusOf(const acdsandbox::ChildOutcome& o) {
   switch (o.end) {
-    case acdproc::ChildEnd::TimedOut: return "time_cap";
-    case acdproc::ChildEnd::MemoryCap: return "memory_cap";
-    case acdproc::ChildEnd::Signaled: return "crashed";
-    case acdproc::ChildEnd::StartFailed: return "failed";
-    case acdproc::ChildEnd::Exited: break;
+    case acdsandbox::ChildEnd::TimedOut: return "time_cap";
+    case acdsandbox::ChildEnd::MemoryCap: return "memory_cap";
+    case acdsandbox::ChildEnd::Signaled: return "crashed";
+    case acdsandbox::ChildEnd::StartFailed: return "failed";
+    case acdsandbox::ChildEnd::Exited: break;
   }
   switch (o.exitCode) {
     case 0: return "ok";
@@ -200,10 +200,10 @@ json runBatchJob(const BatchInput& mesh, const BatchSettings& s) {
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
   const char fault = testFault(mesh.path);
-  acdproc::ChildOptions options;
+  acdsandbox::ChildOptions options;
   options.limits = s.limits;
   options.logPath = (partial / "worker.log").string();
-  const acdproc::ChildOutcome o = acdproc::runInChild(
+  const acdsandbox::ChildOutcome o = acdsandbox::runInChild(
       [&](int) {
         if (fault == 'a') ::abort();
         while (fault == 'h') ::pause();
@@ -214,7 +214,7 @@ json runBatchJob(const BatchInput& mesh, const BatchSettings& s) {
 
   const std::string status = statusOf(o);
   r["status"] = status;
-  if (o.end == acdproc::ChildEnd::Exited || (o.end == acdproc::ChildEnd::MemoryCap && o.signal == 0))
+  if (o.end == acdsandbox::ChildEnd::Exited || (o.end == acdsandbox::ChildEnd::MemoryCap && o.signal == 0))
     r["exit_code"] = o.exitCode;
   if (o.signal != 0) r["signal"] = o.signal;
   r["seconds"] = o.seconds;
@@ -233,7 +233,7 @@ json runBatchJob(const BatchInput& mesh, const BatchSettings& s) {
                                                                                : how + ": " + said;
   }
   if (isFailure(status)) fs::remove_all(partial / "files", ec);  // no half results
-  if (status == "bad_options" || o.end == acdproc::ChildEnd::StartFailed) {
+  if (status == "bad_options" || o.end == acdsandbox::ChildEnd::StartFailed) {
     fs::remove_all(partial, ec);  // not the mesh's fault: nothing to remember
     return r;
   }

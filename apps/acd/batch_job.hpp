@@ -21,7 +21,7 @@ struct BatchSettings {
   std::vector<std::string> decomposeArgs;   // options passed on to `acd decompose`, as given
   std::vector<std::string> keyItems;        // the same as sorted "--name=value" items, for the key
   int threads = 1;                          // --threads of each decomposition
-  acdproc::ChildLimits limits;              // per mesh
+  acdsandbox::ChildLimits limits;              // per mesh
   bool retryFailed = false;                 // re-run meshes whose cached outcome is a failure
   std::string executable;                   // the acd binary the workers run
   std::string executableHash;               // part of the cache key: a rebuilt acd recomputes

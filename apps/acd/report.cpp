@@ -156,7 +156,7 @@ int writeReport(const ReportOptions& options) {
 
   // Pictures (f3d under xvfb) and evaluations, in capped child processes, several at a time.
   ::setenv("RENDER_RESOLUTION", "480,360", 0);
-  const std::string self = acdproc::selfExecutable("acd");
+  const std::string self = acdsandbox::selfExecutable("acd");
   std::atomic<std::size_t> next{0};
   auto work = [&] {
     for (std::size_t i; (i = next++) < items.size();) {
@@ -164,22 +164,22 @@ int writeReport(const ReportOptions& options) {
       const std::string name = it.card["name"];
       const std::string key = it.record.value("key", "");
       if (it.renderPicture) {
-        acdproc::ChildOptions o;
+        acdsandbox::ChildOptions o;
         o.limits.wallSeconds = 120;
         o.logPath = (out / "report" / (name + ".png.log")).string();
-        const auto done = acdproc::runProgram(
+        const auto done = acdsandbox::runProgram(
             {"/bin/bash", renderScript(), it.hulls.string(), (out / "report" / (name + ".png")).string()}, o);
         if (done.ok()) std::ofstream(out / "report" / (name + ".png.key")) << key;
         std::error_code e2;
         if (done.ok()) fs::remove(o.logPath, e2);
       }
       if (it.evaluate) {
-        acdproc::ChildOptions o;
+        acdsandbox::ChildOptions o;
         o.limits.wallSeconds = 600;
         o.pipe = false;
         const fs::path log = out / "report" / (name + ".evaluation.log");
         o.logPath = log.string();
-        const auto done = acdproc::runProgram({self, "evaluate", it.record.value("input", ""), it.hulls.string(), "--json",
+        const auto done = acdsandbox::runProgram({self, "evaluate", it.record.value("input", ""), it.hulls.string(), "--json",
                                                "--samples", "200000", "--surface-samples", "20000", "--threads", "1"},
                                               o);
         const std::string text = slurp(log);

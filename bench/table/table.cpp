@@ -78,7 +78,7 @@ void progress(const std::string& text) {
 /// The acd program the runs use: --acd, else the one beside this program.
 std::string acdPath() {
   if (!args.acd.empty()) return args.acd;
-  return (fs::path(acdproc::selfExecutable("acd-table")).parent_path() / "acd").string();
+  return (fs::path(acdsandbox::selfExecutable("acd-table")).parent_path() / "acd").string();
 }
 
 std::string format(double v) {
@@ -89,10 +89,10 @@ std::string format(double v) {
 
 /// Runs `argv` with stdout and stderr into `log`; returns the exit code (128 + signal if killed).
 int runCommand(const std::vector<std::string>& argv, const std::string& log) {
-  acdproc::ChildOptions options;
+  acdsandbox::ChildOptions options;
   options.logPath = log;
-  const acdproc::ChildOutcome o = acdproc::runProgram(argv, options);
-  if (o.end == acdproc::ChildEnd::StartFailed) return -1;
+  const acdsandbox::ChildOutcome o = acdsandbox::runProgram(argv, options);
+  if (o.end == acdsandbox::ChildEnd::StartFailed) return -1;
   return o.signal != 0 ? 128 + o.signal : o.exitCode;
 }
 

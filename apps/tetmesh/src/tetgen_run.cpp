@@ -2,6 +2,7 @@
 #include "tetgen_run.hpp"
 
 #include "child_process.hpp"
+#include "pipe_codec.hpp"
 
 #include <tetgen.h>
 
@@ -22,43 +23,6 @@
 namespace tetmesh {
 
 namespace {
-
-// ------------------------------------------------------------------ byte stream helpers
-void putBytes(std::vector<char>& buf, const void* p, std::size_t n) {
-  const char* c = static_cast<const char*>(p);
-  buf.insert(buf.end(), c, c + n);
-}
-template <class T>
-void put(std::vector<char>& buf, const T& v) { putBytes(buf, &v, sizeof(T)); }
-
-class Reader {
- public:
-  explicit Reader(const std::vector<char>& buf) : buf_(buf) {}
-  template <class T>
-  bool get(T& v) {
-    if (pos_ + sizeof(T) > buf_.size()) return false;
-    std::memcpy(&v, buf_.data() + pos_, sizeof(T));
-    pos_ += sizeof(T);
-    return true;
-  }
-
- private:
-  const std::vector<char>& buf_;
-  std::size_t pos_ = 0;
-};
-
-bool writeAll(int fd, const std::vector<char>& buf) {
-  std::size_t done = 0;
-  while (done < buf.size()) {
-    const ssize_t n = ::write(fd, buf.data() + done, buf.size() - done);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return false;
-    }
-    done += static_cast<std::size_t>(n);
-  }
-  return true;
-}
 
 // Status byte the child sends first.
 constexpr std::int32_t kChildOk = 0, kChildTetGenError = 1;
@@ -98,7 +62,7 @@ void fillInput(const Plc& plc, tetgenio& in) {
 
 /// Child side: run TetGen and serialise the result; never returns.
 [[noreturn]] void childMain(const Plc& plc, const std::string& switches, int fd) {
-  std::vector<char> buf;
+  acdsandbox::PipeWriter w;
   // The tetgenio objects are deliberately leaked: after a TetGen error their destructors crash.
   auto* in = new tetgenio;
   auto* out = new tetgenio;
@@ -111,28 +75,28 @@ void fillInput(const Plc& plc, tetgenio& in) {
     tetrahedralize(&b, in, out);
   } catch (int code) {
     std::fflush(stdout);
-    put(buf, kChildTetGenError);
-    put(buf, static_cast<std::int32_t>(code));
-    writeAll(fd, buf);
+    w.put(kChildTetGenError);
+    w.put(static_cast<std::int32_t>(code));
+    acdsandbox::writeAll(fd, w.data());
     ::_exit(0);
   }
   std::fflush(stdout);
-  put(buf, kChildOk);
+  w.put(kChildOk);
   const std::int32_t np = out->numberofpoints, nt = out->numberoftetrahedra, nf = out->numberoftrifaces;
   const std::int32_t na = out->numberoftetrahedronattributes;
-  put(buf, np);
-  putBytes(buf, out->pointlist, sizeof(REAL) * 3 * static_cast<std::size_t>(np));
-  put(buf, nt);
+  w.put(np);
+  w.bytes(out->pointlist, sizeof(REAL) * 3 * static_cast<std::size_t>(np));
+  w.put(nt);
   for (std::int32_t t = 0; t < nt; ++t)
-    for (int k = 0; k < 4; ++k) put(buf, static_cast<std::int32_t>(out->tetrahedronlist[t * out->numberofcorners + k]));
-  put(buf, na);
-  for (std::int32_t t = 0; t < nt && na > 0; ++t) put(buf, static_cast<double>(out->tetrahedronattributelist[t * na]));
-  put(buf, nf);
+    for (int k = 0; k < 4; ++k) w.put(static_cast<std::int32_t>(out->tetrahedronlist[t * out->numberofcorners + k]));
+  w.put(na);
+  for (std::int32_t t = 0; t < nt && na > 0; ++t) w.put(static_cast<double>(out->tetrahedronattributelist[t * na]));
+  w.put(nf);
   for (std::int32_t f = 0; f < nf; ++f)
-    for (int k = 0; k < 3; ++k) put(buf, static_cast<std::int32_t>(out->trifacelist[3 * f + k]));
+    for (int k = 0; k < 3; ++k) w.put(static_cast<std::int32_t>(out->trifacelist[3 * f + k]));
   for (std::int32_t f = 0; f < nf; ++f)
-    put(buf, static_cast<std::int32_t>(out->trifacemarkerlist ? out->trifacemarkerlist[f] : 0));
-  writeAll(fd, buf);
+    w.put(static_cast<std::int32_t>(out->trifacemarkerlist ? out->trifacemarkerlist[f] : 0));
+  acdsandbox::writeAll(fd, w.data());
   ::_exit(0);
 }
 
@@ -212,7 +176,7 @@ TetGenResult runTetGen(const Plc& plc, const TetGenOptions& options) {
   }
   const auto start = std::chrono::steady_clock::now();
 
-  // TetGen runs in a child process (acd_process) under the time cap; its messages go to a log.
+  // TetGen runs in a child process (acd_sandbox) under the time cap; its messages go to a log.
   char logPath[] = "/tmp/tetmesh_tetgen_XXXXXX";
   const int logFd = ::mkstemp(logPath);
   if (logFd < 0) {
@@ -220,13 +184,12 @@ TetGenResult runTetGen(const Plc& plc, const TetGenOptions& options) {
     return r;
   }
   ::close(logFd);
-  acdproc::ChildOptions child;
+  acdsandbox::ChildOptions child;
   child.pipe = true;
   child.logPath = logPath;
   child.limits.wallSeconds = options.timeoutSeconds;
-  const acdproc::ChildOutcome outcome = acdproc::runInChild(
+  const acdsandbox::ChildOutcome outcome = acdsandbox::runInChild(
       [&](int fd) -> int { childMain(plc, r.switches, fd); }, child);
-  const std::vector<char> buf(outcome.data.begin(), outcome.data.end());
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::string log;
   {
@@ -236,18 +199,18 @@ TetGenResult runTetGen(const Plc& plc, const TetGenOptions& options) {
     log = s.str();
   }
   ::unlink(logPath);
-  if (outcome.end == acdproc::ChildEnd::StartFailed) {
+  if (outcome.end == acdsandbox::ChildEnd::StartFailed) {
     r.error = "cannot start a process for TetGen: " + outcome.error;
     return r;
   }
 
-  Reader rd(buf);
+  acdsandbox::PipeReader rd(outcome.data);
   std::int32_t kind = -1;
   if (!rd.get(kind)) {
     const std::string said = tetgenMessage(log);
-    if (outcome.end == acdproc::ChildEnd::TimedOut)
+    if (outcome.end == acdsandbox::ChildEnd::TimedOut)
       r.error = "TetGen did not finish within " + std::to_string(options.timeoutSeconds) + " s";
-    else if (outcome.end == acdproc::ChildEnd::Signaled)
+    else if (outcome.end == acdsandbox::ChildEnd::Signaled)
       r.error = std::string("TetGen crashed (") + strsignal(outcome.signal) + ")";
     else
       r.error = "TetGen ended without a result";

@@ -1,4 +1,4 @@
-// `acd` on scene files (assimp formats): read in a capped child process (apps/acd/scene_reader),
+// `acd` on scene files (assimp formats): read in a capped child process (sandbox/scene_reader),
 // so that a file on which assimp misbehaves costs seconds and ends in a one-line refusal.
 #include "helpers.hpp"
 

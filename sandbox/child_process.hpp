@@ -1,6 +1,6 @@
 // Running a job in a child process under a wall-clock cap and a memory cap, and telling how it
 // ended: exit code, signal, time cap or memory cap, with its wall time and peak memory.
-// The one home for process isolation in the applications (acd batch, acd-table, tetmesh).
+// The one home for process isolation (sandbox/): acd batch, acd-table, tetmesh, the scene reader.
 #pragma once
 
 #include <cstdint>
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace acdproc {
+namespace acdsandbox {
 
 struct ChildLimits {
   double wallSeconds = 0;         // > 0: the child (and its process group) is killed when it runs longer
@@ -56,4 +56,4 @@ ChildOutcome runProgram(const std::vector<std::string>& argv, const ChildOptions
 /// The path of the running executable (/proc/self/exe), or `fallback`.
 std::string selfExecutable(const std::string& fallback);
 
-}  // namespace acdproc
+}  // namespace acdsandbox

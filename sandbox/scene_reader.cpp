@@ -1,19 +1,19 @@
-// The child reads the scene with libacd and writes it into a pipe: a status code and message,
-// then per mesh its name, vertices (3 doubles each) and faces (3 int32 each). The parent decodes
-// it; a child that crashed, hit a cap or wrote something malformed is a refusal naming the file.
+// The child reads the scene with libacd and writes it into the pipe (pipe_codec.hpp): a status
+// code and message, then per mesh its name, vertices (3 doubles each) and faces (3 int32 each).
+// The parent decodes it; a child that crashed, hit a cap or wrote something malformed is a refusal naming the file.
 #include "scene_reader.hpp"
 
 #include "child_process.hpp"
+#include "pipe_codec.hpp"
 
 #include <signal.h>
 #include <unistd.h>
 
 #include <cstdint>
-#include <cstring>
 #include <filesystem>
 #include <system_error>
 
-namespace acdcli {
+namespace acdsandbox {
 namespace {
 
 // assimp's working memory on honest files stays within a few dozen times the file's size;
@@ -23,85 +23,50 @@ constexpr std::uint64_t kMemoryPerByte = 64;
 constexpr double kSecondsFloor = 120.0;
 constexpr double kSecondsPerMiB = 10.0;
 
-class Encoder {
- public:
-  void u64(std::uint64_t v) { raw(&v, sizeof v); }
-  void text(const std::string& s) { u64(s.size()), raw(s.data(), s.size()); }
-  void raw(const void* p, std::size_t n) { bytes_.append(static_cast<const char*>(p), n); }
-  const std::string& bytes() const { return bytes_; }
-
- private:
-  std::string bytes_;
-};
-
-class Decoder {
- public:
-  explicit Decoder(const std::string& bytes) : bytes_(bytes) {}
-  bool u64(std::uint64_t& v) { return raw(&v, sizeof v); }
-  bool text(std::string& s) {
-    std::uint64_t n = 0;
-    if (!u64(n) || n > left()) return false;
-    s.assign(bytes_, at_, n);
-    at_ += n;
-    return true;
-  }
-  bool raw(void* p, std::size_t n) {
-    if (n > left()) return false;
-    std::memcpy(p, bytes_.data() + at_, n);
-    at_ += n;
-    return true;
-  }
-  std::size_t left() const { return bytes_.size() - at_; }
-
- private:
-  const std::string& bytes_;
-  std::size_t at_ = 0;
-};
-
 std::string encode(const acd::SceneMeshes& scene) {
-  Encoder e;
-  e.u64(static_cast<std::uint64_t>(scene.status.code));
-  e.text(scene.status.message);
-  e.u64(scene.meshes.size());
+  PipeWriter w;
+  w.put(static_cast<std::uint64_t>(scene.status.code));
+  w.text(scene.status.message);
+  w.put(static_cast<std::uint64_t>(scene.meshes.size()));
   for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
     const acd::TriMesh& mesh = scene.meshes[m];
-    e.text(m < scene.names.size() ? scene.names[m] : std::string());
-    e.u64(mesh.vertices.size());
+    w.text(m < scene.names.size() ? scene.names[m] : std::string());
+    w.put(static_cast<std::uint64_t>(mesh.vertices.size()));
     for (const acd::Vec3& v : mesh.vertices) {
       const double xyz[3] = {v.x(), v.y(), v.z()};
-      e.raw(xyz, sizeof xyz);
+      w.put(xyz);
     }
-    e.u64(mesh.faces.size());
+    w.put(static_cast<std::uint64_t>(mesh.faces.size()));
     for (const acd::Face& f : mesh.faces) {
       const std::int32_t abc[3] = {f[0], f[1], f[2]};
-      e.raw(abc, sizeof abc);
+      w.put(abc);
     }
   }
-  return e.bytes();
+  return w.data();
 }
 
-bool decode(const std::string& bytes, acd::SceneMeshes& scene) {
-  Decoder d(bytes);
+bool decode(std::string_view bytes, acd::SceneMeshes& scene) {
+  PipeReader r(bytes);
   std::uint64_t code = 0, meshes = 0;
-  if (!d.u64(code) || code > static_cast<std::uint64_t>(acd::StatusCode::InternalError)) return false;
+  if (!r.get(code) || code > static_cast<std::uint64_t>(acd::StatusCode::InternalError)) return false;
   scene.status.code = static_cast<acd::StatusCode>(code);
-  if (!d.text(scene.status.message) || !d.u64(meshes)) return false;
+  if (!r.text(scene.status.message) || !r.get(meshes)) return false;
   for (std::uint64_t m = 0; m < meshes; ++m) {
     acd::TriMesh mesh;
     std::string name;
     std::uint64_t n = 0;
-    if (!d.text(name) || !d.u64(n) || n > d.left() / (3 * sizeof(double))) return false;
+    if (!r.text(name) || !r.get(n) || !r.fits(n, 3 * sizeof(double))) return false;
     mesh.vertices.resize(n);
     for (acd::Vec3& v : mesh.vertices) {
-      double xyz[3];
-      d.raw(xyz, sizeof xyz);
+      double xyz[3] = {};  // (fits() above: the bytes are there)
+      r.get(xyz);
       v = acd::Vec3(xyz[0], xyz[1], xyz[2]);
     }
-    if (!d.u64(n) || n > d.left() / (3 * sizeof(std::int32_t))) return false;
+    if (!r.get(n) || !r.fits(n, 3 * sizeof(std::int32_t))) return false;
     mesh.faces.resize(n);
     for (acd::Face& f : mesh.faces) {
-      std::int32_t abc[3];
-      d.raw(abc, sizeof abc);
+      std::int32_t abc[3] = {};
+      r.get(abc);
       for (int k = 0; k < 3; ++k) {
         if (abc[k] < 0 || static_cast<std::size_t>(abc[k]) >= mesh.vertices.size()) return false;
         f[k] = abc[k];
@@ -110,17 +75,7 @@ bool decode(const std::string& bytes, acd::SceneMeshes& scene) {
     scene.meshes.push_back(std::move(mesh));
     scene.names.push_back(std::move(name));
   }
-  return d.left() == 0;
-}
-
-bool writeAll(int fd, const std::string& bytes) {
-  std::size_t done = 0;
-  while (done < bytes.size()) {
-    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (n <= 0) return false;
-    done += static_cast<std::size_t>(n);
-  }
-  return true;
+  return r.left() == 0;
 }
 
 acd::SceneMeshes refused(const std::string& path, const std::string& why) {
@@ -132,7 +87,7 @@ acd::SceneMeshes refused(const std::string& path, const std::string& why) {
 /// Runs `read` in a child under the caps (those left at zero derived from `bytes`, the file's size).
 template <class Read>
 acd::SceneMeshes isolated(const std::string& name, std::uint64_t bytes, SceneReaderCaps caps, Read&& read) {
-  acdproc::ChildOptions options;
+  ChildOptions options;
   options.pipe = true;
   options.limits.memoryBytes = caps.memoryBytes > 0 ? caps.memoryBytes : kMemoryFloor + kMemoryPerByte * bytes;
   options.limits.wallSeconds =
@@ -140,7 +95,7 @@ acd::SceneMeshes isolated(const std::string& name, std::uint64_t bytes, SceneRea
   // The callers are single-threaded when they read (the CLI reads before it decomposes), so the
   // child may allocate and run assimp. It dies by the signal of a crash, whatever handler the
   // caller installed (a fuzzer's, an interpreter's): the parent turns that into a refusal.
-  const acdproc::ChildOutcome child = acdproc::runInChild(
+  const ChildOutcome child = runInChild(
       [&](int fd) {
         for (int s : {SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGILL}) ::signal(s, SIG_DFL);
         return writeAll(fd, encode(read())) ? 0 : 1;
@@ -148,7 +103,7 @@ acd::SceneMeshes isolated(const std::string& name, std::uint64_t bytes, SceneRea
       options);
   const std::string memory = std::to_string(options.limits.memoryBytes >> 20) + " MiB";
   if (!child.ok()) {
-    if (child.end == acdproc::ChildEnd::MemoryCap)
+    if (child.end == ChildEnd::MemoryCap)
       return refused(name, "the scene reader (assimp) needed more than " + memory);
     return refused(name, "the scene reader (assimp) failed: " + child.describe(options.limits));
   }
@@ -180,4 +135,4 @@ acd::ReadResult readModel(const std::string& path) {
   return {scene.status, acd::concatenate(scene.meshes)};
 }
 
-}  // namespace acdcli
+}  // namespace acdsandbox

@@ -1,5 +1,5 @@
-// acd_process: exit codes, signals, the wall-clock cap (with the child's own children), the memory
-// cap, peak memory and the pipe, each against what the child was made to do.
+// sandbox/child_process: exit codes, signals, the wall-clock cap (with the child's own children),
+// the memory cap, peak memory and the pipe, each against what the child was made to do.
 #include "child_process.hpp"
 
 #include <gtest/gtest.h>
@@ -17,10 +17,10 @@
 #include <vector>
 
 namespace fs = std::filesystem;
-using acdproc::ChildEnd;
-using acdproc::ChildOptions;
-using acdproc::runInChild;
-using acdproc::runProgram;
+using acdsandbox::ChildEnd;
+using acdsandbox::ChildOptions;
+using acdsandbox::runInChild;
+using acdsandbox::runProgram;
 
 namespace {
 

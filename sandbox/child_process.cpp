@@ -21,7 +21,7 @@
 #include <fstream>
 #include <sstream>
 
-namespace acdproc {
+namespace acdsandbox {
 
 namespace {
 
@@ -228,4 +228,4 @@ std::string selfExecutable(const std::string& fallback) {
   return std::string(buffer, static_cast<std::size_t>(n));
 }
 
-}  // namespace acdproc
+}  // namespace acdsandbox

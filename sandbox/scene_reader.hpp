@@ -12,7 +12,7 @@
 #include <string>
 #include <string_view>
 
-namespace acdcli {
+namespace acdsandbox {
 
 /// acd::readMesh, with scene formats read in a capped child process (every placed mesh merged).
 acd::ReadResult readModel(const std::string& path);
@@ -29,4 +29,4 @@ acd::SceneMeshes readSceneIsolated(const std::string& path, SceneReaderCaps caps
 /// acd::readSceneFromMemory in a capped child process (the fuzz harness's way in).
 acd::SceneMeshes readSceneFromMemoryIsolated(std::string_view data, const std::string& name, SceneReaderCaps caps = {});
 
-}  // namespace acdcli
+}  // namespace acdsandbox
