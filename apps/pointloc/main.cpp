@@ -14,6 +14,9 @@
 #include "point_stream.hpp"
 #include "statistics.hpp"
 
+#include <appcli/console.hpp>
+#include <appcli/exit_codes.hpp>
+
 #include <acd/algo/parallel.hpp>
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
@@ -50,7 +53,13 @@ using pointloc::PointStream;
 
 namespace {
 
-enum Exit : int { kOk = 0, kUsage = 1, kBadModel = 2, kBadParameter = 3, kOutputFailed = 5, kInternal = 6 };
+using appcli::kBadParameter;
+using appcli::kInternal;
+using appcli::kOk;
+using appcli::kOutputFailed;
+constexpr int kBadModel = appcli::kBadInput;
+
+const appcli::Console kConsole("pointloc");
 
 constexpr std::uint64_t kBlock = 1u << 16;  // points per block (fixed: results never depend on threads)
 
@@ -179,61 +188,51 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? kOk : kUsage;
+    return appcli::usageExit(app.exit(e));
   }
 
   // ---- parameters first: they need no model
   std::uint64_t samples = 0, exactSamples = 0, compareSamples = 0;
   if (!parseCount(samplesText, 1e10, false, samples)) {
-    std::fprintf(stderr, "pointloc: --samples '%s' is not a positive integer <= 1e10\n", samplesText.c_str());
-    return kBadParameter;
+    return kConsole.failf(kBadParameter, "--samples '%s' is not a positive integer <= 1e10", samplesText.c_str());
   }
   char* end = nullptr;
   const double tau = std::strtod(tauText.c_str(), &end);
   if (tauText.empty() || *end != '\0' || !(tau > 0.0 && tau <= 2.0)) {
-    std::fprintf(stderr, "pointloc: --tau '%s' must be a number in (0, 2]\n", tauText.c_str());
-    return kBadParameter;
+    return kConsole.failf(kBadParameter, "--tau '%s' must be a number in (0, 2]", tauText.c_str());
   }
   if (threads < 0) {
-    std::fprintf(stderr, "pointloc: --threads %d must be >= 0\n", threads);
-    return kBadParameter;
+    return kConsole.failf(kBadParameter, "--threads %d must be >= 0", threads);
   }
   if (exactText.empty()) {
     exactSamples = std::min<std::uint64_t>(samples, 2000000);
   } else if (!parseCount(exactText, 1e10, true, exactSamples)) {
-    std::fprintf(stderr, "pointloc: --exact-samples '%s' is not a non-negative integer\n", exactText.c_str());
-    return kBadParameter;
+    return kConsole.failf(kBadParameter, "--exact-samples '%s' is not a non-negative integer", exactText.c_str());
   } else {
     exactSamples = std::min(exactSamples, samples);
   }
   if (compareText.empty()) {
     compareSamples = std::min<std::uint64_t>(samples, 1000000);
   } else if (!parseCount(compareText, 1e8, false, compareSamples)) {  // two bytes of answers per point are kept
-    std::fprintf(stderr, "pointloc: --compare-samples '%s' is not a positive integer <= 1e8\n", compareText.c_str());
-    return kBadParameter;
+    return kConsole.failf(kBadParameter, "--compare-samples '%s' is not a positive integer <= 1e8", compareText.c_str());
   } else {
     compareSamples = std::min(compareSamples, samples);
   }
   if (!(ecdTimeLimit > 0) || !std::isfinite(ecdTimeLimit)) {
-    std::fprintf(stderr, "pointloc: --ecd-time-limit %g must be a positive number of seconds\n", ecdTimeLimit);
-    return kBadParameter;
+    return kConsole.failf(kBadParameter, "--ecd-time-limit %g must be a positive number of seconds", ecdTimeLimit);
   }
   if (repeat < 1 || repeat > 100) {
-    std::fprintf(stderr, "pointloc: --repeat %d must be in [1, 100]\n", repeat);
-    return kBadParameter;
+    return kConsole.failf(kBadParameter, "--repeat %d must be in [1, 100]", repeat);
   }
   if (gridCells == 0 || gridCells > (1u << 24)) {
-    std::fprintf(stderr, "pointloc: --grid-cells %zu must be in [1, 16777216]\n", gridCells);
-    return kBadParameter;
+    return kConsole.failf(kBadParameter, "--grid-cells %zu must be in [1, 16777216]", gridCells);
   }
 
   // Output files are checked before the work, not after a long run.
   for (const std::string* out : {&jsonPath, &dumpPath}) {
     if (out->empty()) continue;
     if (!std::ofstream(*out, std::ios::app)) {
-      std::fprintf(stderr, "pointloc: cannot write %s\n", out->c_str());
-      return kOutputFailed;
+      return kConsole.failf(kOutputFailed, "cannot write %s", out->c_str());
     }
   }
 
@@ -244,20 +243,16 @@ int main(int argc, char** argv) {
   const acd::ReadResult read = acd::readMesh(modelPath);
   if (!read.status.ok()) {
     // The reader's message usually names the file already.
-    if (read.status.message.find(modelPath) != std::string::npos)
-      std::fprintf(stderr, "pointloc: %s\n", read.status.message.c_str());
-    else
-      std::fprintf(stderr, "pointloc: model %s: %s\n", modelPath.c_str(), read.status.message.c_str());
-    return kBadModel;
+    if (read.status.message.find(modelPath) != std::string::npos) return kConsole.fail(kBadModel, read.status.message);
+    return kConsole.failf(kBadModel, "model %s: %s", modelPath.c_str(), read.status.message.c_str());
   }
   // The exact answer ("inside the model") is defined only for a closed surface; a decomposition
   // of a repaired copy would be compared with a question that has no answer.
   const acd::MeshDiagnosis diagnosis = acd::diagnose(read.mesh);
   if (diagnosis.boundaryEdges > 0 || diagnosis.nonManifoldEdges > 0) {
-    std::fprintf(stderr, "pointloc: model %s is not a closed surface (%d boundary, %d non-manifold edges): %s\n",
-                 modelPath.c_str(), diagnosis.boundaryEdges, diagnosis.nonManifoldEdges,
-                 "inside and outside are undefined");
-    return kBadModel;
+    return kConsole.failf(kBadModel, "model %s is not a closed surface (%d boundary, %d non-manifold edges): %s",
+                          modelPath.c_str(), diagnosis.boundaryEdges, diagnosis.nonManifoldEdges,
+                          "inside and outside are undefined");
   }
   const bool progress = isatty(STDERR_FILENO) != 0;
 
@@ -274,10 +269,8 @@ int main(int argc, char** argv) {
   const double decomposeSeconds = since(tDec);
   if (progress) std::fprintf(stderr, "\n");
   if (!dec.status.ok()) {
-    std::fprintf(stderr, "pointloc: model %s: %s\n", modelPath.c_str(), dec.status.message.c_str());
-    return dec.status.code == acd::StatusCode::InvalidParameter ? kBadParameter
-           : dec.status.code == acd::StatusCode::InternalError  ? kInternal
-                                                                : kBadModel;
+    kConsole.sayf("model %s: %s", modelPath.c_str(), dec.status.message.c_str());
+    return appcli::exitFor(dec.status);
   }
 
   const acd::Box3 box = acd::boundingBox(read.mesh);
@@ -312,9 +305,8 @@ int main(int argc, char** argv) {
     // CPU seconds of all threads: on a busy machine the better guide to what location costs.
     locateCpuRuns.push_back(cpuNow(usedThreads == 1) - cpuLoc);
     if (r > 0 && in != inside) {
-      std::fprintf(stderr, "pointloc: internal error: repeated location counted %llu, then %llu\n",
-                   static_cast<unsigned long long>(inside), static_cast<unsigned long long>(in));
-      return kInternal;
+      return kConsole.failf(kInternal, "internal error: repeated location counted %llu, then %llu",
+                            static_cast<unsigned long long>(inside), static_cast<unsigned long long>(in));
     }
     inside = in;
   }
@@ -373,8 +365,7 @@ int main(int argc, char** argv) {
       f << line;
     }
     if (!f) {
-      std::fprintf(stderr, "pointloc: cannot write %s\n", dumpPath.c_str());
-      return kOutputFailed;
+      return kConsole.failf(kOutputFailed, "cannot write %s", dumpPath.c_str());
     }
   }
   const double mainSeconds = since(t0);
@@ -652,8 +643,7 @@ int main(int argc, char** argv) {
     std::ofstream f(jsonPath);
     f << j.dump(2) << "\n";
     if (!f) {
-      std::fprintf(stderr, "pointloc: cannot write %s\n", jsonPath.c_str());
-      return kOutputFailed;
+      return kConsole.failf(kOutputFailed, "cannot write %s", jsonPath.c_str());
     }
   }
   return kOk;

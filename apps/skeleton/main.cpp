@@ -13,6 +13,9 @@
 #include "mcf_skeleton.hpp"
 #include "skeleton_io.hpp"
 
+#include <appcli/console.hpp>
+#include <appcli/exit_codes.hpp>
+
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/io.hpp>
@@ -35,15 +38,9 @@ using namespace skeleton;
 
 namespace {
 
-enum Exit : int {
-  kOk = 0,
-  kUsage = 1,         // bad command line (CLI11 prints the reason)
-  kBadInput = 2,      // a model cannot be read or is not a valid solid, or a deformation failed
-  kBadParameter = 3,  // tau, a deformation spec or a GED setting out of range
-  kUnresolved = 4,    // finished, but some component still exceeds tau (see report.json)
-  kOutputFailed = 5,  // could not write results
-  kInternal = 6,      // a bug: please report
-};
+using namespace appcli;  // the shared exit codes: a failed deformation is kBadInput
+
+const appcli::Console kConsole("skeleton");
 
 const char* exitCodes() {
   return "Exit codes: 0 success; 1 bad command line; 2 unreadable or invalid model, or a deformation failed;\n"
@@ -54,13 +51,10 @@ const char* exitCodes() {
 const bool kProgress = ::isatty(2) != 0;
 
 void progress(const std::string& line) {
-  if (kProgress) std::fprintf(stderr, "skeleton: %s\n", line.c_str());
+  if (kProgress) kConsole.say(line);
 }
 
-int fail(int code, const std::string& message) {
-  std::fprintf(stderr, "skeleton: %s\n", message.c_str());
-  return code;
-}
+int fail(int code, const std::string& message) { return kConsole.fail(code, message); }
 
 /// A closed, outward mesh ready for decomposition, deformation and CGAL: prepareSolid's
 /// repairs applied and its pieces put back into one mesh.
@@ -146,8 +140,7 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);  // prints help or the reason
-    return code == 0 ? kOk : kUsage;
+    return usageExit(app.exit(e));  // CLI11 prints help or the reason
   }
 
   if (!(tau >= 1e-4 && tau <= 2)) return fail(kBadParameter, "--tau must lie in [1e-4, 2], got " + std::to_string(tau));
@@ -157,7 +150,7 @@ int main(int argc, char** argv) {
   if (threads < 0) return fail(kBadParameter, "--threads must be >= 0");
   if (!(tubeRadius >= 0 && tubeRadius <= 0.1)) return fail(kBadParameter, "--tubes must lie in [0, 0.1]");
   if (deformedPaths.empty() && deformSpecs.empty())
-    std::fprintf(stderr, "skeleton: no --deformed or --deform given: only the model's skeletons are written\n");
+    kConsole.say("no --deformed or --deform given: only the model's skeletons are written");
 
   std::vector<Model> models(1);
   {
@@ -215,12 +208,7 @@ int main(int argc, char** argv) {
   for (Model& m : models) {
     progress(m.name + ": decomposing");
     const acd::Decomposition d = acd::decompose(m.mesh, options);
-    if (!d.status.ok()) {
-      const int code = d.status.code == acd::StatusCode::InvalidParameter ? kBadParameter
-                       : d.status.code == acd::StatusCode::InternalError  ? kInternal
-                                                                          : kBadInput;
-      return fail(code, m.source + ": " + d.status.message);
-    }
+    if (!d.status.ok()) return fail(exitFor(d.status), m.source + ": " + d.status.message);
     m.decomposeSeconds = d.times.total;
     std::vector<acd::TriMesh> parts;
     for (const acd::Component& c : d.components) {

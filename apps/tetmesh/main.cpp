@@ -6,6 +6,9 @@
 #include "hull_mesher.hpp"
 #include "tet_files.hpp"
 
+#include <appcli/console.hpp>
+#include <appcli/exit_codes.hpp>
+
 #include <acd/io.hpp>
 
 #include <CLI/CLI.hpp>
@@ -24,14 +27,13 @@ namespace {
 using json = nlohmann::json;
 using namespace tetmesh;
 
-enum Exit : int {
-  kOk = 0,
-  kUsage = 1,         // bad command line
-  kBadInput = 2,      // model unreadable or not a valid solid
-  kBadParameter = 3,  // option out of range
-  kOutputFailed = 5,  // cannot write the mesh or the report
-  kMeshFailed = 6,    // the hulls could not be meshed (TetGen refused or failed): a bug, please report
-};
+using appcli::kBadInput;
+using appcli::kBadParameter;
+using appcli::kOk;
+using appcli::kOutputFailed;
+constexpr int kMeshFailed = appcli::kInternal;  // the hulls could not be meshed (TetGen refused or failed): a bug, please report
+
+const appcli::Console kConsole("tetmesh");
 
 const char* exitCodes() {
   return "Exit codes: 0 success; 1 bad command line; 2 unreadable or invalid model; 3 invalid parameter;\n"
@@ -65,8 +67,7 @@ void addDeformOptions(CLI::App& app, DeformArgs& d) {
 /// Options as given; exit code kBadParameter with a message when they cannot work.
 int deformOptions(const DeformArgs& d, DeformationOptions& o) {
   auto bad = [](const std::string& message) {
-    std::fprintf(stderr, "tetmesh: %s\n", message.c_str());
-    return kBadParameter;
+    return kConsole.fail(kBadParameter, message);
   };
   o.handle = d.handle, o.anchor = d.anchor;
   o.arap.maxIterations = d.iterations;
@@ -91,7 +92,7 @@ int runDeformation(const DeformArgs& d, const DeformationOptions& o, const TetMe
                    DeformationResult& r) {
   r = deformSurface(tets, surface, o);
   if (!r.status.ok()) {
-    std::fprintf(stderr, "tetmesh: %s\n", r.status.message.c_str());
+    kConsole.say(r.status.message);
     return r.status.code == acd::StatusCode::InvalidParameter ? kBadParameter : kMeshFailed;
   }
   std::error_code ec;
@@ -108,8 +109,7 @@ int runDeformation(const DeformArgs& d, const DeformationOptions& o, const TetMe
                                acd::writeObjObjects(base + "parts_before.obj", before, names),
                                acd::writeObjObjects(base + "parts_after.obj", moved, names)})
     if (!s.ok()) {
-      std::fprintf(stderr, "tetmesh: %s\n", s.message.c_str());
-      return kOutputFailed;
+      return kConsole.fail(kOutputFailed, s.message);
     }
   return kOk;
 }
@@ -222,25 +222,20 @@ int run(const Args& a) {
     formatName = ext == "mesh" ? "mesh" : ext == "vtk" ? "vtk" : "tetgen";
   }
   if (!formatName.empty() && !parseTetFormat(formatName, format)) {
-    std::fprintf(stderr, "tetmesh: unknown --format '%s' (vtk, mesh or tetgen)\n", formatName.c_str());
-    return kBadParameter;
+    return kConsole.failf(kBadParameter, "unknown --format '%s' (vtk, mesh or tetgen)", formatName.c_str());
   }
   if (!(a.options.tau > 0) || !std::isfinite(a.options.tau)) {
-    std::fprintf(stderr, "tetmesh: --tau must be positive, got %g\n", a.options.tau);
-    return kBadParameter;
+    return kConsole.failf(kBadParameter, "--tau must be positive, got %g", a.options.tau);
   }
   if (a.options.simplify != 0 && a.options.simplify < 4) {
-    std::fprintf(stderr, "tetmesh: --simplify must be at least 4 (a tetrahedron), got %d\n", a.options.simplify);
-    return kBadParameter;
+    return kConsole.failf(kBadParameter, "--simplify must be at least 4 (a tetrahedron), got %d", a.options.simplify);
   }
   if (a.options.tetgen.radiusEdge != 0 && !(a.options.tetgen.radiusEdge >= 1.0)) {
-    std::fprintf(stderr, "tetmesh: --quality must be at least 1 (TetGen does not terminate below), or 0 for none; got %g\n",
-                 a.options.tetgen.radiusEdge);
-    return kBadParameter;
+    return kConsole.failf(kBadParameter, "--quality must be at least 1 (TetGen does not terminate below), or 0 for none; got %g",
+                          a.options.tetgen.radiusEdge);
   }
   if (a.options.tetgen.maxVolume < 0 || !std::isfinite(a.options.tetgen.maxVolume)) {
-    std::fprintf(stderr, "tetmesh: --max-volume must be positive (or 0 for no bound), got %g\n", a.options.tetgen.maxVolume);
-    return kBadParameter;
+    return kConsole.failf(kBadParameter, "--max-volume must be positive (or 0 for no bound), got %g", a.options.tetgen.maxVolume);
   }
 
   DeformationOptions deformOpts;
@@ -250,17 +245,15 @@ int run(const Args& a) {
 
   const acd::ReadResult read = acd::readMesh(a.model);
   if (!read.status.ok()) {
-    std::fprintf(stderr, "tetmesh: %s\n", read.status.message.c_str());
-    return kBadInput;
+    return kConsole.fail(kBadInput, read.status.message);
   }
-  if (progress) std::fprintf(stderr, "tetmesh: decomposing at tau %g, hulls, TetGen ...\n", a.options.tau);
+  if (progress) kConsole.sayf("decomposing at tau %g, hulls, TetGen ...", a.options.tau);
   const HullMeshResult r = meshHulls(read.mesh, a.options);
   // Written even when TetGen fails on it: that is when it is most useful.
   if (!a.poly.empty() && !r.complex.plc.facets.empty()) {
     const acd::Status s = writePoly(a.poly, r.complex.plc);
     if (!s.ok()) {
-      std::fprintf(stderr, "tetmesh: %s\n", s.message.c_str());
-      return kOutputFailed;
+      return kConsole.fail(kOutputFailed, s.message);
     }
   }
   // The regions as meshed, one OBJ object per component: a picture before the numbers.
@@ -272,28 +265,23 @@ int run(const Args& a) {
         meshes.push_back(r.complex.regions[i]), names.push_back("component_" + std::to_string(i + 1));
     const acd::Status s = acd::writeObjObjects(a.regions, meshes, names);
     if (!s.ok()) {
-      std::fprintf(stderr, "tetmesh: %s\n", s.message.c_str());
-      return kOutputFailed;
+      return kConsole.fail(kOutputFailed, s.message);
     }
   }
   if (!r.status.ok()) {
-    std::fprintf(stderr, "tetmesh: %s: %s\n", a.model.c_str(), r.status.message.c_str());
-    switch (r.status.code) {
-      case acd::StatusCode::InvalidParameter: return kBadParameter;
-      case acd::StatusCode::InternalError: return kMeshFailed;
-      default: return kBadInput;
-    }
+    kConsole.sayf("%s: %s", a.model.c_str(), r.status.message.c_str());
+    return appcli::exitFor(r.status);  // an internal error is kMeshFailed
   }
   DirectMeshResult direct;
   if (a.compare) {
-    if (progress) std::fprintf(stderr, "tetmesh: TetGen on the model itself ...\n");
+    if (progress) kConsole.say("TetGen on the model itself ...");
     direct = meshModelDirectly(read.mesh, a.options.tetgen);
   }
 
   DeformationResult deformed;
   if (!a.deform.dir.empty()) {
     if (progress) {
-      std::fprintf(stderr, "tetmesh: deformation ...\n");
+      kConsole.say("deformation ...");
       deformOpts.arap.progress = [](int iteration, double energy) {
         std::fprintf(stderr, "\r  ARAP iteration %d, energy %.6g   ", iteration, energy);
       };
@@ -306,8 +294,7 @@ int run(const Args& a) {
   if (!a.out.empty()) {
     const acd::Status s = writeTetMesh(a.out, format, r.tetgen.mesh);
     if (!s.ok()) {
-      std::fprintf(stderr, "tetmesh: %s\n", s.message.c_str());
-      return kOutputFailed;
+      return kConsole.fail(kOutputFailed, s.message);
     }
   }
 
@@ -421,8 +408,7 @@ int run(const Args& a) {
     std::ofstream out(a.json);
     out << j.dump(2) << "\n";
     if (!out) {
-      std::fprintf(stderr, "tetmesh: %s: cannot write\n", a.json.c_str());
-      return kOutputFailed;
+      return kConsole.failf(kOutputFailed, "%s: cannot write", a.json.c_str());
     }
   }
   return kOk;
@@ -462,7 +448,7 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? kOk : kUsage;
+    return appcli::usageExit(app.exit(e));
   }
   return run(a);
 }
