@@ -1,0 +1,203 @@
+#include "report.hpp"
+
+#include "deformation_files.hpp"
+#include "mesh_quality.hpp"
+
+#include <appcli/exit_codes.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+namespace tetmesh {
+
+using json = nlohmann::json;
+using appcli::kOutputFailed;
+
+namespace {
+
+json qualityJson(const MeshQuality& q) {
+  json hist = json::array();
+  for (std::size_t b = 0; b < q.radiusEdgeHistogram.size(); ++b)
+    hist.push_back({{"upto", b < kRadiusEdgeBins.size() ? json(kRadiusEdgeBins[b]) : json(nullptr)},
+                    {"tets", q.radiusEdgeHistogram[b]}});
+  return {{"tets", q.tets},
+          {"vertices", q.points},
+          {"volume", q.volume},
+          {"non_positive_tets", q.nonPositiveTets},
+          {"min_dihedral_deg", q.minDihedral},
+          {"max_dihedral_deg", q.maxDihedral},
+          {"radius_edge", {{"min", q.minRadiusEdge}, {"median", q.medianRadiusEdge}, {"max", q.maxRadiusEdge}}},
+          {"radius_edge_histogram", hist}};
+}
+
+std::string histogramLine(const MeshQuality& q) {
+  std::string s;
+  char buf[64];
+  for (std::size_t b = 0; b < q.radiusEdgeHistogram.size(); ++b) {
+    const double share = q.tets > 0 ? 100.0 * q.radiusEdgeHistogram[b] / q.tets : 0.0;
+    if (b < kRadiusEdgeBins.size())
+      std::snprintf(buf, sizeof buf, "%s<=%g: %.1f%%", b ? ", " : "", kRadiusEdgeBins[b], share);
+    else
+      std::snprintf(buf, sizeof buf, ", >%g: %.1f%%", kRadiusEdgeBins.back(), share);
+    s += buf;
+  }
+  return s;
+}
+
+void printColumns(const char* name, const std::string& a, const std::string& b, bool two) {
+  if (two)
+    std::printf("  %-22s %-22s %s\n", name, a.c_str(), b.c_str());
+  else
+    std::printf("  %-22s %s\n", name, a.c_str());
+}
+
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+/// The figures both the summary and the JSON give.
+struct Figures {
+  int unresolved = 0;
+  int n = 0;  // components (hulls)
+  int hullVerts = 0, simpleVerts = 0;
+  double volErr = 0.0, directErr = 0.0;  // tet volume against the model's, relative
+};
+
+Figures figuresOf(const HullMeshResult& r, const DirectMeshResult& direct) {
+  Figures f;
+  for (const acd::Component& c : r.decomposition.components) f.unresolved += c.unresolved ? 1 : 0;
+  f.n = static_cast<int>(r.hulls.size());
+  for (int i = 0; i < f.n; ++i) f.hullVerts += r.hullVertices[i], f.simpleVerts += static_cast<int>(r.hulls[i].vertices.size());
+  f.volErr = r.modelVolume > 0 ? (r.quality.volume - r.modelVolume) / r.modelVolume : 0.0;
+  f.directErr = r.modelVolume > 0 && direct.status.ok() ? (direct.quality.volume - r.modelVolume) / r.modelVolume : 0.0;
+  return f;
+}
+
+}  // namespace
+
+void printReport(const Args& a, TetFormat format, const HullMeshResult& r, const DirectMeshResult& direct,
+                 const DeformationResult& deformed) {
+  const Figures figures = figuresOf(r, direct);
+  const int unresolved = figures.unresolved, n = figures.n, hullVerts = figures.hullVerts,
+            simpleVerts = figures.simpleVerts;
+  const double volErr = figures.volErr, directErr = figures.directErr;
+
+  std::printf("%s\n", a.model.c_str());
+  std::printf("  decomposition  tau %g, %d components%s, %.3f s\n", a.options.tau, n,
+              a.options.merge ? " (with merge pass)" : " (no merge pass)", r.times.decompose);
+  if (unresolved > 0) std::printf("  warning        %d components still exceed tau (see acd decompose)\n", unresolved);
+  if (r.simplifyFallback)
+    std::printf("  hulls          %d vertices; TetGen refused every complex of the hulls simplified to at most %d\n"
+                "                 vertices, so the exact hulls were meshed\n",
+                hullVerts, a.options.simplify);
+  else if (a.options.simplify > 0)
+    std::printf("  hulls          %d vertices, simplified to %d (at most %d each%s; %d hulls could not get there)\n",
+                hullVerts, simpleVerts, r.simplifyUsed,
+                r.simplifyUsed < a.options.simplify ? ", TetGen refused the larger budgets" : "", r.simplifyMissed);
+  else
+    std::printf("  hulls          %d vertices\n", hullVerts);
+  if (a.options.simplify > 0 && !r.simplifyFallback)
+    std::printf("  separation     %d planes keep the simplified hulls apart; %d pairs of exact hulls overlap (cut there)\n",
+                r.separatingPlanes, r.overlappingHulls);
+  std::printf("  containment    farthest component vertex outside its hull: %.3g, outside its meshed region: %.3g\n",
+              r.maxOutside, r.maxOutsideRegion);
+  std::printf("  complex        %d touching pairs (%d overlapping, deepest %.3g), %d contact planes, %d interface + %d boundary facets\n",
+              r.complex.contactPairs, r.complex.overlappingPairs, r.complex.maxOverlapDepth, r.complex.contactPlanes,
+              r.complex.interfaceFacets, r.complex.boundaryFacets);
+  std::printf("  TetGen         -%s (complex snapped at %.0e of the half-diagonal", r.tetgen.switches.c_str(), r.toleranceUsed);
+  if (!r.refusedComplexes.empty()) std::printf("; %zu complexes refused before", r.refusedComplexes.size());
+  std::printf(")\n");
+  const bool two = a.compare;
+  if (two) printColumns("", "hulls", "original model", true);
+  const std::string directNote = direct.status.ok() ? "" : "not meshed";
+  auto col = [&](const std::string& v) { return direct.status.ok() ? v : directNote; };
+  printColumns("tets", std::to_string(r.quality.tets), col(std::to_string(direct.quality.tets)), two);
+  printColumns("vertices", std::to_string(r.quality.points), col(std::to_string(direct.quality.points)), two);
+  printColumns("volume", fmt("%.6g", r.quality.volume), col(fmt("%.6g", direct.quality.volume)), two);
+  printColumns("vs model volume", fmt("%+.2f%%", 100 * volErr), col(fmt("%+.2f%%", 100 * directErr)), two);
+  printColumns("min dihedral (deg)", fmt("%.2f", r.quality.minDihedral), col(fmt("%.2f", direct.quality.minDihedral)), two);
+  printColumns("max dihedral (deg)", fmt("%.2f", r.quality.maxDihedral), col(fmt("%.2f", direct.quality.maxDihedral)), two);
+  printColumns("radius-edge median", fmt("%.3f", r.quality.medianRadiusEdge), col(fmt("%.3f", direct.quality.medianRadiusEdge)), two);
+  printColumns("radius-edge max", fmt("%.3f", r.quality.maxRadiusEdge), col(fmt("%.3f", direct.quality.maxRadiusEdge)), two);
+  printColumns("TetGen time (s)", fmt("%.3f", r.times.tetgen), col(fmt("%.3f", direct.tetgen.seconds)), two);
+  std::printf("  radius-edge    %s\n", histogramLine(r.quality).c_str());
+  if (two && direct.status.ok()) std::printf("  (original)     %s\n", histogramLine(direct.quality).c_str());
+  if (two && !direct.status.ok()) std::printf("  original model not meshed: %s\n", direct.status.message.c_str());
+  std::printf("  time (s)       decompose %.3f, hulls %.3f, complex %.3f, TetGen %.3f, quality %.3f\n", r.times.decompose,
+              r.times.hulls, r.times.complex, r.times.tetgen, r.times.quality);
+  if (!a.out.empty()) {
+    std::printf("  wrote         ");
+    for (const std::string& f : tetOutputFiles(a.out, format)) std::printf(" %s", f.c_str());
+    std::printf("\n");
+  }
+  if (!a.deform.dir.empty())
+    for (const std::string& line : deformationSummary(deformed)) std::printf("%s\n", line.c_str());
+}
+
+int writeJsonReport(const Args& a, const HullMeshResult& r, const DirectMeshResult& direct,
+                    const DeformationResult& deformed) {
+  const Figures figures = figuresOf(r, direct);
+  const int n = figures.n;
+  const double volErr = figures.volErr, directErr = figures.directErr;
+  if (!a.json.empty()) {
+    json comps = json::array();
+    for (int i = 0; i < n; ++i)
+      comps.push_back({{"label", i + 1},
+                       {"hull_vertices", r.hullVertices[i]},
+                       {"meshed_hull_vertices", r.hulls[i].vertices.size()},
+                       {"region_volume", r.complex.regions[i].empty() ? 0.0 : acd::signedVolume(r.complex.regions[i])},
+                       {"clipped_volume", r.complex.clippedVolume[i]},
+                       {"unresolved", r.decomposition.components[i].unresolved}});
+    json j = {{"model", a.model},
+              {"tau", a.options.tau},
+              {"merge", a.options.merge},
+              {"simplify", a.options.simplify},
+              {"simplify_used", r.simplifyUsed},
+              {"separating_planes", r.separatingPlanes},
+              {"overlapping_exact_hulls", r.overlappingHulls},
+              {"simplify_fallback", r.simplifyFallback},
+              {"tetgen_switches", r.tetgen.switches},
+              {"snap_tolerance", r.toleranceUsed},
+              {"refused_complexes", r.refusedComplexes},
+              {"model_volume", r.modelVolume},
+              {"components", comps},
+              {"complex",
+               {{"touching_pairs", r.complex.contactPairs},
+                {"overlapping_pairs", r.complex.overlappingPairs},
+                {"max_overlap_depth", r.complex.maxOverlapDepth},
+                {"contact_planes", r.complex.contactPlanes},
+                {"interface_facets", r.complex.interfaceFacets},
+                {"boundary_facets", r.complex.boundaryFacets}}},
+              {"max_outside", r.maxOutside},
+              {"max_outside_region", r.maxOutsideRegion},
+              {"hull_mesh", qualityJson(r.quality)},
+              {"volume_error", volErr},
+              {"seconds",
+               {{"decompose", r.times.decompose},
+                {"hulls", r.times.hulls},
+                {"complex", r.times.complex},
+                {"tetgen", r.times.tetgen},
+                {"quality", r.times.quality}}}};
+    if (a.compare) {
+      if (direct.status.ok())
+        j["original_mesh"] = qualityJson(direct.quality), j["original_mesh"]["seconds"] = direct.seconds,
+        j["original_mesh"]["volume_error"] = directErr;
+      else
+        j["original_mesh"] = {{"error", direct.status.message}};
+    }
+    if (!a.deform.dir.empty()) j["deformation"] = deformationJson(a.deform, deformed);
+    std::ofstream out(a.json);
+    out << j.dump(2) << "\n";
+    if (!out) {
+      return kConsole.failf(kOutputFailed, "%s: cannot write", a.json.c_str());
+    }
+  }
+  return appcli::kOk;
+}
+
+}  // namespace tetmesh
