@@ -293,38 +293,63 @@ void splitIntoTriangles(Plc& plc) {
   plc.facets = std::move(out);
 }
 
-}  // namespace
+/// The constraints and points of one contact plane's overlay.
+struct PlaneItems {
+  std::vector<std::pair<int, int>> edges;
+  std::vector<int> points;
+};
 
-HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComplexOptions& options) {
-  HullComplex out;
+/// What the steps of buildHullComplex share: the hulls, the tolerance, the contact planes and
+/// which side of them each region keeps, the welded points and the triangles of each region.
+struct ComplexBuild {
+  ComplexBuild(const std::vector<TriMesh>& h, double tolerance) : hulls(h), n(static_cast<int>(h.size())), tol(tolerance), welder(tolerance) {}
+
+  const std::vector<TriMesh>& hulls;
+  int n;
+  double tol;
+  std::vector<ContactPlane> planes;
+  std::vector<std::vector<SideConstraint>> constraints;  // per region
+  PointWelder welder;
+  std::vector<std::vector<Face>> regionTris;            // per region, in global numbering
+  std::vector<std::vector<std::vector<Face>>> planeTris;  // per plane, per region: its face on the plane
+  std::vector<std::vector<Face>> freeTris;              // per region: the rest
+  std::vector<std::vector<int>> touching;               // per region: the planes it touches
+  std::vector<PlaneItems> items;                        // per plane
+  std::map<std::uint64_t, std::set<int>> splits;        // edge -> points strictly inside it
+  std::vector<Plc::Facet> overlayFacets;
+
+  int planeCount() const { return static_cast<int>(planes.size()); }
+  // Welding moves a point by up to tol: a point of a contact face may now be 2 tol off its plane.
+  bool onPlane(int id, int k) const { return std::abs(planes[k].distance(welder.points()[id])) <= 3 * tol; }
+};
+
+/// The hulls' bounding boxes and the box of them all; an error if a hull has no volume.
+acd::Status boxesOf(const std::vector<TriMesh>& hulls, std::vector<acd::Box3>& boxes, acd::Box3& box) {
   const int n = static_cast<int>(hulls.size());
-  if (n == 0) {
-    out.status = acd::Status::error(acd::StatusCode::EmptyMesh, "no hulls to mesh");
-    return out;
-  }
-  // Scale and tolerance.
-  acd::Box3 box;
   box.lo = Vec3::Constant(std::numeric_limits<double>::infinity());
   box.hi = -box.lo;
-  std::vector<acd::Box3> boxes(n);
+  boxes.resize(n);
   for (int i = 0; i < n; ++i) {
-    if (hulls[i].faces.size() < 4 || !(acd::signedVolume(hulls[i]) > 0)) {
-      out.status = acd::Status::error(acd::StatusCode::DegenerateFace,
-                                      "hull " + std::to_string(i + 1) + " is not a solid (no volume)");
-      return out;
-    }
+    if (hulls[i].faces.size() < 4 || !(acd::signedVolume(hulls[i]) > 0))
+      return acd::Status::error(acd::StatusCode::DegenerateFace,
+                                "hull " + std::to_string(i + 1) + " is not a solid (no volume)");
     boxes[i] = acd::boundingBox(hulls[i]);
     box.lo = box.lo.cwiseMin(boxes[i].lo);
     box.hi = box.hi.cwiseMax(boxes[i].hi);
   }
-  const double scale = 0.5 * box.size().norm();
-  const double tol = options.tolerance * scale;
+  return {};
+}
 
-  // 1. Contacts between pairs, on clustered planes.
+/// Step 1: contacts between pairs of hulls, on clustered planes; each region keeps one side.
+void findContacts(ComplexBuild& b, const std::vector<acd::Box3>& boxes, HullComplex& out) {
+  const std::vector<TriMesh>& hulls = b.hulls;
+  const int n = b.n;
+  const double tol = b.tol;
+  std::vector<ContactPlane>& planes = b.planes;
+  std::vector<std::vector<SideConstraint>>& constraints = b.constraints;
+  constraints.resize(n);
   std::vector<std::vector<Vec3>> normals(n);
   for (int i = 0; i < n; ++i) normals[i] = uniqueFacetNormals(hulls[i]);
-  std::vector<ContactPlane> planes;
-  std::vector<std::vector<SideConstraint>> constraints(n);
   for (int i = 0; i < n; ++i)
     for (int j = i + 1; j < n; ++j) {
       const bool apart = ((boxes[i].lo.array() - tol > boxes[j].hi.array()) ||
@@ -370,8 +395,15 @@ HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComple
       addConstraint(j, -sideI);
     }
   out.contactPlanes = static_cast<int>(planes.size());
+}
 
-  // 2. Regions: clip overlaps, snap near-plane vertices onto their planes.
+/// Step 2: the regions — each hull clipped where it overlaps, near-plane vertices snapped onto their planes.
+void clipRegions(const ComplexBuild& b, HullComplex& out) {
+  const std::vector<TriMesh>& hulls = b.hulls;
+  const int n = b.n;
+  const double tol = b.tol;
+  const std::vector<ContactPlane>& planes = b.planes;
+  const std::vector<std::vector<SideConstraint>>& constraints = b.constraints;
   out.regions.resize(n);
   out.clippedVolume.assign(n, 0.0);
   for (int i = 0; i < n; ++i) {
@@ -402,11 +434,18 @@ HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComple
     const acd::ConvexHull h = acd::convexHull(kept);
     if (!h.degenerate) out.regions[i] = h.mesh;
   }
+}
 
-  // Global points and region triangles in global numbering.
-  // Points on more contact planes are welded first, so that they are the ones kept.
-  PointWelder welder(tol);
-  std::vector<std::vector<Face>> regionTris(n);
+/// Global points and region triangles in global numbering. Points on more contact planes are
+/// welded first, so that they are the ones kept.
+void weldRegions(ComplexBuild& b, const HullComplex& out) {
+  const int n = b.n;
+  const double tol = b.tol;
+  const std::vector<ContactPlane>& planes = b.planes;
+  const std::vector<std::vector<SideConstraint>>& constraints = b.constraints;
+  PointWelder& welder = b.welder;
+  std::vector<std::vector<Face>>& regionTris = b.regionTris;
+  regionTris.assign(n, {});
   std::vector<std::vector<int>> regionIds(n);
   {
     struct Entry {
@@ -430,17 +469,24 @@ HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComple
       const Face g{regionIds[i][f[0]], regionIds[i][f[1]], regionIds[i][f[2]]};
       if (g[0] != g[1] && g[1] != g[2] && g[0] != g[2]) regionTris[i].push_back(g);
     }
-  // Welding moves a point by up to tol: a point of a contact face may now be 2 tol off its plane.
-  auto onPlane = [&](int id, int k) { return std::abs(planes[k].distance(welder.points()[id])) <= 3 * tol; };
+}
 
-  // Which triangles lie on a contact plane (they go through the overlay), which are free.
-  const int np = static_cast<int>(planes.size());
-  std::vector<std::vector<std::vector<Face>>> planeTris(np, std::vector<std::vector<Face>>(n));
-  std::vector<std::vector<Face>> freeTris(n);
-  // The planes each region touches: its own contacts first, then any other contact plane it
-  // reaches (a face on a plane of other regions' contact must go through that overlay too, or
-  // it would be a second facet over the overlay's triangles).
-  std::vector<std::vector<int>> touching(n);
+/// Which triangles lie on a contact plane (they go through the overlay), which are free.
+/// The planes each region touches: its own contacts first, then any other contact plane it
+/// reaches (a face on a plane of other regions' contact must go through that overlay too, or
+/// it would be a second facet over the overlay's triangles).
+void classifyTriangles(ComplexBuild& b) {
+  const int n = b.n, np = b.planeCount();
+  const std::vector<ContactPlane>& planes = b.planes;
+  const std::vector<std::vector<SideConstraint>>& constraints = b.constraints;
+  const std::vector<std::vector<Face>>& regionTris = b.regionTris;
+  auto onPlane = [&](int id, int k) { return b.onPlane(id, k); };
+  b.planeTris.assign(np, std::vector<std::vector<Face>>(n));
+  b.freeTris.assign(n, {});
+  b.touching.assign(n, {});
+  std::vector<std::vector<std::vector<Face>>>& planeTris = b.planeTris;
+  std::vector<std::vector<Face>>& freeTris = b.freeTris;
+  std::vector<std::vector<int>>& touching = b.touching;
   for (int i = 0; i < n; ++i) {
     for (const SideConstraint& s : constraints[i]) touching[i].push_back(s.plane);
     for (int k = 0; k < static_cast<int>(planes.size()); ++k) {
@@ -465,13 +511,18 @@ HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComple
         freeTris[i].push_back(f);
     }
 
-  // Constraints and points of each plane: boundary edges of each region's face there, and the
-  // edges and vertices of regions that touch the plane without a face on it.
-  struct PlaneItems {
-    std::vector<std::pair<int, int>> edges;
-    std::vector<int> points;
-  };
-  std::vector<PlaneItems> items(np);
+}
+
+/// Constraints and points of each plane: boundary edges of each region's face there, and the
+/// edges and vertices of regions that touch the plane without a face on it.
+void collectPlaneItems(ComplexBuild& b) {
+  const int n = b.n, np = b.planeCount();
+  const std::vector<std::vector<Face>>& regionTris = b.regionTris;
+  const std::vector<std::vector<std::vector<Face>>>& planeTris = b.planeTris;
+  const std::vector<std::vector<int>>& touching = b.touching;
+  auto onPlane = [&](int id, int k) { return b.onPlane(id, k); };
+  b.items.assign(np, {});
+  std::vector<PlaneItems>& items = b.items;
   for (int k = 0; k < np; ++k) {
     std::set<int> pts;
     std::set<std::uint64_t> seenEdges;
@@ -502,105 +553,108 @@ HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComple
     items[k].points.assign(pts.begin(), pts.end());
   }
 
-  // 3. Overlay each plane until no plane adds a point to an edge another plane uses.
-  std::map<std::uint64_t, std::set<int>> splits;  // edge -> points strictly inside it
-  std::vector<Plc::Facet> overlayFacets;
-  bool changed = true;
-  for (int pass = 0; pass < 20 && changed; ++pass) {
-    changed = false;
-    ++out.overlayPasses;
-    overlayFacets.clear();
-    // A thin triangle along the line where two contact planes meet lies on both, and both
-    // overlays make it: it is one facet (an interface if either says so).
-    std::map<std::array<int, 3>, std::size_t> emitted;
-    for (int k = 0; k < np; ++k) {
-      if (items[k].edges.empty()) continue;
-      const PlaneFrame frame(planes[k]);
-      auto P = [&](int id) -> const Vec3& { return welder.points()[id]; };
-      // Points of this plane that lie on an edge of it split that edge.
-      for (const auto& [a, b] : items[k].edges)
-        for (int w : items[k].points) {
-          if (w == a || w == b) continue;
-          double t = 0;
-          if (segmentDistance(P(w), P(a), P(b), t) <= tol && t > 0 && t < 1)
-            changed = splits[acd::edgeKey(a, b)].insert(w).second || changed;
-        }
-      Cdt cdt;
-      std::unordered_map<int, Cdt::Vertex_handle> handle;
-      auto vertex = [&](int id) {
-        auto it = handle.find(id);
-        if (it != handle.end()) return it->second;
-        Cdt::Vertex_handle vh = cdt.insert(frame.to2(P(id)));
-        if (vh->info().id < 0) vh->info().id = id;  // else an equal 2D point: keep the first id
-        handle.emplace(id, vh);
-        return vh;
-      };
-      for (int id : items[k].points) vertex(id);
-      std::vector<std::pair<std::uint64_t, std::pair<int, int>>> pieces;  // edge -> consecutive points
-      std::vector<Cdt::Constraint_id> ids;
-      for (const auto& [a, b] : items[k].edges) {
-        std::vector<int> chain{a};
-        auto it = splits.find(acd::edgeKey(a, b));
-        if (it != splits.end()) {
-          std::vector<int> inner(it->second.begin(), it->second.end());
-          const Vec3 d = P(b) - P(a);
-          std::sort(inner.begin(), inner.end(), [&](int x, int y) { return (P(x) - P(a)).dot(d) < (P(y) - P(a)).dot(d); });
-          chain.insert(chain.end(), inner.begin(), inner.end());
-        }
-        chain.push_back(b);
-        for (std::size_t c = 0; c + 1 < chain.size(); ++c) {
-          Cdt::Vertex_handle va = vertex(chain[c]), vb = vertex(chain[c + 1]);
-          if (va == vb) continue;
-          ids.push_back(cdt.insert_constraint(va, vb));
-          pieces.push_back({acd::edgeKey(a, b), {a, b}});
-        }
-      }
-      // Points the triangulation created where constraints cross become global points.
-      for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
-        if (v->info().id < 0) v->info().id = welder.add(frame.to3(v->point()));
-      // Every point along a constraint splits the original edge.
-      for (std::size_t c = 0; c < ids.size(); ++c) {
-        const auto [a, b] = pieces[c].second;
-        for (auto v = cdt.vertices_in_constraint_begin(ids[c]); v != cdt.vertices_in_constraint_end(ids[c]); ++v) {
-          const int id = (*v)->info().id;
-          if (id != a && id != b) changed = splits[pieces[c].first].insert(id).second || changed;
-        }
-      }
-      // Triangles covered by a region's face on the plane become facets.
-      for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
-        const int a = f->vertex(0)->info().id, b = f->vertex(1)->info().id, c = f->vertex(2)->info().id;
-        if (a == b || b == c || a == c) continue;
-        const K::Point_2 centroid = CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
-        int covered = 0;
-        for (int i = 0; i < n; ++i)
-          for (const Face& t : planeTris[k][i])
-            if (insideTriangle2(centroid, frame.to2(P(t[0])), frame.to2(P(t[1])), frame.to2(P(t[2])))) {
-              ++covered;
-              break;
-            }
-        if (covered == 0) continue;
-        std::array<int, 3> key{a, b, c};
-        std::sort(key.begin(), key.end());
-        const int marker = covered >= 2 ? kInterfaceFacet : kBoundaryFacet;
-        auto [it, fresh] = emitted.emplace(key, overlayFacets.size());
-        if (!fresh) {
-          overlayFacets[it->second].marker = std::max(overlayFacets[it->second].marker, marker);
-          continue;
-        }
-        overlayFacets.push_back({{a, b, c}, marker});
-      }
+}
+
+/// One plane of one overlay pass: its constraints triangulated (splitting edges where points
+/// of any plane fall on them), the triangles a region's face covers kept as facets. Returns
+/// whether a split was added (then another pass is needed).
+bool overlayPlane(ComplexBuild& build, int k, std::map<std::array<int, 3>, std::size_t>& emitted, bool changed) {
+  const int n = build.n;
+  const double tol = build.tol;
+  const std::vector<ContactPlane>& planes = build.planes;
+  const std::vector<std::vector<std::vector<Face>>>& planeTris = build.planeTris;
+  const std::vector<PlaneItems>& items = build.items;
+  PointWelder& welder = build.welder;
+  std::map<std::uint64_t, std::set<int>>& splits = build.splits;
+  std::vector<Plc::Facet>& overlayFacets = build.overlayFacets;
+  if (items[k].edges.empty()) return changed;
+  const PlaneFrame frame(planes[k]);
+  auto P = [&](int id) -> const Vec3& { return welder.points()[id]; };
+  // Points of this plane that lie on an edge of it split that edge.
+  for (const auto& [a, b] : items[k].edges)
+    for (int w : items[k].points) {
+      if (w == a || w == b) continue;
+      double t = 0;
+      if (segmentDistance(P(w), P(a), P(b), t) <= tol && t > 0 && t < 1)
+        changed = splits[acd::edgeKey(a, b)].insert(w).second || changed;
+    }
+  Cdt cdt;
+  std::unordered_map<int, Cdt::Vertex_handle> handle;
+  auto vertex = [&](int id) {
+    auto it = handle.find(id);
+    if (it != handle.end()) return it->second;
+    Cdt::Vertex_handle vh = cdt.insert(frame.to2(P(id)));
+    if (vh->info().id < 0) vh->info().id = id;  // else an equal 2D point: keep the first id
+    handle.emplace(id, vh);
+    return vh;
+  };
+  for (int id : items[k].points) vertex(id);
+  std::vector<std::pair<std::uint64_t, std::pair<int, int>>> pieces;  // edge -> consecutive points
+  std::vector<Cdt::Constraint_id> ids;
+  for (const auto& [a, b] : items[k].edges) {
+    std::vector<int> chain{a};
+    auto it = splits.find(acd::edgeKey(a, b));
+    if (it != splits.end()) {
+      std::vector<int> inner(it->second.begin(), it->second.end());
+      const Vec3 d = P(b) - P(a);
+      std::sort(inner.begin(), inner.end(), [&](int x, int y) { return (P(x) - P(a)).dot(d) < (P(y) - P(a)).dot(d); });
+      chain.insert(chain.end(), inner.begin(), inner.end());
+    }
+    chain.push_back(b);
+    for (std::size_t c = 0; c + 1 < chain.size(); ++c) {
+      Cdt::Vertex_handle va = vertex(chain[c]), vb = vertex(chain[c + 1]);
+      if (va == vb) continue;
+      ids.push_back(cdt.insert_constraint(va, vb));
+      pieces.push_back({acd::edgeKey(a, b), {a, b}});
     }
   }
-  if (changed) {
-    out.status = acd::Status::error(acd::StatusCode::InternalError,
-                                    "the interfaces between hulls did not settle after " +
-                                        std::to_string(out.overlayPasses) + " overlay passes");
-    return out;
+  // Points the triangulation created where constraints cross become global points.
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    if (v->info().id < 0) v->info().id = welder.add(frame.to3(v->point()));
+  // Every point along a constraint splits the original edge.
+  for (std::size_t c = 0; c < ids.size(); ++c) {
+    const auto [a, b] = pieces[c].second;
+    for (auto v = cdt.vertices_in_constraint_begin(ids[c]); v != cdt.vertices_in_constraint_end(ids[c]); ++v) {
+      const int id = (*v)->info().id;
+      if (id != a && id != b) changed = splits[pieces[c].first].insert(id).second || changed;
+    }
   }
+  // Triangles covered by a region's face on the plane become facets.
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    const int a = f->vertex(0)->info().id, b = f->vertex(1)->info().id, c = f->vertex(2)->info().id;
+    if (a == b || b == c || a == c) continue;
+    const K::Point_2 centroid = CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
+    int covered = 0;
+    for (int i = 0; i < n; ++i)
+      for (const Face& t : planeTris[k][i])
+        if (insideTriangle2(centroid, frame.to2(P(t[0])), frame.to2(P(t[1])), frame.to2(P(t[2])))) {
+          ++covered;
+          break;
+        }
+    if (covered == 0) continue;
+    std::array<int, 3> key{a, b, c};
+    std::sort(key.begin(), key.end());
+    const int marker = covered >= 2 ? kInterfaceFacet : kBoundaryFacet;
+    auto [it, fresh] = emitted.emplace(key, overlayFacets.size());
+    if (!fresh) {
+      overlayFacets[it->second].marker = std::max(overlayFacets[it->second].marker, marker);
+      continue;
+    }
+    overlayFacets.push_back({{a, b, c}, marker});
+  }
+  return changed;
+}
 
-  // Free triangles, with the points other facets put on their edges.
+/// Free triangles, with the points other facets put on their edges, then the whole complex in
+/// triangles and one seed per region.
+void assemblePlc(ComplexBuild& b, double scale, HullComplex& out) {
+  const int n = b.n;
+  const double tol = b.tol;
+  const std::vector<std::vector<Face>>& freeTris = b.freeTris;
+  const std::map<std::uint64_t, std::set<int>>& splits = b.splits;
+  const PointWelder& welder = b.welder;
   Plc& plc = out.plc;
-  plc.facets = overlayFacets;
+  plc.facets = b.overlayFacets;
   for (int i = 0; i < n; ++i)
     for (const Face& f : freeTris[i]) {
       Plc::Facet facet;
@@ -633,6 +687,48 @@ HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComple
     seed /= static_cast<double>(out.regions[i].vertices.size());
     plc.regions.push_back({seed, i + 1});
   }
+}
+
+}  // namespace
+
+HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComplexOptions& options) {
+  HullComplex out;
+  if (hulls.empty()) {
+    out.status = acd::Status::error(acd::StatusCode::EmptyMesh, "no hulls to mesh");
+    return out;
+  }
+  // Scale and tolerance.
+  acd::Box3 box;
+  std::vector<acd::Box3> boxes;
+  out.status = boxesOf(hulls, boxes, box);
+  if (!out.status.ok()) return out;
+  const double scale = 0.5 * box.size().norm();
+  ComplexBuild b(hulls, options.tolerance * scale);
+
+  findContacts(b, boxes, out);  // 1. contacts between pairs, on clustered planes
+  clipRegions(b, out);          // 2. regions: overlaps clipped, near-plane vertices snapped
+  weldRegions(b, out);
+  classifyTriangles(b);
+  collectPlaneItems(b);
+
+  // 3. Overlay each plane until no plane adds a point to an edge another plane uses.
+  bool changed = true;
+  for (int pass = 0; pass < 20 && changed; ++pass) {
+    changed = false;
+    ++out.overlayPasses;
+    b.overlayFacets.clear();
+    // A thin triangle along the line where two contact planes meet lies on both, and both
+    // overlays make it: it is one facet (an interface if either says so).
+    std::map<std::array<int, 3>, std::size_t> emitted;
+    for (int k = 0; k < b.planeCount(); ++k) changed = overlayPlane(b, k, emitted, changed);
+  }
+  if (changed) {
+    out.status = acd::Status::error(acd::StatusCode::InternalError,
+                                    "the interfaces between hulls did not settle after " +
+                                        std::to_string(out.overlayPasses) + " overlay passes");
+    return out;
+  }
+  assemblePlc(b, scale, out);
   return out;
 }
 
