@@ -101,6 +101,126 @@ double localStep(const TetMesh& mesh, const TetOperator& op, const std::vector<V
   return std::accumulate(tetEnergy.begin(), tetEnergy.end(), 0.0);
 }
 
+// Roles: kFixed vertices keep a given position (constraint, rest); others are solved for.
+constexpr int kFixed = -1;
+
+/// Moves the constrained vertices of `x` to their targets; returns why it cannot, or "".
+std::string applyConstraints(int n, const std::vector<int>& constrained, const std::vector<Vec3>& targets,
+                             std::vector<Vec3>& x, std::vector<bool>& isConstrained) {
+  for (std::size_t i = 0; i < constrained.size(); ++i) {
+    const int v = constrained[i];
+    if (v < 0 || v >= n) return "deformation: constrained vertex " + std::to_string(v) + " does not exist";
+    if (!targets[i].allFinite()) return "deformation: target of vertex " + std::to_string(v) + " is not finite";
+    if (isConstrained[v] && x[v] != targets[i])
+      return "deformation: vertex " + std::to_string(v) + " has two different targets";
+    isConstrained[v] = true;
+    x[v] = targets[i];
+  }
+  return {};
+}
+
+/// The unknown's number of each free vertex (kFixed for the others). Parts of the mesh (tets
+/// joined at vertices) that no constraint reaches stay at rest: their vertices are pinned.
+std::vector<int> numberUnknowns(const TetMesh& mesh, const std::vector<bool>& isConstrained, ArapResult& r) {
+  const int n = static_cast<int>(mesh.points.size());
+  std::vector<bool> used(n, false);
+  std::vector<int> parent(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  for (const auto& t : mesh.tets)
+    for (int k = 0; k < 4; ++k) {
+      used[t[k]] = true;
+      parent[findRoot(parent, t[k])] = findRoot(parent, t[0]);
+    }
+  std::vector<bool> reached(n, false);
+  for (int v = 0; v < n; ++v)
+    if (isConstrained[v]) reached[findRoot(parent, v)] = true;
+  std::vector<int> unknown(n, kFixed);
+  for (int v = 0; v < n; ++v) {
+    if (!used[v] || isConstrained[v]) continue;
+    if (!reached[findRoot(parent, v)]) {
+      ++r.pinnedVertices;
+      continue;
+    }
+    unknown[v] = r.freeVertices++;
+  }
+  return unknown;
+}
+
+/// The global step's linear system: stiffness over the free vertices (factored once), and the
+/// constant right-hand side from the fixed ones.
+struct GlobalSystem {
+  const TetMesh& mesh;
+  const TetOperator& op;
+  const std::vector<int>& unknown;
+  int free = 0;
+  Eigen::MatrixXd fixedRhs;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
+
+  /// false when the matrix cannot be factored.
+  bool factor(const std::vector<Vec3>& x) {
+    std::vector<Eigen::Triplet<double>> entries;
+    entries.reserve(mesh.tets.size() * 16);
+    fixedRhs = Eigen::MatrixXd::Zero(free, 3);
+    for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+      if (op.weight[t] == 0) continue;
+      const Eigen::Matrix4d k = op.weight[t] * op.b[t] * op.b[t].transpose();
+      for (int i = 0; i < 4; ++i) {
+        const int row = unknown[mesh.tets[t][i]];
+        if (row == kFixed) continue;
+        for (int j = 0; j < 4; ++j) {
+          const int vj = mesh.tets[t][j];
+          if (unknown[vj] != kFixed)
+            entries.emplace_back(row, unknown[vj], k(i, j));
+          else
+            fixedRhs.row(row) -= k(i, j) * x[vj].transpose();
+        }
+      }
+    }
+    Eigen::SparseMatrix<double> stiffness(free, free);
+    stiffness.setFromTriplets(entries.begin(), entries.end());
+    if (free > 0) {
+      solver.compute(stiffness);
+      if (solver.info() != Eigen::Success) return false;
+    }
+    return true;
+  }
+
+  /// Global step: positions minimising E for fixed rotations; false when the solve fails.
+  bool solve(const std::vector<Mat3>& rotations, std::vector<Vec3>& x) {
+    if (free == 0) return true;
+    Eigen::MatrixXd rhs = fixedRhs;
+    for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+      if (op.weight[t] == 0) continue;
+      const Eigen::Matrix<double, 3, 4> g = op.weight[t] * rotations[t] * op.b[t].transpose();
+      for (int i = 0; i < 4; ++i) {
+        const int row = unknown[mesh.tets[t][i]];
+        if (row != kFixed) rhs.row(row) += g.col(i).transpose();
+      }
+    }
+    const Eigen::MatrixXd solution = solver.solve(rhs);
+    if (solver.info() != Eigen::Success || !solution.allFinite()) return false;
+    for (int v = 0; v < static_cast<int>(x.size()); ++v)
+      if (unknown[v] != kFixed) x[v] = solution.row(unknown[v]).transpose();
+    return true;
+  }
+};
+
+/// Volumes, inverted tets and the constraint error of the result.
+void measureResult(const TetMesh& mesh, const std::vector<int>& constrained, const std::vector<Vec3>& targets,
+                   ArapResult& r) {
+  r.volume = meshVolume(mesh, r.positions);
+  r.linearVolume = meshVolume(mesh, r.linearPositions);
+  r.invertedTets = countInverted(mesh, r.positions);
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    const auto& v = mesh.tets[t];
+    const Vec3& a = r.positions[v[0]];
+    if ((r.positions[v[1]] - a).cross(r.positions[v[2]] - a).dot(r.positions[v[3]] - a) <= 0) r.invertedRestVolume += tetVolume(mesh, static_cast<int>(t));
+  }
+  r.linearInvertedTets = countInverted(mesh, r.linearPositions);
+  for (std::size_t i = 0; i < constrained.size(); ++i)
+    r.maxConstraintError = std::max(r.maxConstraintError, (r.positions[constrained[i]] - targets[i]).norm());
+}
+
 }  // namespace
 
 double meshVolume(const TetMesh& mesh, const std::vector<Vec3>& positions) {
@@ -130,100 +250,27 @@ ArapResult arapDeform(const TetMesh& mesh, const std::vector<int>& constrained, 
   if (options.maxIterations < 0 || !(options.tolerance >= 0) || !(options.minWeight >= 0) || !std::isfinite(options.minWeight))
     return fail(acd::StatusCode::InvalidParameter, "deformation: iterations, tolerance and weight floor must not be negative");
 
-  // Roles: kFixed vertices keep a given position (constraint, rest); others are solved for.
-  constexpr int kFixed = -1;
   std::vector<Vec3> x = mesh.points;
-  std::vector<bool> isConstrained(n, false), used(n, false);
-  for (std::size_t i = 0; i < constrained.size(); ++i) {
-    const int v = constrained[i];
-    if (v < 0 || v >= n) return fail(acd::StatusCode::InvalidParameter, "deformation: constrained vertex " + std::to_string(v) + " does not exist");
-    if (!targets[i].allFinite())
-      return fail(acd::StatusCode::InvalidParameter, "deformation: target of vertex " + std::to_string(v) + " is not finite");
-    if (isConstrained[v] && x[v] != targets[i])
-      return fail(acd::StatusCode::InvalidParameter, "deformation: vertex " + std::to_string(v) + " has two different targets");
-    isConstrained[v] = true;
-    x[v] = targets[i];
-  }
-  // Parts of the mesh (tets joined at vertices) that no constraint reaches stay at rest.
-  std::vector<int> parent(n);
-  std::iota(parent.begin(), parent.end(), 0);
-  for (const auto& t : mesh.tets)
-    for (int k = 0; k < 4; ++k) {
-      used[t[k]] = true;
-      parent[findRoot(parent, t[k])] = findRoot(parent, t[0]);
-    }
-  std::vector<bool> reached(n, false);
-  for (int v = 0; v < n; ++v)
-    if (isConstrained[v]) reached[findRoot(parent, v)] = true;
-  std::vector<int> unknown(n, kFixed);
-  for (int v = 0; v < n; ++v) {
-    if (!used[v] || isConstrained[v]) continue;
-    if (!reached[findRoot(parent, v)]) {
-      ++r.pinnedVertices;
-      continue;
-    }
-    unknown[v] = r.freeVertices++;
-  }
+  std::vector<bool> isConstrained(n, false);
+  if (const std::string why = applyConstraints(n, constrained, targets, x, isConstrained); !why.empty())
+    return fail(acd::StatusCode::InvalidParameter, why);
+  const std::vector<int> unknown = numberUnknowns(mesh, isConstrained, r);
 
   const TetOperator op = tetOperators(mesh, options.minWeight);
   r.restVolume = meshVolume(mesh, mesh.points);
 
-  // Stiffness over the free vertices, and the constant right-hand side from the fixed ones.
   const auto factorStart = std::chrono::steady_clock::now();
-  const int f = r.freeVertices;
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(mesh.tets.size() * 16);
-  Eigen::MatrixXd fixedRhs = Eigen::MatrixXd::Zero(f, 3);
-  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
-    if (op.weight[t] == 0) continue;
-    const Eigen::Matrix4d k = op.weight[t] * op.b[t] * op.b[t].transpose();
-    for (int i = 0; i < 4; ++i) {
-      const int row = unknown[mesh.tets[t][i]];
-      if (row == kFixed) continue;
-      for (int j = 0; j < 4; ++j) {
-        const int vj = mesh.tets[t][j];
-        if (unknown[vj] != kFixed)
-          entries.emplace_back(row, unknown[vj], k(i, j));
-        else
-          fixedRhs.row(row) -= k(i, j) * x[vj].transpose();
-      }
-    }
-  }
-  Eigen::SparseMatrix<double> stiffness(f, f);
-  stiffness.setFromTriplets(entries.begin(), entries.end());
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
-  if (f > 0) {
-    solver.compute(stiffness);
-    if (solver.info() != Eigen::Success)
-      return fail(acd::StatusCode::InternalError, "deformation: the stiffness matrix could not be factored (degenerate tets?)");
-  }
+  GlobalSystem system{mesh, op, unknown, r.freeVertices, {}, {}};
+  if (!system.factor(x))
+    return fail(acd::StatusCode::InternalError, "deformation: the stiffness matrix could not be factored (degenerate tets?)");
   r.factorSeconds = seconds(factorStart);
 
-  // Global step: positions minimising E for fixed rotations.
   const auto solveStart = std::chrono::steady_clock::now();
-  auto globalStep = [&](const std::vector<Mat3>& rotations) {
-    if (f == 0) return true;
-    Eigen::MatrixXd rhs = fixedRhs;
-    for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
-      if (op.weight[t] == 0) continue;
-      const Eigen::Matrix<double, 3, 4> g = op.weight[t] * rotations[t] * op.b[t].transpose();
-      for (int i = 0; i < 4; ++i) {
-        const int row = unknown[mesh.tets[t][i]];
-        if (row != kFixed) rhs.row(row) += g.col(i).transpose();
-      }
-    }
-    const Eigen::MatrixXd solution = solver.solve(rhs);
-    if (solver.info() != Eigen::Success || !solution.allFinite()) return false;
-    for (int v = 0; v < n; ++v)
-      if (unknown[v] != kFixed) x[v] = solution.row(unknown[v]).transpose();
-    return true;
-  };
-
   std::vector<Mat3> rotations(mesh.tets.size(), Mat3::Identity());
   std::vector<double> tetEnergy(mesh.tets.size(), 0.0);
   const int threads = options.threads > 0 ? options.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const std::vector<Vec3> restStart = x;
-  if (!globalStep(rotations)) return fail(acd::StatusCode::InternalError, "deformation: the linear solve failed");
+  if (!system.solve(rotations, x)) return fail(acd::StatusCode::InternalError, "deformation: the linear solve failed");
   r.linearPositions = x;
   if (!options.linearStart) x = restStart;
   const double weights = std::accumulate(op.weight.begin(), op.weight.end(), 0.0);
@@ -235,7 +282,7 @@ ArapResult arapDeform(const TetMesh& mesh, const std::vector<int>& constrained, 
       r.converged = true;
       break;
     }
-    if (!globalStep(rotations)) return fail(acd::StatusCode::InternalError, "deformation: a solve failed");
+    if (!system.solve(rotations, x)) return fail(acd::StatusCode::InternalError, "deformation: a solve failed");
     ++r.iterations;
     r.energy.push_back(scale * localStep(mesh, op, x, rotations, tetEnergy, threads));
     if (options.progress) options.progress(r.iterations, r.energy.back());
@@ -247,17 +294,7 @@ ArapResult arapDeform(const TetMesh& mesh, const std::vector<int>& constrained, 
   r.solveSeconds = seconds(solveStart);
 
   r.positions = std::move(x);
-  r.volume = meshVolume(mesh, r.positions);
-  r.linearVolume = meshVolume(mesh, r.linearPositions);
-  r.invertedTets = countInverted(mesh, r.positions);
-  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
-    const auto& v = mesh.tets[t];
-    const Vec3& a = r.positions[v[0]];
-    if ((r.positions[v[1]] - a).cross(r.positions[v[2]] - a).dot(r.positions[v[3]] - a) <= 0) r.invertedRestVolume += tetVolume(mesh, static_cast<int>(t));
-  }
-  r.linearInvertedTets = countInverted(mesh, r.linearPositions);
-  for (std::size_t i = 0; i < constrained.size(); ++i)
-    r.maxConstraintError = std::max(r.maxConstraintError, (r.positions[constrained[i]] - targets[i]).norm());
+  measureResult(mesh, constrained, targets, r);
   return r;
 }
 

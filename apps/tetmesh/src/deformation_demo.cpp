@@ -44,23 +44,9 @@ void splitByPosition(const TetMesh& tets, std::vector<bool>& handle, std::vector
     }
 }
 
-}  // namespace
-
-DeformationResult deformSurface(const TetMesh& tets, const acd::TriMesh& surface, const DeformationOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
-  DeformationResult r;
-  auto fail = [&](const std::string& message) {
-    r.status = acd::Status::error(acd::StatusCode::InvalidParameter, "deformation: " + message);
-    return r;
-  };
-  if (tets.tets.empty()) return fail("the tet mesh is empty");
-  if (options.rotate && options.translate) return fail("give either a translation or an angle, not both");
-  if ((options.rotate && !std::isfinite(options.angleDegrees)) || (options.translate && !options.move.allFinite()))
-    return fail("the motion of the handle must be finite");
-
-  // Per label: volume and centroid; the whole mesh's too.
+/// Per label: volume and centroid; the whole mesh's in `all`; the half-diagonal of its box.
+std::map<int, LabelStats> labelStats(const TetMesh& tets, LabelStats& all, double& halfDiagonal) {
   std::map<int, LabelStats> labels;
-  LabelStats all;
   Vec3 lo = Vec3::Constant(INFINITY), hi = -lo;
   for (std::size_t t = 0; t < tets.tets.size(); ++t) {
     const auto& v = tets.tets[t];
@@ -71,22 +57,27 @@ DeformationResult deformSurface(const TetMesh& tets, const acd::TriMesh& surface
     all.volume += vol, all.moment += vol * c;
     for (int k : v) lo = lo.cwiseMin(tets.points[k]), hi = hi.cwiseMax(tets.points[k]);
   }
-  r.halfDiagonal = 0.5 * (hi - lo).norm();
+  halfDiagonal = 0.5 * (hi - lo).norm();
+  return labels;
+}
+
+/// The handle and the anchor components: as given, else the handle farthest from the centroid
+/// and the anchor the largest other component. Returns why they cannot be, or "".
+std::string chooseComponents(const std::map<int, LabelStats>& labels, const LabelStats& all,
+                             const DeformationOptions& options, DeformationResult& r) {
   auto known = [&](int label) { return labels.count(label) > 0 && label > 0; };
   std::string names;
   for (const auto& [label, s] : labels) names += (names.empty() ? "" : ", ") + std::to_string(label);
   if (options.handle != 0 && !known(options.handle))
-    return fail("there is no component " + std::to_string(options.handle) + " (labels: " + names + ")");
+    return "there is no component " + std::to_string(options.handle) + " (labels: " + names + ")";
   if (options.anchor != 0 && !known(options.anchor))
-    return fail("there is no component " + std::to_string(options.anchor) + " (labels: " + names + ")");
+    return "there is no component " + std::to_string(options.anchor) + " (labels: " + names + ")";
   if (options.handle != 0 && options.handle == options.anchor)
-    return fail("the handle and the anchor are the same component (" + std::to_string(options.handle) + ")");
+    return "the handle and the anchor are the same component (" + std::to_string(options.handle) + ")";
 
-  // Choose: handle farthest from the centroid, anchor the largest other component.
-  const std::size_t components = labels.size();
   const Vec3 centre = all.centroid();
   r.handle = options.handle, r.anchor = options.anchor;
-  if (components >= 2) {
+  if (labels.size() >= 2) {
     if (r.handle == 0) {
       double best = -1;
       for (const auto& [label, s] : labels)
@@ -98,12 +89,23 @@ DeformationResult deformSurface(const TetMesh& tets, const acd::TriMesh& surface
         if (label != r.handle && s.volume > best) best = s.volume, r.anchor = label;
     }
   } else if (options.handle != 0 || options.anchor != 0) {
-    return fail("the mesh has one component only: leave the handle and the anchor to the default split");
+    return "the mesh has one component only: leave the handle and the anchor to the default split";
   }
+  return {};
+}
 
-  // Vertex sets.
+/// The vertices of the handle and of the anchor (a vertex in both is the anchor's).
+struct VertexSets {
+  std::vector<bool> inHandle, inAnchor;
+  std::vector<int> handleVertices, anchorVertices;
+};
+
+VertexSets vertexSets(const TetMesh& tets, std::size_t components, DeformationResult& r) {
   const int n = static_cast<int>(tets.points.size());
-  std::vector<bool> inHandle(n, false), inAnchor(n, false);
+  VertexSets sets;
+  std::vector<bool>& inHandle = sets.inHandle;
+  std::vector<bool>& inAnchor = sets.inAnchor;
+  inHandle.assign(n, false), inAnchor.assign(n, false);
   if (components >= 2) {
     for (std::size_t t = 0; t < tets.tets.size(); ++t)
       for (int v : tets.tets[t]) {
@@ -113,21 +115,27 @@ DeformationResult deformSurface(const TetMesh& tets, const acd::TriMesh& surface
   } else {
     splitByPosition(tets, inHandle, inAnchor);
   }
-  std::vector<int> handleVertices, anchorVertices;
   for (int v = 0; v < n; ++v) {
-    if (inAnchor[v]) anchorVertices.push_back(v);
+    if (inAnchor[v]) sets.anchorVertices.push_back(v);
     if (inHandle[v] && inAnchor[v]) ++r.sharedVertices;
-    if (inHandle[v] && !inAnchor[v]) handleVertices.push_back(v);
+    if (inHandle[v] && !inAnchor[v]) sets.handleVertices.push_back(v);
   }
-  r.handleVertices = static_cast<int>(handleVertices.size());
-  r.anchorVertices = static_cast<int>(anchorVertices.size());
-  if (handleVertices.empty()) return fail("the handle has no vertex that is not also in the anchor");
+  r.handleVertices = static_cast<int>(sets.handleVertices.size());
+  r.anchorVertices = static_cast<int>(sets.anchorVertices.size());
+  return sets;
+}
 
-  // The motion.
+/// The handle's rigid motion: a turn about an axis through the anchor's point nearest the
+/// handle, or a translation (given, else across the handle-anchor direction). Fills the
+/// result's description of it and returns the rotation (identity for a translation).
+Eigen::Matrix3d chooseMotion(const TetMesh& tets, const std::map<int, LabelStats>& labels, const VertexSets& sets,
+                             const DeformationOptions& options, DeformationResult& r) {
+  const std::vector<int>& handleVertices = sets.handleVertices;
+  const std::vector<int>& anchorVertices = sets.anchorVertices;
   Vec3 handleCentre = Vec3::Zero(), anchorCentre = Vec3::Zero();
   for (int v : handleVertices) handleCentre += tets.points[v] / handleVertices.size();
   for (int v : anchorVertices) anchorCentre += tets.points[v] / anchorVertices.size();
-  if (components >= 2) handleCentre = labels[r.handle].centroid(), anchorCentre = labels[r.anchor].centroid();
+  if (labels.size() >= 2) handleCentre = labels.at(r.handle).centroid(), anchorCentre = labels.at(r.anchor).centroid();
   Vec3 d = handleCentre - anchorCentre;
   d = d.norm() > 0 ? Vec3(d.normalized()) : Vec3::UnitX();
   int leastAligned = 0;
@@ -151,14 +159,72 @@ DeformationResult deformSurface(const TetMesh& tets, const acd::TriMesh& surface
     r.motion = format("translated by (%.4g, %.4g, %.4g)", r.translation.x(), r.translation.y(), r.translation.z()) +
                (options.translate ? "" : format(", 0.2 x half-diagonal %.4g", r.halfDiagonal));
   }
+  return rotation;
+}
+
+/// The surface's faces as handle, anchor or rest (for pictures), and the end-to-end check: a
+/// surface vertex in a tet whose corners all belong to the handle must have followed the
+/// handle's rigid motion exactly (up to rounding).
+template <class Motion>
+void checkSurfaceParts(const TetMesh& tets, const acd::TriMesh& surface, std::size_t components, const VertexSets& sets,
+                       const Motion& motion, DeformationResult& r) {
+  const std::vector<bool>& inHandle = sets.inHandle;
+  const std::vector<bool>& inAnchor = sets.inAnchor;
+  // A face is the handle's (anchor's) when all three of its vertices lie in tets of the handle (anchor).
+  std::vector<int> tetPart(tets.tets.size(), kRest);
+  for (std::size_t t = 0; t < tets.tets.size(); ++t) {
+    if (components >= 2) {
+      tetPart[t] = tets.labels[t] == r.handle ? kHandle : tets.labels[t] == r.anchor ? kAnchor : kRest;
+    } else {
+      bool h = true, a = true;
+      for (int v : tets.tets[t]) h = h && inHandle[v], a = a && inAnchor[v];
+      tetPart[t] = h ? kHandle : a ? kAnchor : kRest;
+    }
+  }
+  for (const acd::Face& f : surface.faces) {
+    const int p0 = tetPart[r.embedding.tet[f[0]]];
+    r.facePart.push_back(p0 == tetPart[r.embedding.tet[f[1]]] && p0 == tetPart[r.embedding.tet[f[2]]] ? p0 : kRest);
+  }
+  for (std::size_t i = 0; i < surface.vertices.size(); ++i) {
+    const auto& v = tets.tets[r.embedding.tet[i]];
+    bool all = true;
+    for (int k : v) all = all && inHandle[k] && !inAnchor[k];
+    if (!all) continue;
+    ++r.surfaceOnHandle;
+    r.surfaceHandleError = std::max(r.surfaceHandleError, (r.surfaceAfter.vertices[i] - motion(surface.vertices[i])).norm());
+  }
+}
+
+}  // namespace
+
+DeformationResult deformSurface(const TetMesh& tets, const acd::TriMesh& surface, const DeformationOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  DeformationResult r;
+  auto fail = [&](const std::string& message) {
+    r.status = acd::Status::error(acd::StatusCode::InvalidParameter, "deformation: " + message);
+    return r;
+  };
+  if (tets.tets.empty()) return fail("the tet mesh is empty");
+  if (options.rotate && options.translate) return fail("give either a translation or an angle, not both");
+  if ((options.rotate && !std::isfinite(options.angleDegrees)) || (options.translate && !options.move.allFinite()))
+    return fail("the motion of the handle must be finite");
+
+  LabelStats all;
+  const std::map<int, LabelStats> labels = labelStats(tets, all, r.halfDiagonal);
+  if (const std::string why = chooseComponents(labels, all, options, r); !why.empty()) return fail(why);
+  const std::size_t components = labels.size();
+  const VertexSets sets = vertexSets(tets, components, r);
+  if (sets.handleVertices.empty()) return fail("the handle has no vertex that is not also in the anchor");
+
+  const Eigen::Matrix3d rotation = chooseMotion(tets, labels, sets, options, r);
   auto motion = [&](const Vec3& p) { return options.rotate ? Vec3(r.pivot + rotation * (p - r.pivot)) : Vec3(p + r.translation); };
   std::vector<int> constrained;
   std::vector<Vec3> targets;
-  for (int v : handleVertices) {
+  for (int v : sets.handleVertices) {
     constrained.push_back(v);
     targets.push_back(motion(tets.points[v]));
   }
-  for (int v : anchorVertices) constrained.push_back(v), targets.push_back(tets.points[v]);
+  for (int v : sets.anchorVertices) constrained.push_back(v), targets.push_back(tets.points[v]);
 
   // Embed, solve, carry the surface along.
   r.embedding = embedPoints(tets, surface.vertices);
@@ -176,32 +242,7 @@ DeformationResult deformSurface(const TetMesh& tets, const acd::TriMesh& surface
   r.surfaceVolumeLinear = acd::signedVolume(r.surfaceLinear);
   for (std::size_t i = 0; i < surface.vertices.size(); ++i)
     r.maxSurfaceDisplacement = std::max(r.maxSurfaceDisplacement, (r.surfaceAfter.vertices[i] - surface.vertices[i]).norm());
-  // Parts for pictures: a face is the handle's (anchor's) when all three of its vertices lie in
-  // tets of the handle (anchor).
-  std::vector<int> tetPart(tets.tets.size(), kRest);
-  for (std::size_t t = 0; t < tets.tets.size(); ++t) {
-    if (components >= 2) {
-      tetPart[t] = tets.labels[t] == r.handle ? kHandle : tets.labels[t] == r.anchor ? kAnchor : kRest;
-    } else {
-      bool h = true, a = true;
-      for (int v : tets.tets[t]) h = h && inHandle[v], a = a && inAnchor[v];
-      tetPart[t] = h ? kHandle : a ? kAnchor : kRest;
-    }
-  }
-  for (const acd::Face& f : surface.faces) {
-    const int p0 = tetPart[r.embedding.tet[f[0]]];
-    r.facePart.push_back(p0 == tetPart[r.embedding.tet[f[1]]] && p0 == tetPart[r.embedding.tet[f[2]]] ? p0 : kRest);
-  }
-  // End to end: a surface vertex in a tet whose corners all belong to the handle must have
-  // followed the handle's rigid motion exactly (up to rounding).
-  for (std::size_t i = 0; i < surface.vertices.size(); ++i) {
-    const auto& v = tets.tets[r.embedding.tet[i]];
-    bool all = true;
-    for (int k : v) all = all && inHandle[k] && !inAnchor[k];
-    if (!all) continue;
-    ++r.surfaceOnHandle;
-    r.surfaceHandleError = std::max(r.surfaceHandleError, (r.surfaceAfter.vertices[i] - motion(surface.vertices[i])).norm());
-  }
+  checkSurfaceParts(tets, surface, components, sets, motion, r);
   for (int t : r.embedding.tet) {
     const auto& v = tets.tets[t];
     const auto& x = r.arap.positions;
