@@ -1,0 +1,64 @@
+// The steps of one skeleton run: the models (the given one, deformed files, deformations made
+// here), their decompositions and skeletons, the graph edit distances to the original's.
+#pragma once
+
+#include "ged.hpp"
+#include "graph.hpp"
+
+#include <appcli/console.hpp>
+
+#include <acd/mesh.hpp>
+
+#include <string>
+#include <vector>
+
+namespace skeleton {
+
+/// "skeleton: ..." on stderr.
+inline const appcli::Console kConsole{"skeleton"};
+
+/// A status line on stderr when it is a terminal.
+void progress(const std::string& line);
+
+struct RunParameters {
+  std::string modelPath, outDir = "skeleton-out";
+  std::vector<std::string> deformedPaths, deformSpecs;
+  double tau = 0.1;
+  int exactMaxNodes = 12, mcfRuns = 1, threads = 0;
+  double tubeRadius = 0.0;
+  long long maxExpansions = 20000000;
+  bool noMcf = false, quiet = false;
+};
+
+struct Model {
+  std::vector<std::string> repairs;  // what prepareSolid changed
+  std::string name;    // file stem in OUT
+  std::string source;  // the file, or the deformation spec
+  std::string summary; // what the deformation did
+  acd::TriMesh mesh;
+  Graph acd, acdContracted, mcf, mcfContracted;
+  int components = 0, unresolved = 0;
+  bool mcfOk = false;
+  std::string mcfError;
+  std::vector<int> mcfRunNodes;  // node counts of repeated MCF runs
+  double decomposeSeconds = 0, mcfSeconds = 0;
+  GedResult d, d2, mcfD, mcfD2;
+  Graph mcfSecond;               // second CGAL run of the same mesh, for the run-to-run distance
+  bool hasSecond = false;
+  GedResult runD, runD2;         // CGAL skeleton, run 1 against run 2 of the same mesh
+};
+
+/// The ranges of the parameters; kOk or kBadParameter after a message.
+int checkParameters(const RunParameters& p);
+/// The model and the --deformed files, closed and outward (models[0] is the original);
+/// every --deform spec checked before the slow work starts.
+int loadModels(const RunParameters& p, std::vector<Model>& models);
+/// The output folder, and the --deform deformations of the original, each written as OUT/NAME.off.
+int makeDeformations(const RunParameters& p, std::vector<Model>& models);
+/// Each model's decomposition (rigid-motion invariant), its ACD skeleton and CGAL's.
+int decomposeModels(const RunParameters& p, std::vector<Model>& models);
+/// The graph edit distances of every deformed model's skeletons to the original's (and of
+/// CGAL's second run to its first: its noise floor).
+void compareSkeletons(const RunParameters& p, std::vector<Model>& models);
+
+}  // namespace skeleton
