@@ -96,31 +96,30 @@ CLI::App* addReportCommand(CLI::App& app) {
 
 int runReport() { return writeReport(reportArgs); }
 
-int writeReport(const ReportOptions& options) {
-  const fs::path out(options.out);
-  std::vector<Item> items;
-  {
-    std::ifstream in(out / "batch.jsonl");
-    if (!in)
-      return fail("report", acd::Status::error(acd::StatusCode::FileUnreadable,
-                                               "no batch here: cannot read " + (out / "batch.jsonl").string()));
-    std::string line;
-    while (std::getline(in, line)) {
-      if (line.empty()) continue;
-      try {
-        items.push_back({json::parse(line), json::object(), {}, false, false});
-      } catch (const std::exception&) {
-        return fail("report", acd::Status::error(acd::StatusCode::FileUnreadable, (out / "batch.jsonl").string() + ": not JSON lines"));
-      }
+namespace {
+
+/// The batch's records (OUT/batch.jsonl), one item each; kOk or the exit code after a message.
+int readBatch(const fs::path& out, std::vector<Item>& items) {
+  std::ifstream in(out / "batch.jsonl");
+  if (!in)
+    return fail("report", acd::Status::error(acd::StatusCode::FileUnreadable,
+                                             "no batch here: cannot read " + (out / "batch.jsonl").string()));
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    try {
+      items.push_back({json::parse(line), json::object(), {}, false, false});
+    } catch (const std::exception&) {
+      return fail("report", acd::Status::error(acd::StatusCode::FileUnreadable, (out / "batch.jsonl").string() + ": not JSON lines"));
     }
   }
-  std::error_code ec;
-  fs::create_directories(out / "report", ec);
-  if (ec) return outputFailed((out / "report").string());
-  const bool pictures = options.pictures && haveF3d() && fs::exists(renderScript());
-  const std::string pictureNote = !options.pictures ? "no picture (--no-pictures)"
-                                  : pictures        ? "picture failed"
-                                                    : "no picture: f3d and xvfb are not installed";
+  return kOk;
+}
+
+/// Each item's card: what the record says, its tau, its hulls for the page, and whether its
+/// picture and evaluation must be (re)made.
+void prepareCards(const ReportOptions& options, const fs::path& out, bool pictures, const std::string& pictureNote,
+                  std::vector<Item>& items) {
   for (Item& it : items) {
     const json& r = it.record;
     const std::string name = r.value("name", "");
@@ -154,7 +153,10 @@ int writeReport(const ReportOptions& options) {
     c["hulls"] = "report/" + name + ".hulls.js";
   }
 
-  // Pictures (f3d under xvfb) and evaluations, in capped child processes, several at a time.
+}
+
+/// Pictures (f3d under xvfb) and evaluations, in capped child processes, several at a time.
+void makePicturesAndEvaluations(const ReportOptions& options, const fs::path& out, std::vector<Item>& items) {
   ::setenv("RENDER_RESOLUTION", "480,360", 0);
   const std::string self = acdsandbox::selfExecutable("acd");
   std::atomic<std::size_t> next{0};
@@ -202,6 +204,11 @@ int writeReport(const ReportOptions& options) {
   for (int k = 0; k < jobs; ++k) pool.emplace_back(work);
   for (auto& t : pool) t.join();
 
+}
+
+/// OUT/index.html: the page with every card in it; kOk or kOutputFailed after a message.
+int writePage(const fs::path& out, bool pictures, std::vector<Item>& items) {
+  std::error_code ec;
   json meshes = json::array();
   for (Item& it : items) {
     const std::string name = it.card["name"];
@@ -225,6 +232,25 @@ int writeReport(const ReportOptions& options) {
   std::ofstream html(out / "index.html");
   html << page;
   if (!html) return outputFailed((out / "index.html").string());
+  return kOk;
+}
+
+}  // namespace
+
+int writeReport(const ReportOptions& options) {
+  const fs::path out(options.out);
+  std::vector<Item> items;
+  if (const int code = readBatch(out, items); code != kOk) return code;
+  std::error_code ec;
+  fs::create_directories(out / "report", ec);
+  if (ec) return outputFailed((out / "report").string());
+  const bool pictures = options.pictures && haveF3d() && fs::exists(renderScript());
+  const std::string pictureNote = !options.pictures ? "no picture (--no-pictures)"
+                                  : pictures        ? "picture failed"
+                                                    : "no picture: f3d and xvfb are not installed";
+  prepareCards(options, out, pictures, pictureNote, items);
+  makePicturesAndEvaluations(options, out, items);
+  if (const int code = writePage(out, pictures, items); code != kOk) return code;
   std::printf("  report: %s (%zu meshes)\n", (out / "index.html").string().c_str(), items.size());
   return kOk;
 }
