@@ -3,13 +3,13 @@
 // the harness aborts when the reader's promises do not hold.
 // With ACD_FUZZ_SCENE the first byte picks one of the scene formats read through assimp
 // (kSceneNames) and the rest is the file: one harness, one smoke run, for five formats. Those
-// are read as the acd command reads them, in a capped child (sandbox/scene_reader.hpp): assimp
+// are read as the acd command reads them, in a capped child (<sandbox/scene_reader.hpp>): assimp
 // aborts and allocates without bound on some inputs, which must come back as refusals.
 #include <acd/diagnosis.hpp>
 #include <acd/io.hpp>
 
 #ifdef ACD_FUZZ_SCENE
-#include "scene_reader.hpp"
+#include <sandbox/scene_reader.hpp>
 #endif
 
 #include <cstddef>

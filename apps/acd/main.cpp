@@ -47,7 +47,7 @@ const char* exitCodes() {
          "7 batch: some meshes failed (see OUT/batch.jsonl).";
 }
 
-acd::ReadResult load(const std::string& path) { return acdsandbox::readModel(path); }
+acd::ReadResult load(const std::string& path) { return readModel(path); }
 
 // ---------------------------------------------------------------- info
 int runInfo(const std::string& path) {
@@ -217,7 +217,7 @@ int runPerMesh(DecomposeArgs& a) {
   std::vector<acd::TriMesh> meshes;
   std::vector<std::string> names;
   if (acd::isSceneFormat(a.model)) {
-    acd::SceneMeshes scene = acdsandbox::readSceneIsolated(a.model);
+    acd::SceneMeshes scene = readSceneIsolated(a.model);
     if (!scene.status.ok()) return fail(a.model, scene.status);
     meshes = std::move(scene.meshes);
     names = std::move(scene.names);

@@ -2,7 +2,7 @@
 // measures exactly what a user gets, and methods that are not built in (surface ACD) show "n/a"
 // until they are. Components and times come from each run's report.json; sizes are those of
 // the pieces written as one OBJ file (one object per piece), the same writer for every method.
-#include "child_process.hpp"
+#include <sandbox/child_process.hpp>
 #include "exit_codes.hpp"
 #include "table.hpp"
 

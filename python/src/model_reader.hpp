@@ -1,11 +1,11 @@
 // How the module reads model files: as the acd command does, scene formats in a capped child
-// process (sandbox/scene_reader.hpp), the other formats with libacd's own parsers.
+// process (<sandbox/scene_reader.hpp>), the other formats with libacd's own parsers.
 #pragma once
 
 #include <acd/io.hpp>
 #include <acd/scene_io.hpp>
 
-#include "scene_reader.hpp"
+#include <sandbox/scene_reader.hpp>
 
 #include <string>
 

@@ -1,6 +1,6 @@
 // sandbox/child_process: exit codes, signals, the wall-clock cap (with the child's own children),
 // the memory cap, peak memory and the pipe, each against what the child was made to do.
-#include "child_process.hpp"
+#include <sandbox/child_process.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // sandbox/pipe_codec: what a child writes comes back as written, and a cut-off or lying stream
 // is refused instead of read past its end.
-#include "pipe_codec.hpp"
+#include <sandbox/pipe_codec.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // sandbox/scene_reader: a scene read in the child comes back whole through the pipe; what assimp
 // cannot read comes back as a one-line refusal naming the file; other formats skip the child.
-#include "scene_reader.hpp"
+#include <sandbox/scene_reader.hpp>
 
 #include <gtest/gtest.h>
 

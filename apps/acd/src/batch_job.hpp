@@ -6,7 +6,7 @@
 #pragma once
 
 #include "batch_inputs.hpp"
-#include "child_process.hpp"
+#include <sandbox/child_process.hpp>
 
 #include <nlohmann/json.hpp>
 

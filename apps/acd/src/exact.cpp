@@ -52,7 +52,7 @@ std::uintmax_t fileSize(const fs::path& p) {
 
 // ---------------------------------------------------------------- solid ECD
 int runSolid(const std::string& model, const std::string& out, bool quiet) {
-  acd::ReadResult r = acdsandbox::readModel(model);
+  acd::ReadResult r = readModel(model);
   if (!r.status.ok()) return fail(model, r.status);
   acd::ExactOptions options;
   options.timeLimitSeconds = flags.timeLimit;
@@ -119,7 +119,7 @@ int runSolid(const std::string& model, const std::string& out, bool quiet) {
 
 // ---------------------------------------------------------------- surface ECD
 int runSurface(const std::string& model, const std::string& out, bool quiet) {
-  acd::ReadResult r = acdsandbox::readModel(model);
+  acd::ReadResult r = readModel(model);
   if (!r.status.ok()) return fail(model, r.status);
   acd::SurfaceExactOptions options;
   options.tolerance = flags.tolerance;

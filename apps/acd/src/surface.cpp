@@ -61,7 +61,7 @@ void printSummary(const SurfaceArgs& a, const acd::SurfaceDecomposition& d, std:
 int runSurfaceDecompose(SurfaceArgs& a) {
   const acd::Status valid = acd::validate(a.options);
   if (!valid.ok()) return fail("invalid parameter", valid);
-  acd::ReadResult r = acdsandbox::readModel(a.model);
+  acd::ReadResult r = readModel(a.model);
   if (!r.status.ok()) return fail(a.model, r.status);
   const bool showProgress = !a.quiet && isatty(fileno(stderr));
   if (showProgress)

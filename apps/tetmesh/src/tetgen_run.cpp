@@ -1,8 +1,8 @@
 // See tetgen_run.hpp for why TetGen runs in a child process.
 #include "tetgen_run.hpp"
 
-#include "child_process.hpp"
-#include "pipe_codec.hpp"
+#include <sandbox/child_process.hpp>
+#include <sandbox/pipe_codec.hpp>
 
 #include <tetgen.h>
 

@@ -1,4 +1,4 @@
-#include "pipe_codec.hpp"
+#include <sandbox/pipe_codec.hpp>
 
 #include <unistd.h>
 

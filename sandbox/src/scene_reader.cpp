@@ -1,10 +1,10 @@
 // The child reads the scene with libacd and writes it into the pipe (pipe_codec.hpp): a status
 // code and message, then per mesh its name, vertices (3 doubles each) and faces (3 int32 each).
 // The parent decodes it; a child that crashed, hit a cap or wrote something malformed is a refusal naming the file.
-#include "scene_reader.hpp"
+#include <sandbox/scene_reader.hpp>
 
-#include "child_process.hpp"
-#include "pipe_codec.hpp"
+#include <sandbox/child_process.hpp>
+#include <sandbox/pipe_codec.hpp>
 
 #include <signal.h>
 #include <unistd.h>

@@ -1,7 +1,7 @@
 // Fork, caps and waiting for one child. The parent polls (the pipe when there is one, else a short
 // sleep) and reaps with wait4, which also gives the child's peak memory; at the wall-clock cap it
 // kills the child's whole process group, so helpers the child started die with it.
-#include "child_process.hpp"
+#include <sandbox/child_process.hpp>
 
 #include <fcntl.h>
 #include <poll.h>
