@@ -8,7 +8,7 @@
 namespace pointloc {
 
 bool HullLocator::add(const acd::TriMesh& convex) {
-  std::vector<Plane> facets;
+  std::vector<acd::HalfSpace> facets;
   Vec3 lo = Vec3::Constant(INFINITY), hi = -lo;
   for (const Vec3& v : convex.vertices) {
     lo = lo.cwiseMin(v);
@@ -23,22 +23,22 @@ bool HullLocator::add(const acd::TriMesh& convex) {
     double d = n.dot(a);
     for (const Vec3& v : convex.vertices) d = std::max(d, n.dot(v));
     bool duplicate = false;  // coplanar triangles of one facet give one plane
-    for (const Plane& p : facets)
-      if (p.nx * n.x() + p.ny * n.y() + p.nz * n.z() > 1 - 1e-12 && std::abs(p.d - d) <= slack_) {
+    for (const acd::HalfSpace& p : facets)
+      if (p.n.x() * n.x() + p.n.y() * n.y() + p.n.z() * n.z() > 1 - 1e-12 && std::abs(p.c - d) <= slack_) {
         duplicate = true;
         break;
       }
-    if (!duplicate) facets.push_back({n.x(), n.y(), n.z(), d});
+    if (!duplicate) facets.push_back({n, d});
   }
   if (facets.empty()) return false;
   // The box as six planes, tested first: they reject most points at once, and the scan and
   // the grid then test exactly the same set.
-  planes_.push_back({-1, 0, 0, -lo.x()});
-  planes_.push_back({1, 0, 0, hi.x()});
-  planes_.push_back({0, -1, 0, -lo.y()});
-  planes_.push_back({0, 1, 0, hi.y()});
-  planes_.push_back({0, 0, -1, -lo.z()});
-  planes_.push_back({0, 0, 1, hi.z()});
+  planes_.push_back({Vec3(-1, 0, 0), -lo.x()});
+  planes_.push_back({Vec3(1, 0, 0), hi.x()});
+  planes_.push_back({Vec3(0, -1, 0), -lo.y()});
+  planes_.push_back({Vec3(0, 1, 0), hi.y()});
+  planes_.push_back({Vec3(0, 0, -1), -lo.z()});
+  planes_.push_back({Vec3(0, 0, 1), hi.z()});
   planes_.insert(planes_.end(), facets.begin(), facets.end());
   first_.push_back(static_cast<int>(planes_.size()));
   indexed_ = false;
@@ -47,8 +47,8 @@ bool HullLocator::add(const acd::TriMesh& convex) {
 
 bool HullLocator::contains(int h, const Vec3& p) const {
   for (int k = first_[h], e = first_[h + 1]; k < e; ++k) {
-    const Plane& q = planes_[k];
-    if (q.nx * p.x() + q.ny * p.y() + q.nz * p.z() > q.d + slack_) return false;
+    const acd::HalfSpace& q = planes_[k];
+    if (q.n.x() * p.x() + q.n.y() * p.y() + q.n.z() * p.z() > q.c + slack_) return false;
   }
   return true;
 }
@@ -98,17 +98,17 @@ void HullLocator::buildIndex(const acd::Box3& box, std::size_t targetCells, tbb:
               bool excluded = false;
               crossing.clear();
               for (int k = first_[h]; k < first_[h + 1] && !excluded; ++k) {
-                const Plane& q = planes_[k];
-                const double mn = (q.nx > 0 ? q.nx * clo.x() : q.nx * chi.x()) +
-                                  (q.ny > 0 ? q.ny * clo.y() : q.ny * chi.y()) +
-                                  (q.nz > 0 ? q.nz * clo.z() : q.nz * chi.z());
-                const double mx = (q.nx > 0 ? q.nx * chi.x() : q.nx * clo.x()) +
-                                  (q.ny > 0 ? q.ny * chi.y() : q.ny * clo.y()) +
-                                  (q.nz > 0 ? q.nz * chi.z() : q.nz * clo.z());
-                if (mn - tol > q.d + slack_)
+                const acd::HalfSpace& q = planes_[k];
+                const double mn = (q.n.x() > 0 ? q.n.x() * clo.x() : q.n.x() * chi.x()) +
+                                  (q.n.y() > 0 ? q.n.y() * clo.y() : q.n.y() * chi.y()) +
+                                  (q.n.z() > 0 ? q.n.z() * clo.z() : q.n.z() * chi.z());
+                const double mx = (q.n.x() > 0 ? q.n.x() * chi.x() : q.n.x() * clo.x()) +
+                                  (q.n.y() > 0 ? q.n.y() * chi.y() : q.n.y() * clo.y()) +
+                                  (q.n.z() > 0 ? q.n.z() * chi.z() : q.n.z() * clo.z());
+                if (mn - tol > q.c + slack_)
                   excluded = true;  // no point of the cell passes this plane
-                else if (mx + tol > q.d + slack_)  // may reject some point of the cell
-                  crossing.emplace_back((mx - q.d) / std::max(mx - mn, 1e-300), static_cast<std::uint32_t>(k));
+                else if (mx + tol > q.c + slack_)  // may reject some point of the cell
+                  crossing.emplace_back((mx - q.c) / std::max(mx - mn, 1e-300), static_cast<std::uint32_t>(k));
               }
               if (excluded) continue;
               if (crossing.empty()) {
@@ -121,8 +121,8 @@ void HullLocator::buildIndex(const acd::Box3& box, std::size_t targetCells, tbb:
               lastHeader = s.slots.size();
               s.slots.push_back({static_cast<double>(crossing.size()), 0.0, 0.0, 0.0});
               for (const auto& [share, k] : crossing) {
-                const Plane& q = planes_[k];
-                s.slots.push_back({q.nx, q.ny, q.nz, q.d});
+                const acd::HalfSpace& q = planes_[k];
+                s.slots.push_back({q.n.x(), q.n.y(), q.n.z(), q.c});
               }
               ++s.runs;
             }

@@ -2,6 +2,7 @@
 // whose boundary cells keep only the planes that cross them.
 #pragma once
 
+#include <acd/convex_polytope.hpp>
 #include <acd/mesh.hpp>
 
 #include <tbb/task_arena.h>
@@ -13,12 +14,6 @@
 namespace pointloc {
 
 using acd::Vec3;
-
-/// Half-space n.x <= d (unit normal).
-struct Plane {
-  double nx, ny, nz, d;
-  double eval(const Vec3& p) const { return nx * p.x() + ny * p.y() + nz * p.z() - d; }
-};
 
 /// The union of convex polyhedra (the ACD hulls, or the pieces of an exact decomposition).
 ///
@@ -147,7 +142,7 @@ class HullLocator {
   }
 
   double slack_;
-  std::vector<Plane> planes_;   // all polyhedra's planes; polyhedron h owns [first_[h], first_[h + 1])
+  std::vector<acd::HalfSpace> planes_;   // all polyhedra's planes; polyhedron h owns [first_[h], first_[h + 1])
   std::vector<int> first_{0};
 
   bool indexed_ = false;

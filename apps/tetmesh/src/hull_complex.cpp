@@ -3,6 +3,7 @@
 
 #include "separation.hpp"
 
+#include <acd/convex_polytope.hpp>
 #include <acd/hull.hpp>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -68,12 +69,8 @@ class PointWelder {
 };
 
 // ------------------------------------------------------------------ planes
-/// n . x = c with |n| = 1.
-struct ContactPlane {
-  Vec3 n = Vec3::UnitZ();
-  double c = 0.0;
-  double distance(const Vec3& p) const { return n.dot(p) - c; }
-};
+/// A contact plane n . x = c (|n| = 1): libacd's half-space type, whose plane it is.
+using ContactPlane = acd::HalfSpace;
 
 /// A region stays where side * (n . x - c) <= 0 for this plane.
 struct SideConstraint {
