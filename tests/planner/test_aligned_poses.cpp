@@ -157,6 +157,13 @@ TEST(AlignedPoses, TwistyPuzzleConnectsWithAlignedPosesAndNotWithout) {
   }
   EXPECT_GE(connectedAligned, 4);
   EXPECT_LE(connectedRandom, 1);
+  // Seeded: a trial repeated after others gives the same roadmap.
+  const planner::Trial first = planner::runTrial(withAlignment, "acd", 100, 2);
+  planner::runTrial(withAlignment, "acd", 100, 3);
+  const planner::Trial again = planner::runTrial(withAlignment, "acd", 100, 2);
+  EXPECT_EQ(first.outcome.edges, again.outcome.edges);
+  EXPECT_EQ(first.checks, again.checks);
+  EXPECT_EQ(first.outcome.connected, again.outcome.connected);
 }
 
 }  // namespace
