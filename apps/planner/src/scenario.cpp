@@ -1,11 +1,10 @@
 #include "scenario.hpp"
 
-#include "scene_reader.hpp"
-
 #include <acd/diagnosis.hpp>
 #include <acd/inside.hpp>
 #include <acd/io.hpp>
 #include <acd/shapes.hpp>
+#include <sandbox/scene_reader.hpp>
 
 #include <yaml-cpp/yaml.h>
 
@@ -130,7 +129,7 @@ class Parser {
   acd::TriMesh meshFile(const YAML::Node& node, const std::string& where) const {
     const std::string file = resolve(scalar<std::string>(node, where));
     if (!std::filesystem::exists(file)) fail("'" + where + "': " + file + ": file not found");
-    acd::ReadResult read = acdcli::readModel(file);
+    acd::ReadResult read = acdsandbox::readModel(file);
     if (!read.status.ok()) fail("'" + where + "': " + read.status.message);
     return std::move(read.mesh);
   }
