@@ -83,7 +83,7 @@ void compareExactPieces(Run& run, Timer& timer, tbb::task_arena& single, Compari
                          !c.ecd.available ? c.ecd.note : (c.ecd.refused ? "refused: " : "unfinished: ") + c.ecd.note});
     return;
   }
-  HullLocator& locator = c.ecdLocator.emplace(run.slack);
+  acd::HullSet& locator = c.ecdLocator.emplace(run.slack);
   for (const acd::TriMesh& piece : c.ecd.pieces) locator.add(piece);
   const auto tIndex = Clock::now();
   locator.buildIndex(run.box, run.p.gridCells, *run.arena);

@@ -4,8 +4,9 @@
 #pragma once
 
 #include "exact_pieces.hpp"
-#include "hull_locator.hpp"
 #include "run.hpp"
+
+#include <acd/algo/hull_set.hpp>
 
 #include <cstdint>
 #include <optional>
@@ -38,7 +39,7 @@ struct Method {
 struct Comparison {
   std::vector<Method> methods;
   ExactPieces ecd;
-  std::optional<HullLocator> ecdLocator;
+  std::optional<acd::HullSet> ecdLocator;
 };
 
 /// Times every method on the first K points (the ACD hulls on all N as well).

@@ -45,7 +45,7 @@ json printReport(const Run& run) {
   const bool compare = p.compare;
   const std::string& modelPath = run.modelPath;
   const acd::Decomposition& dec = run.dec;
-  const HullLocator& hulls = run.hulls;
+  const acd::HullSet& hulls = run.hulls;
   const std::uint64_t inside = run.inside;
   const std::uint64_t exactInside = run.exactInside;
   const std::uint64_t falseIn = run.falseIn;
@@ -211,7 +211,7 @@ int writeJson(const Run& run, const json& top, const Comparison* comparison, con
   const bool compare = p.compare;
   const std::string& modelPath = run.modelPath;
   const acd::Decomposition& dec = run.dec;
-  const HullLocator& hulls = run.hulls;
+  const acd::HullSet& hulls = run.hulls;
   const std::uint64_t inside = run.inside;
   const std::uint64_t exactInside = run.exactInside;
   const std::uint64_t falseIn = run.falseIn;

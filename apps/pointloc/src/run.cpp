@@ -62,7 +62,7 @@ int decomposeAndIndex(Run& run) {
   run.box = acd::boundingBox(run.mesh);
   run.boxVolume = run.box.size().prod();
   run.slack = 1e-10 * std::max(run.box.size().norm(), 1e-300);
-  run.hulls = HullLocator(run.slack);
+  run.hulls = acd::HullSet(run.slack);
   for (std::size_t c = 0; c < run.dec.components.size(); ++c) {
     run.unresolved += run.dec.components[c].unresolved ? 1 : 0;
     if (run.hulls.add(run.dec.components[c].hull)) run.hullComponent.push_back(static_cast<int>(c));

@@ -4,10 +4,10 @@
 #pragma once
 
 #include "blocks.hpp"
-#include "hull_locator.hpp"
 #include "parameters.hpp"
 #include "point_stream.hpp"
 
+#include <acd/algo/hull_set.hpp>
 #include <acd/decompose.hpp>
 #include <acd/inside.hpp>
 
@@ -35,7 +35,7 @@ struct Run {
   double decomposeSeconds = 0;
   acd::Box3 box;
   double boxVolume = 0, slack = 0;
-  HullLocator hulls{0.0};
+  acd::HullSet hulls{0.0};
   std::vector<int> hullComponent;  // hull index -> component index
   int unresolved = 0;
   std::optional<PointStream> points;

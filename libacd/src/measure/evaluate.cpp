@@ -11,6 +11,7 @@
 // non-convexity is harmless), as half-spaces n.x <= d for the volume test, as triangles
 // (a canonical fan per planar facet) for surface sampling and exact point-to-hull distances.
 #include <acd/algo/closest_point.hpp>
+#include <acd/algo/hull_set.hpp>
 #include <acd/algo/parallel.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/evaluate.hpp>
@@ -42,6 +43,8 @@ using P3 = K::Point_3;
 
 // Slack of the half-space test, in normalised units: inside a hull iff n.x <= d + kHullSlack.
 constexpr double kHullSlack = 1e-10;
+// Cells of the grid over the union of the hulls (about).
+constexpr std::size_t kUnionCells = std::size_t(1) << 15;
 
 // ---------------------------------------------------------------- random numbers
 
@@ -245,45 +248,19 @@ bool buildHull(const std::vector<Vec3>& points, Hull& hull) {
   return true;
 }
 
-/// Uniform grid over the sampling box listing, per cell, the hulls whose box meets it.
-class HullIndex {
- public:
-  HullIndex(const std::vector<Hull>& hulls, const Box3& box) : hulls_(hulls), lo_(box.lo) {
-    n_ = std::clamp(static_cast<int>(std::ceil(std::cbrt(8.0 * static_cast<double>(hulls.size())))), 1, 32);
-    const Vec3 size = box.size();
-    for (int a = 0; a < 3; ++a) s_[a] = n_ / std::max(size[a], 1e-300);
-    cells_.resize(static_cast<std::size_t>(n_) * n_ * n_);
-    for (int h = 0; h < static_cast<int>(hulls.size()); ++h) {
-      const Vec3 lo = hulls[h].lo - Vec3::Constant(kHullSlack), hi = hulls[h].hi + Vec3::Constant(kHullSlack);
-      const int x0 = cell(lo, 0), x1 = cell(hi, 0), y0 = cell(lo, 1), y1 = cell(hi, 1), z0 = cell(lo, 2),
-                z1 = cell(hi, 2);
-      for (int z = z0; z <= z1; ++z)
-        for (int y = y0; y <= y1; ++y)
-          for (int x = x0; x <= x1; ++x) cells_[(static_cast<std::size_t>(z) * n_ + y) * n_ + x].push_back(h);
-    }
+/// The hulls as one HullSet (acd/algo/hull_set.hpp) indexed over the sampling box: a point is in
+/// their union iff some hull holds it, box and facets, within kHullSlack.
+HullSet hullUnion(const std::vector<Hull>& hulls, const Box3& box, tbb::task_arena& arena) {
+  HullSet set(kHullSlack);
+  std::vector<HalfSpace> facets;
+  for (const Hull& h : hulls) {
+    facets.clear();
+    for (std::size_t i = 0; i < h.normals.size(); ++i) facets.push_back({h.normals[i], h.offsets[i]});
+    set.add(Box3{h.lo, h.hi}, facets);
   }
-
-  bool inUnion(const Vec3& p) const {
-    const auto& list = cells_[(static_cast<std::size_t>(cell(p, 2)) * n_ + cell(p, 1)) * n_ + cell(p, 0)];
-    for (int h : list) {
-      const Hull& hull = hulls_[h];
-      if ((p.array() < hull.lo.array() - kHullSlack).any() || (p.array() > hull.hi.array() + kHullSlack).any())
-        continue;
-      if (hull.contains(p)) return true;
-    }
-    return false;
-  }
-
- private:
-  int cell(const Vec3& p, int a) const {
-    return std::clamp(static_cast<int>(std::floor((p[a] - lo_[a]) * s_[a])), 0, n_ - 1);
-  }
-  const std::vector<Hull>& hulls_;
-  Vec3 lo_;
-  double s_[3] = {1, 1, 1};
-  int n_ = 1;
-  std::vector<std::vector<int>> cells_;
-};
+  set.buildIndex(box, kUnionCells, arena);
+  return set;
+}
 
 /// Distance from p to the solid convex hull (0 inside).
 double distanceToHull(const Hull& h, const Vec3& p) {
@@ -475,7 +452,7 @@ std::vector<Hull> normalisedHulls(const std::vector<TriMesh>& hulls, const Norma
 }
 
 /// Monte-Carlo volumes: uniform points in the box, in the model, in the union of the hulls, in both.
-void sampleVolumes(const Box3& box, const HullIndex& index, const InsideTest& locator, tbb::task_arena& arena,
+void sampleVolumes(const Box3& box, const HullSet& index, const InsideTest& locator, tbb::task_arena& arena,
                    const EvaluateOptions& options, Evaluation& ev) {
   const Vec3 size = box.size();
   constexpr std::int64_t kBlock = 1 << 14;
@@ -491,7 +468,7 @@ void sampleVolumes(const Box3& box, const HullIndex& index, const InsideTest& lo
       const auto u = static_cast<std::uint64_t>(i);
       const Vec3 p(box.lo.x() + size.x() * rng.uniform(u, 0), box.lo.y() + size.y() * rng.uniform(u, 1),
                    box.lo.z() + size.z() * rng.uniform(u, 2));
-      const bool inU = index.inUnion(p), inM = locator.inside(p);
+      const bool inU = index.inside(p), inM = locator.inside(p);
       c.model += inM;
       c.onion += inU;
       c.both += inM && inU;
@@ -522,7 +499,7 @@ void sampleVolumes(const Box3& box, const HullIndex& index, const InsideTest& lo
 
 /// Surface distances: from sample points on the hulls to the model (outside it only), and from
 /// sample points on the model to the union of the hulls.
-void sampleSurfaceDistances(const TriMesh& m, const std::vector<Hull>& hs, const HullIndex& index,
+void sampleSurfaceDistances(const TriMesh& m, const std::vector<Hull>& hs, const HullSet& index,
                             const InsideTest& locator, tbb::task_arena& arena, const EvaluateOptions& options,
                             Evaluation& ev) {
   constexpr std::int64_t kBlock = 1 << 12;
@@ -570,7 +547,7 @@ void sampleSurfaceDistances(const TriMesh& m, const std::vector<Hull>& hs, const
       const std::int64_t end = std::min<std::int64_t>(n, static_cast<std::int64_t>(b + 1) * kBlock);
       for (std::int64_t i = static_cast<std::int64_t>(b) * kBlock; i < end; ++i) {
         const Vec3 p = modelSampler.sample(modelRng, static_cast<std::uint64_t>(i));
-        if (index.inUnion(p)) continue;
+        if (index.inside(p)) continue;
         // Nearest hulls first by box distance, a lower bound of the hull distance.
         for (std::size_t h = 0; h < hs.size(); ++h) order[h] = {boxDistance(hs[h].lo, hs[h].hi, p), static_cast<int>(h)};
         std::sort(order.begin(), order.end());
@@ -634,8 +611,8 @@ Evaluation evaluate(const TriMesh& model, const std::vector<TriMesh>& hulls, con
   ev.boxVolume = size.prod();
 
   const InsideTest locator(m);
-  const HullIndex index(hs, box);
   tbb::task_arena arena = workerArena(options.threads);
+  const HullSet index = hullUnion(hs, box, arena);
 
   sampleVolumes(box, index, locator, arena, options, ev);
 

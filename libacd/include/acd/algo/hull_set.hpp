@@ -1,5 +1,6 @@
-// Point location in a union of convex polyhedra given as half-spaces, through a uniform grid
-// whose boundary cells keep only the planes that cross them.
+// A union of convex polyhedra (hulls) as half-spaces, with a cell grid for point location whose
+// boundary cells keep only the planes that cross them: the one home of "is this point in the
+// union of the hulls" (acd evaluate's volume and surface samples, pointloc's queries).
 #pragma once
 
 #include <acd/convex_polytope.hpp>
@@ -11,9 +12,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace pointloc {
-
-using acd::Vec3;
+namespace acd {
 
 /// The union of convex polyhedra (the ACD hulls, or the pieces of an exact decomposition).
 ///
@@ -24,18 +23,22 @@ using acd::Vec3;
 /// points a handful of plane tests, instead of scanning polyhedra and all their facets.
 /// Every answer equals that of `insideDirect`, which tests every plane (the grid is exact: cells
 /// are classified with an inflated box that covers the rounding of the cell index).
-class HullLocator {
+class HullSet {
  public:
   /// `slack`: a point is inside a half-space when n.p <= d + slack.
-  explicit HullLocator(double slack) : slack_(slack) {}
+  explicit HullSet(double slack) : slack_(slack) {}
 
   /// Adds one closed convex triangle mesh; returns false (and adds nothing) if it has no
   /// non-degenerate face. Its first six planes are its bounding box; facet planes use the
   /// support value over all its vertices, so a rounded sliver facet can never cut it.
-  bool add(const acd::TriMesh& convex);
+  bool add(const TriMesh& convex);
+
+  /// Adds one convex polyhedron given by its box and its facets' half-spaces (unit normals,
+  /// supporting offsets), tested in that order as `add` does.
+  void add(const Box3& box, const std::vector<HalfSpace>& facets);
 
   /// Builds the grid over `box` with about `targetCells` cells, in parallel in `arena`.
-  void buildIndex(const acd::Box3& box, std::size_t targetCells, tbb::task_arena& arena);
+  void buildIndex(const Box3& box, std::size_t targetCells, tbb::task_arena& arena);
 
   int size() const { return static_cast<int>(first_.size()) - 1; }
   std::size_t planeCount() const { return planes_.size(); }
@@ -142,7 +145,7 @@ class HullLocator {
   }
 
   double slack_;
-  std::vector<acd::HalfSpace> planes_;   // all polyhedra's planes; polyhedron h owns [first_[h], first_[h + 1])
+  std::vector<HalfSpace> planes_;   // all polyhedra's planes; polyhedron h owns [first_[h], first_[h + 1])
   std::vector<int> first_{0};
 
   bool indexed_ = false;
@@ -160,4 +163,4 @@ class HullLocator {
   std::size_t insideCells_ = 0;
 };
 
-}  // namespace pointloc
+}  // namespace acd

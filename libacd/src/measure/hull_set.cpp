@@ -1,20 +1,20 @@
-#include "hull_locator.hpp"
+#include <acd/algo/hull_set.hpp>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <cmath>
 
-namespace pointloc {
+namespace acd {
 
-bool HullLocator::add(const acd::TriMesh& convex) {
-  std::vector<acd::HalfSpace> facets;
+bool HullSet::add(const TriMesh& convex) {
+  std::vector<HalfSpace> facets;
   Vec3 lo = Vec3::Constant(INFINITY), hi = -lo;
   for (const Vec3& v : convex.vertices) {
     lo = lo.cwiseMin(v);
     hi = hi.cwiseMax(v);
   }
-  for (const acd::Face& f : convex.faces) {
+  for (const Face& f : convex.faces) {
     const Vec3 &a = convex.vertices[f[0]], &b = convex.vertices[f[1]], &c = convex.vertices[f[2]];
     Vec3 n = (b - a).cross(c - a);
     const double len = n.norm();
@@ -23,7 +23,7 @@ bool HullLocator::add(const acd::TriMesh& convex) {
     double d = n.dot(a);
     for (const Vec3& v : convex.vertices) d = std::max(d, n.dot(v));
     bool duplicate = false;  // coplanar triangles of one facet give one plane
-    for (const acd::HalfSpace& p : facets)
+    for (const HalfSpace& p : facets)
       if (p.n.x() * n.x() + p.n.y() * n.y() + p.n.z() * n.z() > 1 - 1e-12 && std::abs(p.c - d) <= slack_) {
         duplicate = true;
         break;
@@ -31,6 +31,12 @@ bool HullLocator::add(const acd::TriMesh& convex) {
     if (!duplicate) facets.push_back({n, d});
   }
   if (facets.empty()) return false;
+  add(Box3{lo, hi}, facets);
+  return true;
+}
+
+void HullSet::add(const Box3& box, const std::vector<HalfSpace>& facets) {
+  const Vec3 &lo = box.lo, &hi = box.hi;
   // The box as six planes, tested first: they reject most points at once, and the scan and
   // the grid then test exactly the same set.
   planes_.push_back({Vec3(-1, 0, 0), -lo.x()});
@@ -42,24 +48,23 @@ bool HullLocator::add(const acd::TriMesh& convex) {
   planes_.insert(planes_.end(), facets.begin(), facets.end());
   first_.push_back(static_cast<int>(planes_.size()));
   indexed_ = false;
-  return true;
 }
 
-bool HullLocator::contains(int h, const Vec3& p) const {
+bool HullSet::contains(int h, const Vec3& p) const {
   for (int k = first_[h], e = first_[h + 1]; k < e; ++k) {
-    const acd::HalfSpace& q = planes_[k];
+    const HalfSpace& q = planes_[k];
     if (q.n.x() * p.x() + q.n.y() * p.y() + q.n.z() * p.z() > q.c + slack_) return false;
   }
   return true;
 }
 
-int HullLocator::firstContaining(const Vec3& p) const {
+int HullSet::firstContaining(const Vec3& p) const {
   for (int h = 0, n = size(); h < n; ++h)
     if (contains(h, p)) return h;
   return -1;
 }
 
-void HullLocator::buildIndex(const acd::Box3& box, std::size_t targetCells, tbb::task_arena& arena) {
+void HullSet::buildIndex(const Box3& box, std::size_t targetCells, tbb::task_arena& arena) {
   const Vec3 extent = box.size().cwiseMax(Vec3::Constant(1e-300));
   const double unit = std::cbrt(extent.prod() / static_cast<double>(std::max<std::size_t>(targetCells, 1)));
   gx_ = std::clamp(static_cast<int>(std::ceil(extent.x() / unit)), 1, 2048);
@@ -98,7 +103,7 @@ void HullLocator::buildIndex(const acd::Box3& box, std::size_t targetCells, tbb:
               bool excluded = false;
               crossing.clear();
               for (int k = first_[h]; k < first_[h + 1] && !excluded; ++k) {
-                const acd::HalfSpace& q = planes_[k];
+                const HalfSpace& q = planes_[k];
                 const double mn = (q.n.x() > 0 ? q.n.x() * clo.x() : q.n.x() * chi.x()) +
                                   (q.n.y() > 0 ? q.n.y() * clo.y() : q.n.y() * chi.y()) +
                                   (q.n.z() > 0 ? q.n.z() * clo.z() : q.n.z() * chi.z());
@@ -121,7 +126,7 @@ void HullLocator::buildIndex(const acd::Box3& box, std::size_t targetCells, tbb:
               lastHeader = s.slots.size();
               s.slots.push_back({static_cast<double>(crossing.size()), 0.0, 0.0, 0.0});
               for (const auto& [share, k] : crossing) {
-                const acd::HalfSpace& q = planes_[k];
+                const HalfSpace& q = planes_[k];
                 s.slots.push_back({q.n.x(), q.n.y(), q.n.z(), q.c});
               }
               ++s.runs;
@@ -163,4 +168,4 @@ void HullLocator::buildIndex(const acd::Box3& box, std::size_t targetCells, tbb:
   indexed_ = true;
 }
 
-}  // namespace pointloc
+}  // namespace acd
