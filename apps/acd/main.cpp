@@ -99,9 +99,12 @@ int runInfo(const std::string& path) {
 struct DecomposeArgs {
   std::string model;
   std::string out = "acd-out";
-  acd::DecomposeOptions options;
+  acd::DecomposeOptions options = acd::recommendedOptions();
   bool noGrouping = false;
   bool noMerge = false;
+  bool noInvariant = false;          // --no-invariant
+  bool invariantFlag = false;        // --invariant: the default since 2026-11-25, still accepted
+  std::string mergeScope = "model";  // --merge-scope
   bool noFillHoles = false;
   bool noWrap = false;
   bool noRepair = false;
@@ -114,8 +117,11 @@ struct DecomposeArgs {
 
 void printSummary(const DecomposeArgs& a, const acd::Decomposition& d) {
   const auto& cs = d.components;
-  double volume = 0, hullVolume = 0, maxConcavity = 0;
-  for (const auto& c : cs) volume += c.volume, hullVolume += c.hullVolume, maxConcavity = std::max(maxConcavity, c.concavity);
+  double volume = 0, hullVolume = 0, maxConcavity = 0, maxExcess = 0;
+  for (const auto& c : cs) {
+    volume += c.volume, hullVolume += c.hullVolume;
+    maxConcavity = std::max(maxConcavity, c.concavity), maxExcess = std::max(maxExcess, c.hullExcess);
+  }
   std::printf("\n  %-5s %9s %9s %10s %10s %10s\n", "part", "vertices", "faces", "volume %", "hull/vol", "concavity");
   const std::size_t shown = std::min<std::size_t>(cs.size(), 40);
   for (std::size_t i = 0; i < shown; ++i) {
@@ -129,7 +135,10 @@ void printSummary(const DecomposeArgs& a, const acd::Decomposition& d) {
   std::printf("  tau            %g   (epsilon %g, delta %g, feature grouping %s)\n", d.options.tau, d.options.epsilon,
               d.options.delta, d.options.featureGrouping ? "on" : "off");
   std::printf("  components     %zu\n", cs.size());
-  std::printf("  max concavity  %.4f\n", maxConcavity);
+  std::printf("  max concavity  %.4f%s\n", maxConcavity,
+              d.options.mergeScope == acd::MergeScope::Model && maxConcavity > d.options.tau
+                  ? "   (merged components: their pockets lie in other components)" : "");
+  std::printf("  hull excess    %.4f   (how far a hull stands off the model, at most)\n", maxExcess);
   std::printf("  volume         %.6g of %.6g (relative error %.2e)\n", volume, d.stats.inputVolume,
               std::abs(volume - d.stats.inputVolume) / d.stats.inputVolume);
   std::printf("  hulls / model  %.4f\n", hullVolume / d.stats.inputVolume);
@@ -254,6 +263,8 @@ int runPerMesh(DecomposeArgs& a) {
 int runDecompose(DecomposeArgs& a) {
   a.options.featureGrouping = !a.noGrouping;
   a.options.merge = !a.noMerge;
+  a.options.invariant = !a.noInvariant;
+  a.options.mergeScope = a.mergeScope == "component" ? acd::MergeScope::Component : acd::MergeScope::Model;
   a.options.fillHoles = !a.noFillHoles;
   a.options.wrap = !a.noWrap && !a.noRepair;
   a.options.repair = !a.noRepair;
@@ -299,15 +310,22 @@ int main(int argc, char** argv) {
   DecomposeArgs da;
   auto* dec = app.add_subcommand("decompose", "Solid ACD of a closed mesh (OFF, OBJ, PLY, STL; glTF, GLB, COLLADA, 3MF, FBX)");
   dec->add_option("model", da.model, "Input mesh")->required();
-  dec->add_option("-t,--tau", da.options.tau, "Concavity tolerance: every component ends with concavity <= tau")
+  dec->add_option("-t,--tau", da.options.tau, "Concavity tolerance: every piece the recursion leaves has concavity <= tau, every hull stays within tau of the model")
       ->capture_default_str();
   dec->add_option("--epsilon", da.options.epsilon, "Bridge clustering tolerance (default tau/2)");
   dec->add_option("--delta", da.options.delta, "Douglas-Peucker knot tolerance (default tau/20)");
   dec->add_flag("--no-grouping", da.noGrouping,
                 "Resolve the most concave notch with a plane bisecting its dihedral angle (no feature grouping)");
-  dec->add_flag("--invariant", da.options.invariant,
-                "Decompose in a frame computed from the shape: the same parts whatever the model's pose and order "
-                "of faces (input vertices on cut planes move by up to 2.1e-7 of the model's radius)");
+  dec->add_flag("--no-invariant", da.noInvariant,
+                "Decompose in the model's own coordinates: the parts may change with the model's pose and order of faces, "
+                "and every cut face is exactly planar (by default the shape's own frame is used: the same parts for any "
+                "rotation, translation or face order; cuts are computed on coordinates rounded to 2.4e-7 of the radius)");
+  dec->add_flag("--invariant", da.invariantFlag, "Decompose in the shape's own frame (the default)")->group("");
+  dec->add_option("--merge-scope", da.mergeScope,
+                  "What a merge of two neighbours must keep: 'model' (the union's hull within tau of the model; "
+                  "fewer parts) or 'component' (the union's own concavity within tau, the paper's promise for every component)")
+      ->check(CLI::IsMember({"model", "component"}))
+      ->capture_default_str();
   dec->add_flag("--no-merge", da.noMerge,
                 "Keep every piece the recursion made (by default neighbours are glued back while their union stays within tau)");
   dec->add_flag("--no-fill-holes", da.noFillHoles,

@@ -49,7 +49,7 @@ acd::Status validate(const ExactSettings& settings);
 /// it, as `acd decompose` has both, and the modes the command switches to (the Python layer
 /// routes them: surface to decompose_surface, exact to decompose_exact, per_mesh mesh by mesh).
 struct SolidOptions {
-  acd::DecomposeOptions decompose;
+  acd::DecomposeOptions decompose = acd::recommendedOptions();  // as `acd decompose`
   acd::PostPassOptions post;
   bool tauGiven = false;  // tau and tau_abs together are refused, as -t and --tau-abs are
   bool exact = false;

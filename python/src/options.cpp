@@ -89,7 +89,14 @@ void bindOptions(py::module_& m) {
   negated(solid, "no_fill_holes", [](SolidOptions& o) -> bool& { return o.decompose.fillHoles; });
   negated(solid, "no_wrap", [](SolidOptions& o) -> bool& { return o.decompose.wrap; });
   negated(solid, "no_repair", [](SolidOptions& o) -> bool& { return o.decompose.repair; });
-  plain(solid, "invariant", [](SolidOptions& o) -> bool& { return o.decompose.invariant; });
+  negated(solid, "no_invariant", [](SolidOptions& o) -> bool& { return o.decompose.invariant; });
+  solid.def_property(  // --merge-scope
+      "merge_scope",
+      [](const SolidOptions& o) { return std::string(o.decompose.mergeScope == acd::MergeScope::Model ? "model" : "component"); },
+      [](SolidOptions& o, const std::string& v) {
+        if (v != "model" && v != "component") throw py::value_error("merge_scope must be 'model' or 'component'");
+        o.decompose.mergeScope = v == "model" ? acd::MergeScope::Model : acd::MergeScope::Component;
+      });
   plain(solid, "threads", [](SolidOptions& o) -> int& { return o.decompose.threads; });  // 0: all cores
   // The post-passes (acd/post_passes.hpp); None: not given, as an option absent from the command line.
   plain(solid, "tau_abs", [](SolidOptions& o) -> std::optional<double>& { return o.post.tauAbs; });

@@ -5,6 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include "helpers.hpp"
+
+#include <random>
+
 using namespace acd;
 
 TEST(Merge, HalvesOfACutSphereGlueBackIntoTheSphere) {
@@ -30,9 +34,13 @@ TEST(Merge, MeshesThatDoNotTouchDoNotGlue) {
 
 TEST(Merge, NeverMoreComponentsThanWithoutAndStillWithinTau) {
   const TriMesh db = shapes::dumbbell();
+  const acdtest::MeshIndex model(db);
+  for (MergeScope scope : {MergeScope::Component, MergeScope::Model})
   for (bool grouping : {true, false}) {
+    SCOPED_TRACE(std::string(scope == MergeScope::Model ? "model" : "component") + (grouping ? ", grouping" : ""));
     DecomposeOptions o;
     o.tau = 0.05;
+    o.mergeScope = scope;
     o.featureGrouping = grouping;
     o.merge = false;
     const Decomposition plain = decompose(db, o);
@@ -42,9 +50,15 @@ TEST(Merge, NeverMoreComponentsThanWithoutAndStillWithinTau) {
     EXPECT_LE(merged.components.size(), plain.components.size());
     EXPECT_EQ(static_cast<int>(plain.components.size()) - merged.stats.merges, static_cast<int>(merged.components.size()));
     double volume = 0;
+    std::mt19937_64 rng(5);
+    const double radius = 1.0 / merged.normalization.scale;  // tau is in units of the model's radius
     for (const Component& c : merged.components) {
       EXPECT_TRUE(isClosedOriented(c.mesh));
-      EXPECT_LE(c.concavity, o.tau);
+      if (scope == MergeScope::Component) EXPECT_LE(c.concavity, o.tau);
+      EXPECT_LE(c.hullExcess, o.tau);
+      // Independently: no point of the hull farther than tau outside the model.
+      for (const Vec3& p : acdtest::sampleSurface(c.hull, 2000, rng))
+        if (!model.inside(p)) EXPECT_LE(model.distance(p), o.tau * radius) << p.transpose();
       volume += c.volume;
     }
     // (1e-6: cuts are made on coordinates rounded to the canonical grid, 2.4e-7.)

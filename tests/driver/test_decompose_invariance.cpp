@@ -121,7 +121,7 @@ TEST(DecomposeTauKept, HullsStayWithinTauOfTheModel) {
     SCOPED_TRACE(model);
     const acd::ReadResult r = acd::readMesh(corpus(model));
     if (!r.status.ok()) GTEST_SKIP() << corpus(model) << " not present (scripts/fetch_corpus.sh)";
-    DecomposeOptions o;
+    DecomposeOptions o = acd::recommendedOptions();  // as the acd command decomposes
     o.tau = tau;
     const Decomposition d = acd::decompose(r.mesh, o);
     ASSERT_TRUE(d.status.ok()) << d.status.message;

@@ -12,18 +12,31 @@
 
 namespace acd {
 
+/// What the merge pass must keep when it glues two neighbours back together.
+enum class MergeScope {
+  /// The union's own concavity within tau (the paper's promise for every component), its hull within
+  /// tau of it and at most 3 % of its volume beyond the two hulls it replaces.
+  Component,
+  /// The union's hull within tau of the model, and at most 10 % of the union's volume added outside
+  /// the model and the two hulls: a component may be more concave than tau where its pockets are
+  /// filled by other components. Fewer parts for the same hulls-to-model fidelity.
+  Model,
+};
+
 struct DecomposeOptions {
   double tau = 0.05;             // concavity tolerance, normalised units (min enclosing sphere radius 1)
   double epsilon = -1.0;         // bridge clustering tolerance; < 0 means tau / 2
   double delta = -1.0;           // Douglas-Peucker knot tolerance; < 0 means tau / 20
   bool featureGrouping = true;   // false: bisect the notch's dihedral angle (Section 3.2)
   bool merge = true;             // glue neighbours back while their union stays within tau
+  MergeScope mergeScope = MergeScope::Component;  // what "within tau" means for a union (above)
   bool fillHoles = true;         // close an open mesh's holes first (false: refuse open meshes)
   bool repair = true;            // repairs, shells and the wrap (acd/robust.hpp); false: strict checks only
   bool wrap = true;              // with repair: wrap what cannot be made a clean solid (false: refuse it)
   /// Decompose in a frame computed from the shape (acd/algo/canonical_frame.hpp): the same parts for any
-  /// rotation, translation or order of faces. Input vertices on cut planes come back moved by up
-  /// to 2.1e-7 of the model's radius (the frame's rounding grid); off by default for that reason.
+  /// rotation, translation or order of faces. Input vertices come back exactly; the cuts are computed
+  /// on coordinates rounded to the frame's grid (2.4e-7 of the model's radius), so a cut face through
+  /// input vertices and points a cut made is planar to within that.
   bool invariant = false;
   int threads = 0;               // 0: all cores. The output never depends on it.
   int maxComponents = 10000;     // safety net against runaway recursion
@@ -31,6 +44,13 @@ struct DecomposeOptions {
   /// Called from the calling thread after each round: components done, components pending.
   std::function<void(int done, int pending)> progress;
 };
+
+/// What the `acd` command and the Python module decompose with unless told otherwise: the shape's
+/// own frame (invariant) and the merge held to the model (MergeScope::Model), for the same parts in
+/// every pose and fewer parts at the same fidelity. The struct's own defaults keep the input's
+/// coordinates bit for bit and the paper's promise for every component, which the applications
+/// built on the library (planner, tetmesh, pointloc, skeleton) rely on.
+DecomposeOptions recommendedOptions();
 
 /// Parameters after defaults are applied; `validate` rejects nonsense with a message.
 DecomposeOptions resolvedOptions(const DecomposeOptions& options);
@@ -42,6 +62,7 @@ struct Component {
   double volume = 0.0;     // normalised units
   double hullVolume = 0.0; // normalised units
   double concavity = 0.0;  // normalised units, by the library's measure
+  double hullExcess = 0.0; // how far its hull stands off it (or, merged with MergeScope::Model, off the model)
   int depth = 0;           // cuts from the input to this component
   int source = 0;          // which connected piece of the input it came from
   bool unresolved = false; // concavity > tau but no cut could be made (reported, never hidden)

@@ -4,12 +4,11 @@
 // order, so the output is the same for any number of threads.
 #include <acd/algo/canonical_frame.hpp>
 #include <acd/algo/concavity.hpp>
-#include <acd/algo/cut_plane.hpp>
-#include <acd/algo/features.hpp>
+#include <acd/algo/cut_choice.hpp>
 #include <acd/algo/hull_excess.hpp>
-#include <acd/algo/knot_graph.hpp>
 #include <acd/algo/merge.hpp>
 #include <acd/algo/parallel.hpp>
+#include <acd/random.hpp>
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/hull.hpp>
@@ -17,7 +16,6 @@
 
 #include "rounds.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <tbb/parallel_for.h>
 
 #include <chrono>
@@ -25,6 +23,8 @@
 #include <cstdlib>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <memory>
 #include <numeric>
 #include <sstream>
 
@@ -60,68 +60,6 @@ struct Outcome {
   DecomposeStats stats;
 };
 
-/// Cuts `piece` by `plane`; succeeds only if it really splits into pieces with volume.
-bool tryCut(const Piece& piece, Plane plane, const Vec3& notch, double concavity, int stalls,
-            std::vector<Piece>& children) {
-  // Small shifts get past degenerate sections; the larger ones past local self-intersections of the
-  // input (whose sections have crossing loops), at the price of a cut slightly off the notch.
-  const double nudges[] = {0.0, 1e-7, -1e-7, 1e-5, -1e-5, 1e-3, -1e-3, 4e-3, -4e-3};
-  // A piece this much smaller than its parent is a sliver: the plane grazed a face and resolved nothing.
-  const double minVolume = 1e-7 * signedVolume(piece.mesh);
-  for (double nudge : nudges) {
-    Plane p = plane;
-    p.offset += nudge * p.normal.norm();
-    CutResult cut = cutByPlane(piece.mesh, p);
-    if (!cut.ok || cut.below.empty() || cut.above.empty()) continue;
-    std::vector<Piece> out;
-    bool valid = true;
-    for (auto* side : {&cut.below, &cut.above})
-      for (TriMesh& m : *side) {
-        if (signedVolume(m) <= minVolume) valid = false;
-        out.push_back({std::move(m), piece.depth + 1, piece.source, notch, concavity, stalls, withCut(piece.cuts, p)});
-      }
-    if (!valid) continue;
-    children = std::move(out);
-    return true;
-  }
-  return false;
-}
-
-/// Figure 13: a plane through the notch that contains the bridge normal, across the pocket's longest
-/// extent (principal axis of the pocket's vertices projected on the bridge plane).
-Plane splitCupPlane(const TriMesh& mesh, const ConcavityMap& map, int notch) {
-  const int bridge = map.vertexBridge[notch];
-  const Vec3 n = map.bridges[bridge].normal;
-  std::vector<char> in(mesh.vertices.size(), 0);
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
-    if (map.facePocket[f] == bridge)
-      for (int v : mesh.faces[f]) in[v] = 1;
-  Vec3 mean = Vec3::Zero();
-  int count = 0;
-  for (std::size_t v = 0; v < in.size(); ++v)
-    if (in[v]) mean += mesh.vertices[v], ++count;
-  const Vec3& x = mesh.vertices[notch];
-  if (count < 3) return Plane::through(x, n.unitOrthogonal());
-  mean /= count;
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (std::size_t v = 0; v < in.size(); ++v)
-    if (in[v]) {
-      Vec3 d = mesh.vertices[v] - mean;
-      d -= d.dot(n) * n;  // projected on the bridge plane
-      cov += d * d.transpose();
-    }
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
-  Vec3 axis = eig.eigenvectors().col(2);
-  axis -= axis.dot(n) * n;
-  if (axis.norm() < 1e-12) axis = n.unitOrthogonal();
-  return Plane::through(x, axis.normalized());
-}
-
-/// A piece is final when its hull stands at most this share of tau off its surface, measured to
-/// within kExcessResolution * tau: 0.96 + 1/32 < 1, so a final hull is within tau of its piece.
-constexpr double kExcessLimit = 0.96;
-constexpr double kExcessResolution = 1.0 / 32;
-
 /// The vertex nearest to p; ties go to the smaller index (vertex order is canonical).
 int nearestVertex(const TriMesh& mesh, const Vec3& p) {
   int best = 0;
@@ -133,143 +71,16 @@ int nearestVertex(const TriMesh& mesh, const Vec3& p) {
   return best;
 }
 
-/// Back to the input's coordinates: an input vertex exactly, unless it lies on a plane the piece
-/// was cut by; there, like every point a cut made, through the inverse transform. Cut faces thus
-/// stay planar (an input vertex on one is off it by up to the canonical grid) and every piece
-/// that shares a vertex maps it alike (pieces that share a vertex were parted by a plane through it).
-TriMesh toInput(const Piece& piece, const CanonicalInverse& inverse) {
-  TriMesh out = piece.mesh;
-  for (Vec3& p : out.vertices) {
-    bool onCut = false;
-    for (const Plane& plane : piece.cuts)
-      if (std::abs(plane.signedDistance(p)) <= 1e-12) {
-        onCut = true;
-        break;
-      }
-    p = onCut ? inverse.undo(p) : inverse(p);
-  }
-  return out;
-}
-
 /// A merge may add at most this share of the union's volume to the hull volume beyond the two
 /// hulls it replaces (elephant at tau 0.05: 0.03 keeps IoU at the level without merging).
 constexpr double kMergeHullGrowth = 0.03;
 
-/// The planes that compete to cut a piece at its notch: the global cuts of feature grouping
-/// (Section 4.2) first, then the bisector and a fan of planes through the notch that contain the
-/// bridge normal. After stalls the fan widens; the lookahead in processPiece picks among them.
-std::vector<Plane> candidatePlanes(const Piece& piece, const SurfaceGraph& graph, const ConcavityMap& map,
-                                   const DecomposeOptions& o, int notchIndex, const Vec3& bridgeNormal, int stalls,
-                                   bool fromExcess, double& groupingSeconds) {
-  const Vec3& notch = piece.mesh.vertices[notchIndex];
-  std::vector<Plane> candidates;
-  if (o.featureGrouping && stalls == 0 && !fromExcess) {
-    const auto t = Clock::now();
-    // The paper's global cut: the minimum-weight cycle of the knot graph G_K through the root
-    // pocket cut (Section 4.2.4). Four greedily grown cuts compete with it (they also reach
-    // pockets without knots, where G_K has no edges): legs restricted to matched knots or free
-    // to take the cheapest knot, with a notch on a boundary taken as an end of the root cut or
-    // not. The lookahead (cutByLookahead) keeps whichever plane serves better.
-    {
-      const KnotGraph kg = buildKnotGraph(piece.mesh, graph, map, o.delta);
-      const GlobalCut cycle = knotGraphCycle(piece.mesh, map, kg);
-      if (cycle.vertices.size() >= 3)
-        candidates.push_back(Plane::through(notch, fitCutPlane(piece.mesh, cycle, bridgeNormal, 0.5 * o.tau).normal));
-    }
-    for (int variant = 0; variant < 4; ++variant) {
-      const bool matchKnots = variant < 2;
-      FeatureOptions fo;
-      fo.delta = o.delta;
-      fo.matchKnots = matchKnots;
-      fo.notchAsEnd = variant % 2 == 0;
-      const GlobalCut cut = findGlobalCut(piece.mesh, graph, map, fo);
-      if (cut.vertices.size() < 2) continue;
-      const Plane plane = fitCutPlane(piece.mesh, cut, bridgeNormal, 0.5 * o.tau);
-      // A plane (nearly) parallel to the bridge only skims the pocket: the cup-shaped case of
-      // Figure 13. Split the cup through its deepest point instead, across its longest extent.
-      if (variant == 0 && (cut.cupShaped || std::abs(plane.normal.normalized().dot(bridgeNormal)) > 0.9))
-        candidates.push_back(splitCupPlane(piece.mesh, map, map.notch));
-      // The plane must resolve the notch it was grown from: it passes through it. (A plane a hair
-      // away from the notch would only shave off a sliver and leave the notch as it was.)
-      candidates.push_back(Plane::through(notch, plane.normal));
-    }
-    groupingSeconds += secondsSince(t);
-  }
-  if (stalls <= 1) candidates.push_back(bisectorPlane(piece.mesh, graph, notchIndex, bridgeNormal));
-  // Planes through the notch that contain the bridge normal split the pocket between the bridge's
-  // ends (two orthogonal ones; a different pair after each stall).
-  // (unitOrthogonal follows the frame's axes: the canonical frame's, so the fan is the shape's.)
-  const Vec3 u = bridgeNormal.unitOrthogonal(), w = bridgeNormal.cross(u);
-  const double pi = std::acos(-1.0);
-  // After repeated stalls, a wider fan (and the plane parallel to the bridge) compete by lookahead.
-  const int fan = stalls >= 2 || fromExcess ? 8 : 2;
-  if (stalls >= 2) candidates.push_back(Plane::through(notch, bridgeNormal));
-  for (int k = 0; k < fan; ++k) {
-    const double angle = pi * k / fan + 0.25 * pi * (stalls % 2);  // a different set on each stall
-    candidates.push_back(Plane::through(notch, std::cos(angle) * u + std::sin(angle) * w));
-  }
-  return candidates;
-}
-
-/// The paper's baseline: the first plane that cuts cleanly.
-void cutByFirstPlane(const Piece& piece, const std::vector<Plane>& candidates, const Vec3& notch, double concavity,
-                     int stalls, const DecomposeOptions& o, Outcome& out) {
-  for (std::size_t i = 0; i < candidates.size(); ++i) {
-    if (tryCut(piece, candidates[i], notch, concavity, stalls, out.children)) {
-      out.final = false;
-      ++out.stats.cuts;
-      if (o.featureGrouping && (i > 0 || stalls > 0)) ++out.stats.fallbackCuts;
-      break;
-    }
-    ++out.stats.failedCuts;
-  }
-}
-
-/// One step of lookahead: cut with every candidate and keep the plane whose children are best
-/// approximated by their hulls (least hull volume beyond the children's own volume). After a
-/// stall the notch itself is the problem: keep the plane whose children are least concave.
-/// Candidates are cut and scored in parallel into their own slots; the best is picked in order.
-void cutByLookahead(const Piece& piece, const std::vector<Plane>& candidates, const Vec3& notch, double concavity,
-                    int stalls, bool fromExcess, const ConcavityOptions& co, const DecomposeOptions& o, Outcome& out) {
-  std::vector<std::vector<Piece>> children(candidates.size());
-  std::vector<char> cutOk(candidates.size(), 0);
-  std::vector<double> score(candidates.size(), 0.0);
-  std::vector<int> exceeding(candidates.size(), 0);
-  tbb::parallel_for(std::size_t(0), candidates.size(), [&](std::size_t i) {
-    cutOk[i] = tryCut(piece, candidates[i], notch, concavity, stalls, children[i]);
-    if (!cutOk[i]) return;
-    for (const Piece& child : children[i]) {
-      if (stalls > 0) {
-        SurfaceGraph childGraph(child.mesh);
-        score[i] = std::max(score[i], measureConcavity(child.mesh, childGraph, co).concavity);
-      } else {
-        const TriMesh hull = convexHull(child.mesh.vertices).mesh;
-        score[i] += signedVolume(hull) - signedVolume(child.mesh);
-        // A cut for a hull standing off its piece is judged first by how many children still do.
-        if (fromExcess)
-          exceeding[i] += measureHullExcess(child.mesh, hull, kExcessLimit * o.tau, kExcessResolution * o.tau).exceeds;
-      }
-    }
-  });
-  double bestScore = std::numeric_limits<double>::infinity();
-  std::size_t bestIndex = 0;
-  for (std::size_t i = 0; i < candidates.size(); ++i) {
-    if (!cutOk[i]) {
-      ++out.stats.failedCuts;
-      continue;
-    }
-    if (out.final || exceeding[i] < exceeding[bestIndex] ||
-        (exceeding[i] == exceeding[bestIndex] && score[i] < bestScore)) {
-      bestScore = score[i];
-      bestIndex = i;
-      out.final = false;
-    }
-  }
-  if (!out.final) out.children = std::move(children[bestIndex]);
-  if (!out.final) {
-    ++out.stats.cuts;
-    if (bestIndex > 0 || stalls > 0) ++out.stats.fallbackCuts;
-  }
+/// The children of a cut: one piece per side's part, remembering the notch they were cut for.
+std::vector<Piece> childrenOf(const Piece& piece, CutChoice& choice, const Vec3& notch, double concavity, int stalls) {
+  std::vector<Piece> children;
+  for (TriMesh& m : choice.pieces)
+    children.push_back({std::move(m), piece.depth + 1, piece.source, notch, concavity, stalls, withCut(piece.cuts, choice.plane)});
+  return children;
 }
 
 Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
@@ -300,6 +111,7 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
     const HullExcess e = measureHullExcess(piece.mesh, hull, kExcessLimit * o.tau, kExcessResolution * o.tau);
     out.times.concavity += secondsSince(t);
     c.concavity = std::max(c.concavity, e.distance);
+    c.hullExcess = e.distance;
     if (!e.exceeds) return out;
     fromExcess = true;
     concavity = e.distance;
@@ -324,13 +136,19 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
     c.note = "nine cuts in a row left the notch's concavity unchanged";
     return out;
   }
-  const std::vector<Plane> candidates =
-      candidatePlanes(piece, graph, map, o, notchIndex, bridgeNormal, stalls, fromExcess, out.times.grouping);
+  const CutSite site{notchIndex, bridgeNormal, stalls, fromExcess};
+  const std::vector<Plane> candidates = candidatePlanes(piece.mesh, graph, map, o, site, out.times.grouping);
   t = Clock::now();
-  if ((!o.featureGrouping && stalls == 0) || candidates.size() == 1)
-    cutByFirstPlane(piece, candidates, notch, concavity, stalls, o, out);
-  else
-    cutByLookahead(piece, candidates, notch, concavity, stalls, fromExcess, co, o, out);
+  const bool firstPlane = (!o.featureGrouping && stalls == 0) || candidates.size() == 1;
+  CutChoice choice = firstPlane ? cutByFirstPlane(piece.mesh, candidates)
+                                : cutByLookahead(piece.mesh, candidates, site, co, o.tau);
+  out.stats.failedCuts += choice.failed;
+  if (choice.ok) {
+    out.final = false;
+    ++out.stats.cuts;
+    if ((firstPlane ? o.featureGrouping : true) && (choice.index > 0 || stalls > 0)) ++out.stats.fallbackCuts;
+    out.children = childrenOf(piece, choice, notch, concavity, stalls);
+  }
   out.times.cutting += secondsSince(t);
   if (out.final) {
     c.unresolved = true;
@@ -371,58 +189,128 @@ std::vector<Piece> firstPieces(const std::vector<TriMesh>& components, bool inva
   return pending;
 }
 
+/// What a merge may add outside the model and the two hulls it replaces, as a share of the union's
+/// volume (MergeScope::Model; measured on compare_peers' models, docs/ALGORITHM.md section 11).
+constexpr double kModelMergeGrowth = 0.1;
+/// Points per union for that volume: its standard error is below 0.5 % of the hull's volume.
+constexpr int kModelMergeSamples = 4096;
+
+/// One candidate union of the merge pass, measured.
+struct MergeCandidate {
+  TriMesh glued;
+  bool ok = false;             // passes the merge test
+  double cost = 0.0;           // the order in which passing unions are taken (lower first)
+  double concavity = 0.0;      // MergeScope::Component: the union's measured concavity
+  double hullExcess = 0.0;     // how far its hull stands off the union (Component) or the model (Model)
+};
+
+MergeCandidate measureUnion(const Piece& a, const Piece& b, std::uint64_t key, const ModelExcess* model,
+                            const DecomposeOptions& o, const ConcavityOptions& co) {
+  MergeCandidate m;
+  if (!glueAlongSharedFaces(a.mesh, b.mesh, m.glued)) return m;
+  const TriMesh hull = convexHull(m.glued.vertices).mesh;
+  const TriMesh hullA = convexHull(a.mesh.vertices).mesh, hullB = convexHull(b.mesh.vertices).mesh;
+  const double volume = signedVolume(m.glued);
+  if (model) {
+    // The union's hull only has to stay within tau of the model: where it reaches beyond the union,
+    // it reaches into other components, which are model too.
+    const HullExcess e = model->measure(hull, kExcessLimit * o.tau, kExcessResolution * o.tau);
+    if (e.exceeds) return m;
+    m.cost = model->addedVolume(hull, {&hullA, &hullB}, kModelMergeSamples, key);
+    if (m.cost > kModelMergeGrowth * volume) return m;
+    m.hullExcess = e.distance;
+    m.ok = true;
+    return m;
+  }
+  // The union's hull may not swell much beyond the two hulls: a merge must not cost fidelity.
+  const double growth = signedVolume(hull) - volume - (signedVolume(hullA) - signedVolume(a.mesh)) -
+                        (signedVolume(hullB) - signedVolume(b.mesh));
+  if (growth > kMergeHullGrowth * volume) return m;
+  SurfaceGraph graph(m.glued);
+  m.concavity = measureConcavity(m.glued, graph, co).concavity;
+  if (m.concavity > o.tau) return m;
+  // A union is held to the same promise as a final piece: its hull within tau of it.
+  const HullExcess e = measureHullExcess(m.glued, hull, kExcessLimit * o.tau, kExcessResolution * o.tau);
+  if (e.exceeds) return m;
+  m.hullExcess = e.distance;
+  m.concavity = std::max(m.concavity, e.distance);
+  m.ok = true;
+  return m;
+}
+
 /// Merge pass: the greedy recursion sometimes cuts where a coarser split would have done. Glue
-/// neighbours back along their shared cut faces while the union stays within tau, largest contact
-/// first. Sequential and in a fixed order, so the result does not depend on the thread count.
-void mergePieces(std::vector<Piece>& finals, std::vector<Component>& finalInfo, const DecomposeOptions& o,
-                 DecomposeStats& stats) {
+/// neighbours back along their shared cut faces while the union passes the test of o.mergeScope
+/// (measureUnion). Every candidate union is measured in parallel; then the passing ones are taken
+/// in order (Component: largest contact first; Model: least volume added outside the model first,
+/// ties by pair order), skipping pairs whose pieces changed in that round; rounds repeat until
+/// nothing merges. The order is fixed, so the result does not depend on the thread count.
+void mergePieces(std::vector<Piece>& finals, std::vector<Component>& finalInfo, const TriMesh& input,
+                 const DecomposeOptions& o, DecomposeStats& stats) {
   ConcavityOptions co;
   co.epsilon = o.epsilon;
-  std::vector<char> alive(finals.size(), 1);
+  std::unique_ptr<ModelExcess> model;
+  if (o.mergeScope == MergeScope::Model) model = std::make_unique<ModelExcess>(input);
+  std::vector<char> alive(finals.size(), 1), mergedInModel(finals.size(), 0);
+  std::map<std::pair<int, int>, MergeCandidate> measured;  // by the pieces' indices
   for (bool merged = true; merged;) {
     merged = false;
     std::vector<TriMesh> meshes;
     std::vector<int> id;
     for (std::size_t i = 0; i < finals.size(); ++i)
       if (alive[i] && !finalInfo[i].unresolved) meshes.push_back(finals[i].mesh), id.push_back(static_cast<int>(i));
-    // Every candidate union is measured in parallel; then, in order, a union is taken if neither
-    // side has changed in this round. Pairs that touch a changed piece are looked at again next round.
     const std::vector<SharedFaces> pairs = sharedFacePairs(meshes);
-    std::vector<TriMesh> glued(pairs.size());
-    std::vector<double> concavity(pairs.size(), std::numeric_limits<double>::infinity());
-    tbb::parallel_for(std::size_t(0), pairs.size(), [&](std::size_t k) {
-      const int i = id[pairs[k].a], j = id[pairs[k].b];
-      if (!glueAlongSharedFaces(finals[i].mesh, finals[j].mesh, glued[k])) return;
-      // The union's hull may not swell much beyond the two hulls: a merge must not cost fidelity.
-      const TriMesh hull = convexHull(glued[k].vertices).mesh;
-      auto excess = [](const TriMesh& m) { return signedVolume(convexHull(m.vertices).mesh) - signedVolume(m); };
-      const double growth = signedVolume(hull) - signedVolume(glued[k]) - excess(finals[i].mesh) - excess(finals[j].mesh);
-      if (growth > kMergeHullGrowth * signedVolume(glued[k])) return;
-      SurfaceGraph graph(glued[k]);
-      const double measured = measureConcavity(glued[k], graph, co).concavity;
-      if (measured > o.tau) return;
-      // A union is held to the same promise as a final piece: its hull within tau of it.
-      const HullExcess e = measureHullExcess(glued[k], hull, kExcessLimit * o.tau, kExcessResolution * o.tau);
-      if (!e.exceeds) concavity[k] = std::max(measured, e.distance);
+    // A pair whose pieces are unchanged since it was measured keeps its measure.
+    std::vector<std::size_t> fresh;
+    for (std::size_t k = 0; k < pairs.size(); ++k)
+      if (!measured.count({id[pairs[k].a], id[pairs[k].b]})) fresh.push_back(k);
+    std::vector<MergeCandidate> measuredNow(fresh.size());
+    tbb::parallel_for(std::size_t(0), fresh.size(), [&](std::size_t f) {
+      const int i = id[pairs[fresh[f]].a], j = id[pairs[fresh[f]].b];
+      measuredNow[f] = measureUnion(finals[i], finals[j],
+                                    mix64(static_cast<std::uint64_t>(i) << 32 | static_cast<std::uint32_t>(j)), model.get(), o, co);
     });
+    for (std::size_t f = 0; f < fresh.size(); ++f)
+      measured[{id[pairs[fresh[f]].a], id[pairs[fresh[f]].b]}] = std::move(measuredNow[f]);
+    std::vector<MergeCandidate*> unions(pairs.size());
+    for (std::size_t k = 0; k < pairs.size(); ++k) unions[k] = &measured.at({id[pairs[k].a], id[pairs[k].b]});
+    std::vector<std::size_t> order(pairs.size());
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    if (model)
+      std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return unions[a]->cost < unions[b]->cost; });
     std::vector<char> changed(finals.size(), 0);
-    for (std::size_t k = 0; k < pairs.size(); ++k) {
+    for (std::size_t k : order) {
       const int i = id[pairs[k].a], j = id[pairs[k].b];
-      if (concavity[k] > o.tau || changed[i] || changed[j]) continue;
-      finals[i].mesh = std::move(glued[k]);
+      if (!unions[k]->ok || changed[i] || changed[j]) continue;
+      finals[i].mesh = std::move(unions[k]->glued);
       finals[i].cuts.insert(finals[i].cuts.end(), finals[j].cuts.begin(), finals[j].cuts.end());
-      finalInfo[i].concavity = concavity[k];
+      finalInfo[i].concavity = unions[k]->concavity;
+      finalInfo[i].hullExcess = unions[k]->hullExcess;
       finalInfo[i].depth = std::min(finalInfo[i].depth, finalInfo[j].depth);
+      mergedInModel[i] = model != nullptr;
       alive[j] = 0;
       changed[i] = changed[j] = 1;
       ++stats.merges;
       merged = true;
     }
+    for (auto it = measured.begin(); it != measured.end();)
+      it = changed[it->first.first] || changed[it->first.second] ? measured.erase(it) : std::next(it);
   }
   std::vector<Piece> keptPieces;
   std::vector<Component> keptInfo;
+  std::vector<std::size_t> measure;
   for (std::size_t i = 0; i < finals.size(); ++i)
-    if (alive[i]) keptPieces.push_back(std::move(finals[i])), keptInfo.push_back(finalInfo[i]);
+    if (alive[i]) {
+      if (mergedInModel[i]) measure.push_back(keptPieces.size());
+      keptPieces.push_back(std::move(finals[i]));
+      keptInfo.push_back(finalInfo[i]);
+    }
+  // A union kept for its hull may be more concave than tau (its pockets lie in other components):
+  // its concavity is measured as it is and reported, never assumed.
+  tbb::parallel_for(std::size_t(0), measure.size(), [&](std::size_t k) {
+    const TriMesh& mesh = keptPieces[measure[k]].mesh;
+    SurfaceGraph graph(mesh);
+    keptInfo[measure[k]].concavity = measureConcavity(mesh, graph, co).concavity;
+  });
   finals = std::move(keptPieces);
   finalInfo = std::move(keptInfo);
 }
@@ -442,6 +330,13 @@ void accumulate(DecomposeStats& into, const DecomposeStats& s) {
 }
 
 }  // namespace
+
+DecomposeOptions recommendedOptions() {
+  DecomposeOptions o;
+  o.invariant = true;
+  o.mergeScope = MergeScope::Model;
+  return o;
+}
 
 DecomposeOptions resolvedOptions(const DecomposeOptions& options) {
   DecomposeOptions o = options;
@@ -505,6 +400,9 @@ Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options) {
                                      : minimumSphereNormalization(concatenate(prepared.components));
   CanonicalInverse inverse(result.normalization);
   std::vector<Piece> pending = firstPieces(prepared.components, o.invariant, result, inverse);
+  std::vector<TriMesh> firstMeshes;  // the model as decomposed, for the merge pass
+  for (const Piece& p : pending) firstMeshes.push_back(p.mesh);
+  const TriMesh model = concatenate(firstMeshes);
   result.times.prepare = secondsSince(t);
 
   // Every parallel loop below, nested ones included, runs on these workers only.
@@ -529,7 +427,7 @@ Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options) {
     for (Outcome& out : rounds.outcomes) finalInfo.push_back(std::move(out.component));
 
     t = Clock::now();
-    if (o.merge) mergePieces(finals, finalInfo, o, result.stats);
+    if (o.merge) mergePieces(finals, finalInfo, model, o, result.stats);
     result.times.merging = secondsSince(t);
 
     t = Clock::now();
@@ -537,10 +435,13 @@ Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options) {
     tbb::parallel_for(std::size_t(0), finals.size(), [&](std::size_t i) {
       Component& c = result.components[i];
       c = finalInfo[i];
+      // Back to the input's coordinates: an input vertex exactly, a point a cut made through the
+      // inverse transform (every piece that shares a vertex maps it alike, so neighbours still share
+      // their cut faces). A cut face through both kinds is planar to within the canonical grid.
       // The hull is computed in the input's coordinates, so that it contains the component (vertex
       // order is canonical, so is the hull's triangulation). Volumes are measured on both brought to
       // the normalised frame: in the input's coordinates a model far from the origin loses digits.
-      c.mesh = o.invariant ? toInput(finals[i], inverse) : inverse(finals[i].mesh);
+      c.mesh = inverse(finals[i].mesh);
       c.hull = convexHull(c.mesh.vertices).mesh;
       c.volume = signedVolume(applyNormalization(c.mesh, result.normalization));
       c.hullVolume = signedVolume(applyNormalization(c.hull, result.normalization));

@@ -1,6 +1,8 @@
 // Distances from hull points to the mesh's surface with CGAL's AABB tree (double arithmetic: a
 // distance, not a predicate).
 #include <acd/algo/hull_excess.hpp>
+#include <acd/inside.hpp>
+#include <acd/random.hpp>
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -10,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 namespace acd {
@@ -47,20 +50,12 @@ bool insideFace(const Triangle& t, const Patch& p) {
   return true;
 }
 
-}  // namespace
-
-HullExcess measureHullExcess(const TriMesh& mesh, const TriMesh& hull, double limit, double resolution) {
+/// The branch and bound shared by both measures. `probe(q, patch)` returns the distance at q and
+/// how far every point of the patch may be from q before the bound matters (the patch's radius,
+/// less q's depth inside the model), or a negative distance when the whole patch is known to be 0.
+template <class Probe>
+HullExcess branchAndBound(const TriMesh& hull, double limit, double resolution, Probe probe) {
   HullExcess out;
-  std::vector<Triangle> triangles;
-  triangles.reserve(mesh.faces.size());
-  for (const Face& f : mesh.faces) {
-    const Triangle t(toPoint(mesh.vertices[f[0]]), toPoint(mesh.vertices[f[1]]), toPoint(mesh.vertices[f[2]]));
-    if (!t.is_degenerate()) triangles.push_back(t);
-  }
-  if (triangles.empty() || hull.faces.empty()) return out;
-  Tree tree(triangles.begin(), triangles.end());
-  tree.accelerate_distance_queries();
-
   std::vector<Patch> stack;
   for (std::size_t f = 0; f < hull.faces.size(); ++f)
     stack.push_back({{hull.vertices[hull.faces[f][0]], hull.vertices[hull.faces[f][1]], hull.vertices[hull.faces[f][2]]},
@@ -72,28 +67,23 @@ HullExcess measureHullExcess(const TriMesh& mesh, const TriMesh& hull, double li
     const Vec3 centroid = (p.corner[0] + p.corner[1] + p.corner[2]) / 3.0;
     double radius = 0.0;
     for (const Vec3& c : p.corner) radius = std::max(radius, (c - centroid).norm());
-    const auto [nearest, primitive] = tree.closest_point_and_primitive(toPoint(centroid));
-    const double d = (toVec(nearest) - centroid).norm();
-    // On the surface all over: a patch inside the face it lies on (a hull face over a flat cap, or
-    // over a face of a convex part). Without this, flat faces would be split down to the limit.
-    if (d == 0.0 && insideFace(*primitive, p)) continue;
+    Vec3 nearest;
+    double reach = radius;
+    const double d = probe(centroid, p, radius, nearest, reach);
+    if (d < 0) continue;  // zero all over
     if (d > out.distance) {
       out.distance = d;
       out.hullPoint = centroid;
-      out.surfacePoint = toVec(nearest);
+      out.surfacePoint = nearest;
       out.hullFace = p.face;
     }
     if (d > limit) {
       out.exceeds = true;
-      out.bound = std::max(out.bound, d + radius);
+      out.bound = std::max(out.bound, d + reach);
       return out;
     }
-    if (d + radius <= limit) {
-      out.bound = std::max(out.bound, d + radius);
-      continue;
-    }
-    if (radius <= resolution) {  // too small to split further: its bound stands
-      out.bound = std::max(out.bound, d + radius);
+    if (d + reach <= limit || radius <= resolution) {  // within the limit, or too small to split further
+      out.bound = std::max(out.bound, d + reach);
       continue;
     }
     const Vec3 m01 = 0.5 * (p.corner[0] + p.corner[1]), m12 = 0.5 * (p.corner[1] + p.corner[2]),
@@ -105,6 +95,140 @@ HullExcess measureHullExcess(const TriMesh& mesh, const TriMesh& hull, double li
   }
   out.bound = std::max(out.bound, out.distance);
   return out;
+}
+
+std::vector<Triangle> trianglesOf(const TriMesh& mesh) {
+  std::vector<Triangle> triangles;
+  triangles.reserve(mesh.faces.size());
+  for (const Face& f : mesh.faces) {
+    const Triangle t(toPoint(mesh.vertices[f[0]]), toPoint(mesh.vertices[f[1]]), toPoint(mesh.vertices[f[2]]));
+    if (!t.is_degenerate()) triangles.push_back(t);
+  }
+  return triangles;
+}
+
+}  // namespace
+
+HullExcess measureHullExcess(const TriMesh& mesh, const TriMesh& hull, double limit, double resolution) {
+  const std::vector<Triangle> triangles = trianglesOf(mesh);
+  if (triangles.empty() || hull.faces.empty()) return {};
+  Tree tree(triangles.begin(), triangles.end());
+  tree.accelerate_distance_queries();
+  return branchAndBound(hull, limit, resolution, [&](const Vec3& q, const Patch& p, double, Vec3& nearest, double&) {
+    const auto [point, primitive] = tree.closest_point_and_primitive(toPoint(q));
+    nearest = toVec(point);
+    const double d = (nearest - q).norm();
+    // On the surface all over: a patch inside the face it lies on (a hull face over a flat cap, or
+    // over a face of a convex part). Without this, flat faces would be split down to the limit.
+    if (d == 0.0 && insideFace(*primitive, p)) return -1.0;
+    return d;
+  });
+}
+
+struct ModelExcess::Impl {
+  explicit Impl(const TriMesh& model) : triangles(trianglesOf(model)), inside(model) {
+    tree.insert(triangles.begin(), triangles.end());
+    tree.build();
+    tree.accelerate_distance_queries();
+  }
+  std::vector<Triangle> triangles;
+  Tree tree;
+  InsideTest inside;
+};
+
+ModelExcess::ModelExcess(const TriMesh& model) : impl_(std::make_unique<Impl>(model)) {}
+ModelExcess::~ModelExcess() = default;
+
+HullExcess ModelExcess::measure(const TriMesh& hull, double limit, double resolution) const {
+  if (impl_->triangles.empty() || hull.faces.empty()) return {};
+  return branchAndBound(hull, limit, resolution,
+                        [&](const Vec3& q, const Patch&, double radius, Vec3& nearest, double& reach) {
+                          const bool inside = impl_->inside.inside(q);
+                          // Inside, the patch is within its radius of the model: no distance needed.
+                          if (inside && radius <= limit) return -1.0;
+                          nearest = toVec(impl_->tree.closest_point(toPoint(q)));
+                          const double d = (nearest - q).norm();
+                          if (!inside) return d;
+                          // Inside at depth d: the ball of radius d around q is in the model, so
+                          // no point of the patch is farther out than radius - d.
+                          if (radius <= d) return -1.0;
+                          nearest = q;
+                          reach = radius - d;
+                          return 0.0;
+                        });
+}
+
+namespace {
+
+/// A closed convex mesh's faces as half-spaces n.x <= d.
+struct HalfSpaces {
+  explicit HalfSpaces(const TriMesh& hull) {
+    for (const Face& f : hull.faces) {
+      const Vec3 &a = hull.vertices[f[0]], &b = hull.vertices[f[1]], &c = hull.vertices[f[2]];
+      const Vec3 n = (b - a).cross(c - a);
+      if (n.norm() == 0.0) continue;
+      normals.push_back(n.normalized());
+      offsets.push_back(normals.back().dot(a));
+    }
+  }
+  bool contains(const Vec3& q) const {
+    for (std::size_t i = 0; i < normals.size(); ++i)
+      if (normals[i].dot(q) > offsets[i] + 1e-12) return false;
+    return true;
+  }
+  std::vector<Vec3> normals;
+  std::vector<double> offsets;
+};
+
+}  // namespace
+
+double ModelExcess::addedVolume(const TriMesh& hull, const std::vector<const TriMesh*>& covered, int samples,
+                                std::uint64_t key) const {
+  if (hull.faces.empty() || samples <= 0) return 0.0;
+  // The hull as a fan of tetrahedra from its vertex centroid; a sample picks a tetrahedron by volume.
+  Vec3 apex = Vec3::Zero();
+  for (const Vec3& v : hull.vertices) apex += v;
+  apex /= static_cast<double>(hull.vertices.size());
+  std::vector<double> cumulative;
+  double total = 0.0;
+  for (const Face& f : hull.faces) {
+    const Vec3 &a = hull.vertices[f[0]], &b = hull.vertices[f[1]], &c = hull.vertices[f[2]];
+    total += std::abs((a - apex).dot((b - apex).cross(c - apex))) / 6.0;
+    cumulative.push_back(total);
+  }
+  if (total <= 0.0) return 0.0;
+  std::vector<HalfSpaces> others;
+  for (const TriMesh* h : covered) others.emplace_back(*h);
+  int outside = 0;
+  for (int i = 0; i < samples; ++i) {
+    const std::uint64_t base = mix64(key ^ mix64(static_cast<std::uint64_t>(i)));
+    const double pick = unitInterval(mix64(base + 1)) * total;
+    const std::size_t t = std::min<std::size_t>(std::upper_bound(cumulative.begin(), cumulative.end(), pick) -
+                                                    cumulative.begin(), cumulative.size() - 1);
+    // Uniform in a tetrahedron: three uniforms folded into the simplex s + t + u <= 1.
+    double s = unitInterval(mix64(base + 2)), r = unitInterval(mix64(base + 3)), u = unitInterval(mix64(base + 4));
+    if (s + r > 1.0) s = 1.0 - s, r = 1.0 - r;
+    if (r + u > 1.0) {
+      const double old = u;
+      u = 1.0 - s - r;
+      r = 1.0 - old;
+    } else if (s + r + u > 1.0) {
+      const double old = u;
+      u = s + r + u - 1.0;
+      s = 1.0 - r - old;
+    }
+    const Face& f = hull.faces[t];
+    const Vec3 q = apex + s * (hull.vertices[f[0]] - apex) + r * (hull.vertices[f[1]] - apex) +
+                   u * (hull.vertices[f[2]] - apex);
+    bool hidden = false;
+    for (const HalfSpaces& h : others)
+      if (h.contains(q)) {
+        hidden = true;
+        break;
+      }
+    if (!hidden && !impl_->inside.inside(q)) ++outside;
+  }
+  return total * outside / samples;
 }
 
 }  // namespace acd

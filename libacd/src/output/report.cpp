@@ -62,6 +62,7 @@ json solidReport(const ReportInput& in, const Decomposition& d) {
                      {"delta", d.options.delta},
                      {"feature_grouping", d.options.featureGrouping},
                      {"merge", d.options.merge},
+                     {"merge_scope", d.options.mergeScope == MergeScope::Model ? "model" : "component"},
                      {"invariant", d.options.invariant},
                      {"threads", d.options.threads},
                      {"units", kUnits}};
@@ -87,7 +88,7 @@ json solidReport(const ReportInput& in, const Decomposition& d) {
                           {"input_to_wrap", d.wrap.inputToWrap},
                           {"faces", d.wrap.faces}}}};
   json comps = json::array();
-  double volume = 0, hullVolume = 0, maxConcavity = 0;
+  double volume = 0, hullVolume = 0, maxConcavity = 0, maxExcess = 0;
   int unresolved = 0;
   for (std::size_t i = 0; i < d.components.size(); ++i) {
     const auto& c = d.components[i];
@@ -95,6 +96,7 @@ json solidReport(const ReportInput& in, const Decomposition& d) {
                      {"volume", c.volume},
                      {"hull_volume", c.hullVolume},
                      {"concavity", c.concavity},
+                     {"hull_excess", c.hullExcess},
                      {"vertices", c.mesh.vertices.size()},
                      {"faces", c.mesh.faces.size()},
                      {"hull_vertices", c.hull.vertices.size()},
@@ -107,6 +109,7 @@ json solidReport(const ReportInput& in, const Decomposition& d) {
     volume += c.volume;
     hullVolume += c.hullVolume;
     maxConcavity = std::max(maxConcavity, c.concavity);
+    maxExcess = std::max(maxExcess, c.hullExcess);
     unresolved += c.unresolved;
   }
   j["components"] = comps;
@@ -115,6 +118,7 @@ json solidReport(const ReportInput& in, const Decomposition& d) {
                  {"hull_volume", hullVolume},
                  {"volume_relative_error", d.stats.inputVolume > 0 ? std::abs(volume - d.stats.inputVolume) / d.stats.inputVolume : 0.0},
                  {"max_concavity", maxConcavity},
+                 {"max_hull_excess", maxExcess},
                  {"unresolved", unresolved},
                  {"cuts", d.stats.cuts},
                  {"fallback_cuts", d.stats.fallbackCuts},

@@ -5,6 +5,10 @@
 
 #include <acd/mesh.hpp>
 
+#include <cstdint>
+#include <memory>
+#include <vector>
+
 namespace acd {
 
 struct HullExcess {
@@ -20,5 +24,30 @@ struct HullExcess {
 /// centroid plus its radius (distance is 1-Lipschitz) could still exceed `limit` and the face is
 /// wider than `resolution`. Stops at the first point farther than `limit`.
 HullExcess measureHullExcess(const TriMesh& mesh, const TriMesh& hull, double limit, double resolution);
+
+/// How far a hull sticks out of a closed model (its solid, not its surface): hull points inside the
+/// model count zero, points outside their distance to the model's surface. Built once per model;
+/// `measure` is thread-safe. A merged component's hull may reach into its neighbours, which are
+/// model too: only what leaves the model is what users measure.
+class ModelExcess {
+ public:
+  explicit ModelExcess(const TriMesh& model);
+  ~ModelExcess();
+  ModelExcess(const ModelExcess&) = delete;
+  ModelExcess& operator=(const ModelExcess&) = delete;
+
+  /// The same branch and bound as measureHullExcess, with the distance to the solid.
+  HullExcess measure(const TriMesh& hull, double limit, double resolution) const;
+
+  /// The volume of `hull` outside the model and outside every hull in `covered` (what a merge
+  /// that replaces those hulls by `hull` adds to the union of hulls beyond the model), estimated
+  /// from `samples` points spread uniformly in `hull` by a counter-based stream keyed by `key`.
+  double addedVolume(const TriMesh& hull, const std::vector<const TriMesh*>& covered, int samples,
+                     std::uint64_t key) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace acd

@@ -1,0 +1,190 @@
+// The candidates at a notch and the choice among them. Candidates are cut and scored in parallel
+// into their own slots and the best is picked in candidate order, so the choice does not depend on
+// the thread count.
+#include <acd/algo/cut_choice.hpp>
+
+#include <acd/algo/cut_plane.hpp>
+#include <acd/algo/features.hpp>
+#include <acd/algo/hull_excess.hpp>
+#include <acd/algo/knot_graph.hpp>
+#include <acd/hull.hpp>
+
+#include <Eigen/Eigenvalues>
+#include <tbb/parallel_for.h>
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+namespace acd {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+}  // namespace
+
+bool cutCleanly(const TriMesh& mesh, const Plane& plane, std::vector<TriMesh>& pieces, Plane& used) {
+  // Small shifts get past degenerate sections; the larger ones past local self-intersections of the
+  // input (whose sections have crossing loops), at the price of a cut slightly off the notch.
+  const double nudges[] = {0.0, 1e-7, -1e-7, 1e-5, -1e-5, 1e-3, -1e-3, 4e-3, -4e-3};
+  // A piece this much smaller than its parent is a sliver: the plane grazed a face and resolved nothing.
+  const double minVolume = 1e-7 * signedVolume(mesh);
+  for (double nudge : nudges) {
+    Plane p = plane;
+    p.offset += nudge * p.normal.norm();
+    CutResult cut = cutByPlane(mesh, p);
+    if (!cut.ok || cut.below.empty() || cut.above.empty()) continue;
+    std::vector<TriMesh> out;
+    bool valid = true;
+    for (auto* side : {&cut.below, &cut.above})
+      for (TriMesh& m : *side) {
+        if (signedVolume(m) <= minVolume) valid = false;
+        out.push_back(std::move(m));
+      }
+    if (!valid) continue;
+    pieces = std::move(out);
+    used = p;
+    return true;
+  }
+  return false;
+}
+
+Plane splitCupPlane(const TriMesh& mesh, const ConcavityMap& map, int notch) {
+  const int bridge = map.vertexBridge[notch];
+  const Vec3 n = map.bridges[bridge].normal;
+  std::vector<char> in(mesh.vertices.size(), 0);
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+    if (map.facePocket[f] == bridge)
+      for (int v : mesh.faces[f]) in[v] = 1;
+  Vec3 mean = Vec3::Zero();
+  int count = 0;
+  for (std::size_t v = 0; v < in.size(); ++v)
+    if (in[v]) mean += mesh.vertices[v], ++count;
+  const Vec3& x = mesh.vertices[notch];
+  if (count < 3) return Plane::through(x, n.unitOrthogonal());
+  mean /= count;
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (std::size_t v = 0; v < in.size(); ++v)
+    if (in[v]) {
+      Vec3 d = mesh.vertices[v] - mean;
+      d -= d.dot(n) * n;  // projected on the bridge plane
+      cov += d * d.transpose();
+    }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+  Vec3 axis = eig.eigenvectors().col(2);
+  axis -= axis.dot(n) * n;
+  if (axis.norm() < 1e-12) axis = n.unitOrthogonal();
+  return Plane::through(x, axis.normalized());
+}
+
+std::vector<Plane> candidatePlanes(const TriMesh& mesh, const SurfaceGraph& graph, const ConcavityMap& map,
+                                   const DecomposeOptions& o, const CutSite& site, double& groupingSeconds) {
+  const Vec3& notch = mesh.vertices[site.notch];
+  const Vec3& bridgeNormal = site.bridgeNormal;
+  const int stalls = site.stalls;
+  std::vector<Plane> candidates;
+  if (o.featureGrouping && stalls == 0 && !site.fromExcess) {
+    const auto t = Clock::now();
+    // The paper's global cut: the minimum-weight cycle of the knot graph G_K through the root
+    // pocket cut (Section 4.2.4). Four greedily grown cuts compete with it (they also reach
+    // pockets without knots, where G_K has no edges): legs restricted to matched knots or free
+    // to take the cheapest knot, with a notch on a boundary taken as an end of the root cut or
+    // not. The lookahead keeps whichever plane serves better.
+    {
+      const KnotGraph kg = buildKnotGraph(mesh, graph, map, o.delta);
+      const GlobalCut cycle = knotGraphCycle(mesh, map, kg);
+      if (cycle.vertices.size() >= 3)
+        candidates.push_back(Plane::through(notch, fitCutPlane(mesh, cycle, bridgeNormal, 0.5 * o.tau).normal));
+    }
+    for (int variant = 0; variant < 4; ++variant) {
+      FeatureOptions fo;
+      fo.delta = o.delta;
+      fo.matchKnots = variant < 2;
+      fo.notchAsEnd = variant % 2 == 0;
+      const GlobalCut cut = findGlobalCut(mesh, graph, map, fo);
+      if (cut.vertices.size() < 2) continue;
+      const Plane plane = fitCutPlane(mesh, cut, bridgeNormal, 0.5 * o.tau);
+      // A plane (nearly) parallel to the bridge only skims the pocket: the cup-shaped case of
+      // Figure 13. Split the cup through its deepest point instead, across its longest extent.
+      if (variant == 0 && (cut.cupShaped || std::abs(plane.normal.normalized().dot(bridgeNormal)) > 0.9))
+        candidates.push_back(splitCupPlane(mesh, map, map.notch));
+      // The plane must resolve the notch it was grown from: it passes through it. (A plane a hair
+      // away from the notch would only shave off a sliver and leave the notch as it was.)
+      candidates.push_back(Plane::through(notch, plane.normal));
+    }
+    groupingSeconds += secondsSince(t);
+  }
+  if (stalls <= 1) candidates.push_back(bisectorPlane(mesh, graph, site.notch, bridgeNormal));
+  // Planes through the notch that contain the bridge normal split the pocket between the bridge's
+  // ends (two orthogonal ones; a different pair after each stall).
+  // (unitOrthogonal follows the frame's axes: the canonical frame's, so the fan is the shape's.)
+  const Vec3 u = bridgeNormal.unitOrthogonal(), w = bridgeNormal.cross(u);
+  const double pi = std::acos(-1.0);
+  // After repeated stalls, a wider fan (and the plane parallel to the bridge) compete by lookahead.
+  const int fan = stalls >= 2 || site.fromExcess ? 8 : 2;
+  if (stalls >= 2) candidates.push_back(Plane::through(notch, bridgeNormal));
+  for (int k = 0; k < fan; ++k) {
+    const double angle = pi * k / fan + 0.25 * pi * (stalls % 2);  // a different set on each stall
+    candidates.push_back(Plane::through(notch, std::cos(angle) * u + std::sin(angle) * w));
+  }
+  return candidates;
+}
+
+CutChoice cutByFirstPlane(const TriMesh& mesh, const std::vector<Plane>& candidates) {
+  CutChoice choice;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (cutCleanly(mesh, candidates[i], choice.pieces, choice.plane)) {
+      choice.ok = true;
+      choice.index = i;
+      return choice;
+    }
+    ++choice.failed;
+  }
+  return choice;
+}
+
+CutChoice cutByLookahead(const TriMesh& mesh, const std::vector<Plane>& candidates, const CutSite& site,
+                         const ConcavityOptions& co, double tau) {
+  std::vector<std::vector<TriMesh>> children(candidates.size());
+  std::vector<Plane> used(candidates.size());
+  std::vector<char> cutOk(candidates.size(), 0);
+  std::vector<double> score(candidates.size(), 0.0);
+  std::vector<int> exceeding(candidates.size(), 0);
+  tbb::parallel_for(std::size_t(0), candidates.size(), [&](std::size_t i) {
+    cutOk[i] = cutCleanly(mesh, candidates[i], children[i], used[i]);
+    if (!cutOk[i]) return;
+    for (const TriMesh& child : children[i]) {
+      if (site.stalls > 0) {
+        SurfaceGraph childGraph(child);
+        score[i] = std::max(score[i], measureConcavity(child, childGraph, co).concavity);
+      } else {
+        const TriMesh hull = convexHull(child.vertices).mesh;
+        score[i] += signedVolume(hull) - signedVolume(child);
+        // A cut for a hull standing off its piece is judged first by how many children still do.
+        if (site.fromExcess)
+          exceeding[i] += measureHullExcess(child, hull, kExcessLimit * tau, kExcessResolution * tau).exceeds;
+      }
+    }
+  });
+  CutChoice choice;
+  double bestScore = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (!cutOk[i]) {
+      ++choice.failed;
+      continue;
+    }
+    if (!choice.ok || exceeding[i] < exceeding[choice.index] ||
+        (exceeding[i] == exceeding[choice.index] && score[i] < bestScore)) {
+      bestScore = score[i];
+      choice.index = i;
+      choice.ok = true;
+    }
+  }
+  if (choice.ok) {
+    choice.pieces = std::move(children[choice.index]);
+    choice.plane = used[choice.index];
+  }
+  return choice;
+}
+
+}  // namespace acd
