@@ -12,6 +12,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/convert_nef_polyhedron_to_polygon_mesh.h>
 
+#include <algorithm>
 #include <map>
 
 namespace planner {
@@ -32,21 +33,40 @@ Mesh toCgal(const acd::TriMesh& m) {
   return out;
 }
 
+/// The mesh in a form that depends on its exact geometry only, not on how CGAL got there.
+/// The corefinement's inner order follows memory addresses (its bounding boxes are told apart
+/// by address), so the same Boolean can list its vertices and faces in another order from one
+/// call to the next, and build its intersection points by other chains of lazy constructions,
+/// whose double approximations differ in the last bits. Hence: each coordinate is the exact
+/// value rounded, vertices are sorted by exact position (lexicographically), each face starts
+/// at its smallest vertex (orientation kept) and the faces are sorted.
 acd::TriMesh fromCgal(Mesh m) {
   PMP::triangulate_faces(m);
+  std::vector<Mesh::Vertex_index> order;
+  for (Mesh::Vertex_index v : m.vertices()) {
+    CGAL::exact(m.point(v));  // the approximation becomes the exact value's tight interval
+    order.push_back(v);
+  }
+  std::sort(order.begin(), order.end(), [&](Mesh::Vertex_index a, Mesh::Vertex_index b) {
+    return CGAL::compare_xyz(m.point(a), m.point(b)) == CGAL::SMALLER;
+  });
   acd::TriMesh out;
   std::map<Mesh::Vertex_index, int> index;
-  for (Mesh::Vertex_index v : m.vertices()) {
+  for (Mesh::Vertex_index v : order) {
     const Point& p = m.point(v);
     index[v] = static_cast<int>(out.vertices.size());
-    out.vertices.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    out.vertices.emplace_back(CGAL::to_double(CGAL::exact(p.x())), CGAL::to_double(CGAL::exact(p.y())),
+                              CGAL::to_double(CGAL::exact(p.z())));
   }
   for (Mesh::Face_index f : m.faces()) {
     acd::Face tri{};
     int k = 0;
     for (Mesh::Vertex_index v : CGAL::vertices_around_face(m.halfedge(f), m)) tri[k++] = index[v];
+    const int first = static_cast<int>(std::min_element(tri.begin(), tri.end()) - tri.begin());
+    std::rotate(tri.begin(), tri.begin() + first, tri.end());
     out.faces.push_back(tri);
   }
+  std::sort(out.faces.begin(), out.faces.end());
   return acd::compact(out);
 }
 
