@@ -11,7 +11,7 @@
 #   --models   default: the 10 closed corpus models     --taus     default: 0.05 0.1
 #   --threads  acd's --threads (default 2)               --jobs     runs at a time (default 1)
 #   --out      cache (default out/invariance): finished runs are reused unless --fresh
-#   --invariant  decompose with acd's --invariant (the shape's own frame); use another --out
+#   --invariant  pass acd's --invariant (the default of the acd command since 2026-11-25; for older builds)
 #
 # Prints a Markdown table model x tau: motions matching out of 10, the largest relative volume
 # difference between matched components, the part counts seen. Exits 1 when some model has
