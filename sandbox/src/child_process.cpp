@@ -1,6 +1,7 @@
 // Fork, caps and waiting for one child. The parent polls (the pipe when there is one, else a short
 // sleep) and reaps with wait4, which also gives the child's peak memory; at the wall-clock cap it
 // kills the child's whole process group, so helpers the child started die with it.
+#include <acd/algo/address_sanitizer.hpp>
 #include <sandbox/child_process.hpp>
 
 #include <fcntl.h>
@@ -26,20 +27,6 @@ namespace acdsandbox {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-// AddressSanitizer reserves terabytes of address space for its shadow memory, so under an
-// address-space cap the child could not allocate at all: sanitizer builds run without the cap.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kAddressSanitizer = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kAddressSanitizer = true;
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
 
 std::string number(double v) {
   char b[32];
@@ -107,7 +94,7 @@ ChildOutcome runInChild(const std::function<int(int pipeFd)>& body, const ChildO
     ::setpgid(0, 0);
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // never outlive the caller: an interrupted batch leaves nothing behind
     if (::getppid() != parent) ::_exit(127);
-    if (options.limits.memoryBytes > 0 && !kAddressSanitizer) {
+    if (options.limits.memoryBytes > 0 && !acd::kAddressSanitizer) {
       const rlimit cap{options.limits.memoryBytes, options.limits.memoryBytes};
       ::setrlimit(RLIMIT_AS, &cap);
     }

@@ -2,6 +2,7 @@
 // The CGAL call cannot be interrupted, so it runs in a forked worker that streams its progress
 // and the pieces' vertices through a pipe; the parent enforces the time cap by killing it.
 // This is the only translation unit that includes the Nef headers (they compile slowly).
+#include <acd/algo/address_sanitizer.hpp>
 #include <acd/algo/surface_mesh_copy.hpp>
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
@@ -103,7 +104,7 @@ Nef toNef(const TriMesh& mesh) {
 
 [[noreturn]] void runWorker(int fd, const std::vector<TriMesh>& solids, std::size_t maxPieces,
                             std::size_t memoryLimit) {
-  if (memoryLimit > 0) {
+  if (memoryLimit > 0 && !kAddressSanitizer) {  // (no cap under ASan: acd/algo/address_sanitizer.hpp)
     rlimit limit{memoryLimit, memoryLimit};
     ::setrlimit(RLIMIT_AS, &limit);
   }
