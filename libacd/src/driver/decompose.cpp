@@ -44,13 +44,7 @@ struct Piece {
   Vec3 parentNotch = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
   double parentConcavity = -1.0;
   int stalls = 0;
-  std::vector<Plane> cuts;  // every plane this piece's ancestors were cut by
 };
-
-std::vector<Plane> withCut(std::vector<Plane> cuts, const Plane& p) {
-  cuts.push_back(p);
-  return cuts;
-}
 
 struct Outcome {
   bool final = true;
@@ -79,7 +73,7 @@ constexpr double kMergeHullGrowth = 0.03;
 std::vector<Piece> childrenOf(const Piece& piece, CutChoice& choice, const Vec3& notch, double concavity, int stalls) {
   std::vector<Piece> children;
   for (TriMesh& m : choice.pieces)
-    children.push_back({std::move(m), piece.depth + 1, piece.source, notch, concavity, stalls, withCut(piece.cuts, choice.plane)});
+    children.push_back({std::move(m), piece.depth + 1, piece.source, notch, concavity, stalls});
   return children;
 }
 
@@ -198,18 +192,20 @@ constexpr int kModelMergeSamples = 4096;
 /// One candidate union of the merge pass, measured.
 struct MergeCandidate {
   TriMesh glued;
+  TriMesh hull;                // the union's hull (the glued piece's, if it is taken)
   bool ok = false;             // passes the merge test
   double cost = 0.0;           // the order in which passing unions are taken (lower first)
   double concavity = 0.0;      // MergeScope::Component: the union's measured concavity
   double hullExcess = 0.0;     // how far its hull stands off the union (Component) or the model (Model)
 };
 
-MergeCandidate measureUnion(const Piece& a, const Piece& b, std::uint64_t key, const ModelExcess* model,
-                            const DecomposeOptions& o, const ConcavityOptions& co) {
+MergeCandidate measureUnion(const Piece& a, const Piece& b, const TriMesh& hullA, const TriMesh& hullB,
+                            std::uint64_t key, const ModelExcess* model, const DecomposeOptions& o,
+                            const ConcavityOptions& co) {
   MergeCandidate m;
   if (!glueAlongSharedFaces(a.mesh, b.mesh, m.glued)) return m;
-  const TriMesh hull = convexHull(m.glued.vertices).mesh;
-  const TriMesh hullA = convexHull(a.mesh.vertices).mesh, hullB = convexHull(b.mesh.vertices).mesh;
+  m.hull = convexHull(m.glued.vertices).mesh;
+  const TriMesh& hull = m.hull;
   const double volume = signedVolume(m.glued);
   if (model) {
     // The union's hull only has to stay within tau of the model: where it reaches beyond the union,
@@ -252,6 +248,8 @@ void mergePieces(std::vector<Piece>& finals, std::vector<Component>& finalInfo, 
   if (o.mergeScope == MergeScope::Model) model = std::make_unique<ModelExcess>(input);
   std::vector<char> alive(finals.size(), 1), mergedInModel(finals.size(), 0);
   std::map<std::pair<int, int>, MergeCandidate> measured;  // by the pieces' indices
+  std::vector<TriMesh> hulls(finals.size());                 // each piece's hull, kept through merges
+  tbb::parallel_for(std::size_t(0), finals.size(), [&](std::size_t i) { hulls[i] = convexHull(finals[i].mesh.vertices).mesh; });
   for (bool merged = true; merged;) {
     merged = false;
     std::vector<TriMesh> meshes;
@@ -266,7 +264,7 @@ void mergePieces(std::vector<Piece>& finals, std::vector<Component>& finalInfo, 
     std::vector<MergeCandidate> measuredNow(fresh.size());
     tbb::parallel_for(std::size_t(0), fresh.size(), [&](std::size_t f) {
       const int i = id[pairs[fresh[f]].a], j = id[pairs[fresh[f]].b];
-      measuredNow[f] = measureUnion(finals[i], finals[j],
+      measuredNow[f] = measureUnion(finals[i], finals[j], hulls[i], hulls[j],
                                     mix64(static_cast<std::uint64_t>(i) << 32 | static_cast<std::uint32_t>(j)), model.get(), o, co);
     });
     for (std::size_t f = 0; f < fresh.size(); ++f)
@@ -282,7 +280,7 @@ void mergePieces(std::vector<Piece>& finals, std::vector<Component>& finalInfo, 
       const int i = id[pairs[k].a], j = id[pairs[k].b];
       if (!unions[k]->ok || changed[i] || changed[j]) continue;
       finals[i].mesh = std::move(unions[k]->glued);
-      finals[i].cuts.insert(finals[i].cuts.end(), finals[j].cuts.begin(), finals[j].cuts.end());
+      hulls[i] = std::move(unions[k]->hull);
       finalInfo[i].concavity = unions[k]->concavity;
       finalInfo[i].hullExcess = unions[k]->hullExcess;
       finalInfo[i].depth = std::min(finalInfo[i].depth, finalInfo[j].depth);
