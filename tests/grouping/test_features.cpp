@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include "helpers.hpp"
+
 #include <cmath>
 
 using namespace acd;
@@ -16,12 +18,9 @@ using namespace acd;
 namespace {
 
 TEST(FindGlobalCut, DumbbellCutsFromTheNotchRingTheBar) {
-  const TriMesh raw = shapes::dumbbell();
-  const TriMesh m = applyNormalization(raw, minimumSphereNormalization(raw));
-  SurfaceGraph graph(m);
-  ConcavityOptions co;
-  co.epsilon = 0.025;
-  const ConcavityMap map = measureConcavity(m, graph, co);
+  const TriMesh m = acdtest::normalised(shapes::dumbbell());
+  const SurfaceGraph graph(m);
+  const ConcavityMap map = acdtest::measure(m, 0.025);
   ASSERT_GT(map.concavity, 0.1);
   const double z = m.vertices[map.notch].z();
   // With the notch taken as an end of the root pocket cut (variants 0 and 2). The other two
