@@ -10,6 +10,7 @@
 #include <acd/io.hpp>
 #include <acd/report.hpp>
 #include <acd/surface_exact.hpp>
+#include <sandbox/exact_solid.hpp>
 
 #include <cstdio>
 #include <string>
@@ -42,8 +43,8 @@ std::string surfaceReport(const std::string& model, const acd::TriMesh& mesh, co
   return acd::reportJson(model, mesh, acd::diagnose(mesh), d, patches, settings.tolerance, bytes);
 }
 
-/// (pieces [(V, F)], report.json text), for settings that passed validate(). The library runs
-/// CGAL in a forked worker that only runs C++ (never Python), so forking from the interpreter is
+/// (pieces [(V, F)], report.json text), for settings that passed validate(). The sandbox runs
+/// CGAL in a forked child that only runs C++ (never Python), so forking from the interpreter is
 /// safe; the GIL is released meanwhile and `progress(stage, seconds)` is called about once a second.
 py::tuple decomposeExact(const Vertices& vertices, const Faces& faces, const ExactSettings& settings,
                          const std::string& model, py::object progress) {
@@ -58,7 +59,7 @@ py::tuple decomposeExact(const Vertices& vertices, const Faces& faces, const Exa
   std::string report;
   {
     py::gil_scoped_release free;
-    d = acd::exactSolidDecomposition(mesh, options);
+    d = acdsandbox::exactSolidDecomposition(mesh, options);
     if (d.status.ok()) report = solidReport(model, mesh, d, settings);
   }
   relay.raiseIfFailed();

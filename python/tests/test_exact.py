@@ -1,5 +1,5 @@
 """acd.decompose_exact and decompose(exact=True): the exact baselines of `acd decompose --exact`,
-run in a worker process the library forks from the interpreter."""
+run in a worker process forked from the interpreter (sandbox/exact_solid)."""
 import json
 import threading
 

@@ -1,6 +1,7 @@
 // Fork, caps and waiting for one child. The parent polls (the pipe when there is one, else a short
-// sleep) and reaps with wait4, which also gives the child's peak memory; at the wall-clock cap it
-// kills the child's whole process group, so helpers the child started die with it.
+// sleep), hands what arrives to the caller as it comes (onData) or keeps it, ticks (onTick), and
+// reaps with wait4, which also gives the child's peak memory; at the wall-clock cap, or when the
+// caller says stop, it kills the child's whole process group, so helpers the child started die with it.
 #include <acd/algo/address_sanitizer.hpp>
 #include <sandbox/child_process.hpp>
 
@@ -48,6 +49,103 @@ bool logSaysOutOfMemory(const std::string& path) {
   return false;
 }
 
+struct Reaped {
+  int status = 0;
+  rusage usage{};
+  bool timedOut = false;  // killed at the wall-clock cap
+  bool stopped = false;   // killed because onData said stop
+};
+
+/// Hands the child's bytes to onData, or keeps them in out.data; false: stop the child.
+bool deliver(const ChildOptions& options, const char* bytes, std::size_t n, ChildOutcome& out) {
+  if (!options.onData) {
+    out.data.append(bytes, n);
+    return true;
+  }
+  return options.onData(std::string_view(bytes, n));
+}
+
+void killGroup(pid_t pid) {
+  ::kill(-pid, SIGKILL);
+  ::kill(pid, SIGKILL);
+}
+
+/// The parent's side: reads the pipe (readFd, -1 without one), enforces the wall-clock cap,
+/// ticks, and reaps the child. False (with out.error) when waiting itself failed.
+template <class Elapsed>
+bool waitFor(pid_t pid, int readFd, const ChildOptions& options, const Elapsed& elapsed, ChildOutcome& out,
+             Reaped& reaped) {
+  // Readable when the child ends, so short jobs are reaped at once; without it (kernels before
+  // 5.3) the loop polls with a short, growing sleep.
+  const int pidFd = static_cast<int>(::syscall(SYS_pidfd_open, pid, 0));
+  bool done = false;
+  char chunk[1 << 16];
+  int sleepMs = 1;
+  double lastTick = 0;
+  auto killAndReap = [&] {
+    killGroup(pid);
+    while (::wait4(pid, &reaped.status, 0, &reaped.usage) < 0 && errno == EINTR) {
+    }
+    done = true;
+  };
+  while (!done) {
+    int waitMs = pidFd >= 0 ? -1 : sleepMs;
+    sleepMs = std::min(sleepMs * 2, 50);
+    if (options.limits.wallSeconds > 0) {
+      const double left = options.limits.wallSeconds - elapsed();
+      if (left <= 0) {
+        reaped.timedOut = true;
+        killAndReap();
+        break;
+      }
+      const int leftMs = static_cast<int>(left * 1000.0) + 1;
+      waitMs = waitMs < 0 ? leftMs : std::min(waitMs, leftMs);
+    }
+    if (options.onTick) {
+      const int tickMs = std::max(1, static_cast<int>(options.tickSeconds * 1000.0));
+      waitMs = waitMs < 0 ? tickMs : std::min(waitMs, tickMs);
+    }
+    pollfd watched[2];
+    nfds_t count = 0;
+    if (pidFd >= 0) watched[count++] = {pidFd, POLLIN, 0};
+    if (readFd >= 0) watched[count++] = {readFd, POLLIN, 0};
+    if (count > 0) {
+      if (::poll(watched, count, waitMs) > 0 && readFd >= 0 && (watched[count - 1].revents & (POLLIN | POLLHUP))) {
+        const ssize_t n = ::read(readFd, chunk, sizeof chunk);
+        if (n > 0 && !deliver(options, chunk, static_cast<std::size_t>(n), out)) {
+          reaped.stopped = true;
+          killAndReap();
+          break;
+        }
+        if (n == 0) ::close(readFd), readFd = -1;  // the child closed it (or ended)
+      }
+    } else {
+      ::usleep(static_cast<useconds_t>(waitMs) * 1000);
+    }
+    if (options.onTick && elapsed() - lastTick >= options.tickSeconds) {
+      lastTick = elapsed();
+      options.onTick();
+    }
+    const pid_t r = ::wait4(pid, &reaped.status, WNOHANG, &reaped.usage);
+    if (r == pid) done = true;
+    if (r < 0 && errno != EINTR) {
+      out.error = std::string("wait: ") + std::strerror(errno);
+      if (pidFd >= 0) ::close(pidFd);
+      if (readFd >= 0) ::close(readFd);
+      return false;
+    }
+  }
+  if (pidFd >= 0) ::close(pidFd);
+  if (readFd >= 0) {  // what the child wrote just before it ended
+    ::fcntl(readFd, F_SETFL, O_NONBLOCK);
+    bool more = !reaped.stopped;
+    for (ssize_t n; more && (n = ::read(readFd, chunk, sizeof chunk)) > 0;)
+      more = deliver(options, chunk, static_cast<std::size_t>(n), out);
+    ::close(readFd);
+  }
+  return true;
+}
+
 }  // namespace
 
 std::string ChildOutcome::describe(const ChildLimits& limits) const {
@@ -58,6 +156,7 @@ std::string ChildOutcome::describe(const ChildLimits& limits) const {
     case ChildEnd::MemoryCap:
       return "memory cap of " + std::to_string(limits.memoryBytes >> 20) + " MiB reached (" +
              (signal != 0 ? "killed by signal " + std::to_string(signal) : "exit code " + std::to_string(exitCode)) + ")";
+    case ChildEnd::Stopped: return "stopped by the caller";
     case ChildEnd::StartFailed: return "could not start: " + error;
   }
   return "unknown";
@@ -112,62 +211,13 @@ ChildOutcome runInChild(const std::function<int(int pipeFd)>& body, const ChildO
   if (fds[1] >= 0) ::close(fds[1]);
 
   auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
-  // Readable when the child ends, so short jobs are reaped at once; without it (kernels before
-  // 5.3) the loop polls with a short, growing sleep.
-  const int pidFd = static_cast<int>(::syscall(SYS_pidfd_open, pid, 0));
-  int status = 0;
-  rusage usage{};
-  bool reaped = false, timedOut = false;
-  char chunk[1 << 16];
-  int sleepMs = 1;
-  while (!reaped) {
-    int waitMs = pidFd >= 0 ? -1 : sleepMs;
-    sleepMs = std::min(sleepMs * 2, 50);
-    if (options.limits.wallSeconds > 0) {
-      const double left = options.limits.wallSeconds - elapsed();
-      if (left <= 0) {
-        ::kill(-pid, SIGKILL);
-        ::kill(pid, SIGKILL);
-        timedOut = true;
-        while (::wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
-        }
-        reaped = true;
-        break;
-      }
-      const int leftMs = static_cast<int>(left * 1000.0) + 1;
-      waitMs = waitMs < 0 ? leftMs : std::min(waitMs, leftMs);
-    }
-    pollfd watched[2];
-    nfds_t count = 0;
-    if (pidFd >= 0) watched[count++] = {pidFd, POLLIN, 0};
-    if (fds[0] >= 0) watched[count++] = {fds[0], POLLIN, 0};
-    if (count > 0) {
-      if (::poll(watched, count, waitMs) > 0 && fds[0] >= 0 && (watched[count - 1].revents & (POLLIN | POLLHUP))) {
-        const ssize_t n = ::read(fds[0], chunk, sizeof chunk);
-        if (n > 0) out.data.append(chunk, static_cast<std::size_t>(n));
-        if (n == 0) ::close(fds[0]), fds[0] = -1;  // the child closed it (or ended)
-      }
-    } else {
-      ::usleep(static_cast<useconds_t>(waitMs) * 1000);
-    }
-    const pid_t r = ::wait4(pid, &status, WNOHANG, &usage);
-    if (r == pid) reaped = true;
-    if (r < 0 && errno != EINTR) {
-      out.error = std::string("wait: ") + std::strerror(errno);
-      if (pidFd >= 0) ::close(pidFd);
-      return out;
-    }
-  }
-  if (pidFd >= 0) ::close(pidFd);
-  if (fds[0] >= 0) {  // what the child wrote just before it ended
-    ::fcntl(fds[0], F_SETFL, O_NONBLOCK);
-    for (ssize_t n; (n = ::read(fds[0], chunk, sizeof chunk)) > 0;) out.data.append(chunk, static_cast<std::size_t>(n));
-    ::close(fds[0]);
-  }
+  Reaped reaped;
+  if (!waitFor(pid, fds[0], options, elapsed, out, reaped)) return out;
   out.seconds = elapsed();
-  out.peakMemoryBytes = static_cast<std::uint64_t>(usage.ru_maxrss) * 1024;
-  if (timedOut) {
-    out.end = ChildEnd::TimedOut;
+  out.peakMemoryBytes = static_cast<std::uint64_t>(reaped.usage.ru_maxrss) * 1024;
+  const int status = reaped.status;
+  if (reaped.timedOut || reaped.stopped) {
+    out.end = reaped.timedOut ? ChildEnd::TimedOut : ChildEnd::Stopped;
     out.signal = SIGKILL;
     return out;
   }

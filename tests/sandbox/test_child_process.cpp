@@ -144,3 +144,53 @@ TEST(ChildProcess, PipeCarriesTheChildsData) {
   EXPECT_TRUE(r.ok()) << r.describe(o.limits);
   EXPECT_EQ(r.data, big);
 }
+
+// onData gets the bytes as they come, in order, while the child still runs (the child waits for
+// nothing, yet its first message arrives before it ends); onTick ticks while the child sleeps;
+// returning false from onData stops the child at once.
+TEST(ChildProcess, StreamedDataTicksAndStop) {
+  ChildOptions o;
+  o.pipe = true;
+  std::string got;
+  int chunksBeforeEnd = 0;
+  int ticks = 0;
+  o.onData = [&](std::string_view bytes) {
+    got.append(bytes);
+    return true;
+  };
+  o.onTick = [&] { ++ticks; };
+  o.tickSeconds = 0.05;
+  auto r = runInChild(
+      [](int fd) {
+        ::write(fd, "first;", 6);
+        ::usleep(400000);
+        ::write(fd, "second", 6);
+        return 0;
+      },
+      o);
+  EXPECT_TRUE(r.ok()) << r.describe(o.limits);
+  EXPECT_EQ(got, "first;second");
+  EXPECT_TRUE(r.data.empty());
+  EXPECT_GE(ticks, 3);
+
+  o.onTick = nullptr;
+  got.clear();
+  o.onData = [&](std::string_view bytes) {
+    got.append(bytes);
+    ++chunksBeforeEnd;
+    return false;  // stop: the child would sleep for a minute
+  };
+  const auto start = std::chrono::steady_clock::now();
+  r = runInChild(
+      [](int fd) {
+        ::write(fd, "stop me", 7);
+        ::sleep(60);
+        return 0;
+      },
+      o);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(r.end, ChildEnd::Stopped) << r.describe(o.limits);
+  EXPECT_EQ(got, "stop me");
+  EXPECT_EQ(chunksBeforeEnd, 1);
+  EXPECT_LT(wall, 10.0);
+}

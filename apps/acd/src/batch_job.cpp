@@ -81,7 +81,8 @@ std::string statusOf(const acdsandbox::ChildOutcome& o) {
     case acdsandbox::ChildEnd::TimedOut: return "time_cap";
     case acdsandbox::ChildEnd::MemoryCap: return "memory_cap";
     case acdsandbox::ChildEnd::Signaled: return "crashed";
-    case acdsandbox::ChildEnd::StartFailed: return "failed";
+    case acdsandbox::ChildEnd::StartFailed:
+    case acdsandbox::ChildEnd::Stopped: return "failed";
     case acdsandbox::ChildEnd::Exited: break;
   }
   switch (o.exitCode) {

@@ -7,11 +7,11 @@
 
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
-#include <acd/exact_decomposition.hpp>
 #include <acd/io.hpp>
 #include <acd/normalize.hpp>
 #include <acd/report.hpp>
 #include <acd/surface_exact.hpp>
+#include <sandbox/exact_solid.hpp>
 
 #include <unistd.h>
 
@@ -64,7 +64,7 @@ int runSolid(const std::string& model, const std::string& out, bool quiet) {
       std::fprintf(stderr, "\r  exact decomposition: %s, %.0f s   ", stage.c_str(), seconds);
       std::fflush(stderr);
     };
-  const acd::ExactDecomposition d = acd::exactSolidDecomposition(r.mesh, options);
+  const acd::ExactDecomposition d = acdsandbox::exactSolidDecomposition(r.mesh, options);
   if (showProgress) std::fprintf(stderr, "\r%78s\r", "");
   if (!d.status.ok()) return fail(model, d.status);
 

@@ -1,7 +1,7 @@
 #include "exact_pieces.hpp"
 
-#if __has_include(<acd/exact_decomposition.hpp>)
-#include <acd/exact_decomposition.hpp>
+#if __has_include(<sandbox/exact_solid.hpp>)
+#include <sandbox/exact_solid.hpp>
 #define POINTLOC_HAVE_ECD 1
 #endif
 
@@ -17,7 +17,7 @@ ExactPieces exactPieces(const acd::TriMesh& model, double timeLimitSeconds) {
   // No cap on the count: a partial set of pieces would leave holes in the union (the time
   // and memory caps still stop a decomposition that grows too large).
   options.maxPieces = static_cast<std::size_t>(-1);
-  acd::ExactDecomposition ecd = acd::exactSolidDecomposition(model, options);
+  acd::ExactDecomposition ecd = acdsandbox::exactSolidDecomposition(model, options);
   out.seconds = ecd.seconds;
   out.pieceCount = ecd.pieceCount;
   out.refused = !ecd.status.ok();

@@ -1,18 +1,27 @@
 // Exact convex decomposition (ECD) of a closed solid: the baseline the paper compares ACD with
-// (Section 6, Table 1). CGAL's convex_decomposition_3 on an exact Nef polyhedron, run in a
-// separate process so that a time or memory cap can stop it.
+// (Section 6, Table 1). CGAL's convex_decomposition_3 on an exact Nef polyhedron.
+//
+// The library computes in the calling process, in three steps: prepareExactSolids (refuse or
+// repair the input), decomposeExactSolids (CGAL's call: it cannot be interrupted and may need
+// hours and gigabytes) and addExactPieces (the pieces' hulls). The whole run under a time and a
+// memory cap, with progress and the report of where a capped run stopped, is the sandbox's
+// acdsandbox::exactSolidDecomposition (<sandbox/exact_solid.hpp>), which runs the second step in
+// a capped child process: what the programs and the Python module call.
 #pragma once
 
 #include <acd/mesh.hpp>
 #include <acd/status.hpp>
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
 
 namespace acd {
 
+/// The options of the whole run. The caps and `progress` are honoured by the capped run
+/// (acdsandbox::exactSolidDecomposition); the steps below use fillHoles and maxPieces.
 struct ExactOptions {
   double timeLimitSeconds = 60.0;                     // wall clock for the whole run; <= 0: no limit
   std::size_t maxPieces = 1000000;                    // pieces beyond this are counted, not returned
@@ -37,9 +46,42 @@ struct ExactDecomposition {
   std::string note;                // one line: why it did not finish, or what was capped
 };
 
-/// Decomposes a closed (or, with fillHoles, hole-filled), non-self-intersecting mesh into interior-disjoint convex pieces whose
-/// union is the input. Input problems come back in `status`; hitting a cap is not an error
-/// (`finished` is false and `note` says which cap and where it stopped). Nothing throws.
-ExactDecomposition exactSolidDecomposition(const TriMesh& closedMesh, const ExactOptions& options = {});
+/// Step 1: the input as closed solids, decomposed one by one. Repairs the mesh (and, with
+/// options.fillHoles, fills its holes) as solid ACD does and refuses what bounds no solid
+/// (open, non-manifold, self-intersecting). Fills status, solids, reflexEdges, holesFilled and
+/// repairs of the result, and `solids` with the closed solids when status is ok.
+ExactDecomposition prepareExactSolids(const TriMesh& mesh, const ExactOptions& options, std::vector<TriMesh>& solids);
+
+/// Where decomposeExactSolids is, for progress and for the report of a run stopped half-way.
+enum class ExactStage : char {
+  Starting = 0,
+  Building = 'B',     // converting a solid to a Nef polyhedron
+  Decomposing = 'C',  // convex_decomposition_3 running
+  Extracting = 'X',   // reading the pieces out
+};
+
+/// "decomposing solid 2 of 3" (`solid` counts from 0).
+std::string exactStageText(ExactStage stage, std::size_t solid, std::size_t solids);
+
+/// What decomposeExactSolids tells while it runs, in order.
+class ExactListener {
+ public:
+  virtual ~ExactListener() = default;
+  virtual void stage(ExactStage stage, std::size_t solid) = 0;
+  /// The vertices of one convex piece (at most maxPieces pieces are sent in all).
+  virtual void piece(const std::vector<Vec3>& vertices) = 0;
+  /// Solid `solid` is done: it has `pieces` pieces (counted even beyond maxPieces).
+  virtual void solidDone(std::size_t solid, std::uint64_t pieces) = 0;
+};
+
+/// Step 2: CGAL's convex_decomposition_3 of each solid, in the calling process (it cannot be
+/// interrupted). Throws std::runtime_error for a solid that is not a 2-manifold Nef polyhedron,
+/// std::bad_alloc when memory runs out.
+void decomposeExactSolids(const std::vector<TriMesh>& solids, std::size_t maxPieces, ExactListener& listener);
+
+/// Step 3: the pieces' vertex sets (from step 2) as hulls into out.pieces. Pieces are convex,
+/// so each is the hull of its vertices; a sliver flattened to no volume by rounding to doubles
+/// is left out and counted in out.note. Returns how many were left out.
+std::size_t addExactPieces(const std::vector<std::vector<Vec3>>& vertexSets, ExactDecomposition& out);
 
 }  // namespace acd

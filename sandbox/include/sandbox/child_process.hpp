@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace acdsandbox {
@@ -20,6 +21,12 @@ struct ChildOptions {
   std::string logPath;  // non-empty: the child's stdout and stderr go to this file (truncated)
   bool pipe = false;    // give the child a pipe: its write end is the body's argument, the bytes
                         // come back in ChildOutcome::data
+  /// With `pipe`: the bytes as they arrive, in order, instead of in ChildOutcome::data (for a
+  /// child that reports while it runs). Returning false stops the child (ChildEnd::Stopped).
+  std::function<bool(std::string_view bytes)> onData;
+  /// Called in the parent about every `tickSeconds` while the child runs (progress reports).
+  std::function<void()> onTick;
+  double tickSeconds = 1.0;
 };
 
 enum class ChildEnd {
@@ -27,6 +34,7 @@ enum class ChildEnd {
   Signaled,     // killed by `signal` (a crash: abort, segmentation fault, ...)
   TimedOut,     // killed by us at the wall-clock cap
   MemoryCap,    // failed (any way) after running into the memory cap
+  Stopped,      // killed by us because ChildOptions::onData said stop
   StartFailed,  // no child: fork, pipe or exec failed (see error)
 };
 
@@ -36,7 +44,7 @@ struct ChildOutcome {
   int signal = 0;     // Signaled and MemoryCap (when killed)
   double seconds = 0;
   std::uint64_t peakMemoryBytes = 0;  // the child's peak resident set size
-  std::string data;                   // what the child wrote into the pipe (ChildOptions::pipe)
+  std::string data;                   // what the child wrote into the pipe (ChildOptions::pipe, no onData)
   std::string error;                  // StartFailed: why
 
   bool ok() const { return end == ChildEnd::Exited && exitCode == 0; }
