@@ -1,6 +1,7 @@
 // CGAL-heavy code (exact kernel, corefinement, Nef polyhedra) kept in this one translation unit.
 #include "free_space.hpp"
 
+#include <acd/algo/surface_mesh_copy.hpp>
 #include <acd/shapes.hpp>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -24,12 +25,11 @@ using Mesh = CGAL::Surface_mesh<Point>;
 using Nef = CGAL::Nef_polyhedron_3<Kernel>;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
+/// The library's one TriMesh -> Surface_mesh copy; a face CGAL refuses is left out (the
+/// obstacles and boxes here are closed, oriented solids, so none is).
 Mesh toCgal(const acd::TriMesh& m) {
   Mesh out;
-  std::vector<Mesh::Vertex_index> v;
-  v.reserve(m.vertices.size());
-  for (const acd::Vec3& p : m.vertices) v.push_back(out.add_vertex(Point(p.x(), p.y(), p.z())));
-  for (const acd::Face& f : m.faces) out.add_face(v[f[0]], v[f[1]], v[f[2]]);
+  acd::copyToSurfaceMesh(m, out, acd::RefusedFace::Skip);
   return out;
 }
 
