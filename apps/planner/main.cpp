@@ -8,6 +8,8 @@
 #include "scenario.hpp"
 
 #include <acd/io.hpp>
+#include <appcli/console.hpp>
+#include <appcli/exit_codes.hpp>
 
 #include <CLI/CLI.hpp>
 #include <ompl/util/Console.h>
@@ -22,6 +24,13 @@
 #include <unistd.h>
 
 namespace {
+
+// The programs' shared exit codes (apps/cli, docs/ERRORS.md) and "planner: ..." messages.
+using appcli::kBadInput;
+using appcli::kInternal;
+using appcli::kOk;
+using appcli::kOutputFailed;
+const appcli::Console kConsole("planner");
 
 std::vector<std::string> splitList(const std::string& s) {
   std::vector<std::string> out;
@@ -62,7 +71,7 @@ int run(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 1;  // --help is not an error
+    return appcli::usageExit(app.exit(e));  // --help is not an error
   }
 
   ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
@@ -100,16 +109,14 @@ int run(int argc, char** argv) {
     pre = planner::preprocess(scenario);
     problem = std::make_unique<planner::PlanningProblem>(scenario, pre.freeSpace, pre.openings);
   } catch (const planner::ScenarioError& e) {
-    std::cerr << "planner: " << e.what() << "\n";
-    return 2;
+    return kConsole.fail(kBadInput, e.what());
   }
   // Before the long part: a run whose results cannot be written is not started.
   std::error_code ec;
   std::filesystem::create_directories(scenario.outputDir, ec);
-  if (ec || !std::filesystem::is_directory(scenario.outputDir)) {
-    std::cerr << "planner: cannot create the output folder " << scenario.outputDir << (ec ? ": " + ec.message() : "") << "\n";
-    return 3;
-  }
+  if (ec || !std::filesystem::is_directory(scenario.outputDir))
+    return kConsole.fail(kOutputFailed,
+                         "cannot create the output folder " + scenario.outputDir + (ec ? ": " + ec.message() : ""));
   if (pre.openings.empty() && std::find(scenario.samplers.begin(), scenario.samplers.end(), "acd") != scenario.samplers.end())
     std::cerr << "planner: warning: the ACD of the free space has no openings (one component at tau " << scenario.acd.tau
               << "); the acd sampler falls back to uniform samples\n";
@@ -176,18 +183,16 @@ int run(int argc, char** argv) {
             << (sweepResults.empty() ? "" : ", " + (dir / "sweep.csv").string())
             << (n90 ? ", " + (dir / "n90.csv").string() + ", " + (dir / "n90_points.csv").string() : "")
             << (race ? ", " + (dir / "race.csv").string() + ", " + (dir / "ompl_benchmark.log").string() : "") << "\n";
-  return 0;
+  return kOk;
 }
 
 int main(int argc, char** argv) {
   try {
     return run(argc, argv);
   } catch (const planner::ScenarioError& e) {
-    std::cerr << "planner: " << e.what() << "\n";
-    return 2;
+    return kConsole.fail(kBadInput, e.what());
   } catch (const std::exception& e) {
     // OMPL, FCL or the standard library refusing something we did not foresee: a bug to report.
-    std::cerr << "planner: internal error: " << e.what() << "\n";
-    return 4;
+    return kConsole.fail(kInternal, std::string("internal error: ") + e.what());
   }
 }

@@ -1,4 +1,4 @@
-// Exit codes shared by the programs (acd, tetmesh, pointloc, skeleton; docs/ERRORS.md): each uses
+// Exit codes shared by the programs (acd, tetmesh, pointloc, skeleton, planner; docs/ERRORS.md): each uses
 // the ones that apply to it, so the same failure ends with the same code whichever program met it.
 #pragma once
 

@@ -125,7 +125,7 @@ TEST(PlannerCli, BadScenariosExitTwoNamingTheProblem) {
   // The output folder cannot be a file: refused before any trial runs.
   write(dir / "afile", "x");
   const auto badOut = acdtest::runTool(PLANNER_BIN, acdtest::quote(dir / "good.yaml") + " -o " + acdtest::quote(dir / "afile"), dir);
-  EXPECT_EQ(badOut.code, 3);
+  EXPECT_EQ(badOut.code, 5);  // the programs' shared code for "cannot write output" (apps/cli)
   EXPECT_NE(badOut.err.find("output folder"), std::string::npos) << badOut.err;
 }
 
