@@ -19,9 +19,11 @@ namespace acd {
 
 namespace {
 
-// Distances are taken from a corner of the face, not from the origin, so that a model far from
-// the origin loses no precision.
-struct Plane {
+// A face's plane as a unit normal and a point on it (a corner of the face): distances are taken
+// from that corner, not from the origin, so that a model far from the origin loses no precision.
+// Not acd::Plane or acd::HalfSpace (normal . x = offset): their offset form measures from the
+// origin, and would move the tolerance tests that decide the patches in the last bits.
+struct AnchoredPlane {
   Vec3 normal = Vec3::Zero();  // unit; zero for a degenerate face
   Vec3 anchor = Vec3::Zero();
   double distance(const Vec3& v) const { return normal.dot(v - anchor); }
@@ -33,16 +35,16 @@ double degenerateArea2(const TriMesh& mesh) {
   return 1e-28 * diag * diag * diag * diag;  // |cross|^2 below (1e-14 diag^2)^2
 }
 
-Plane facePlane(const TriMesh& mesh, int f, double degenerate2) {
+AnchoredPlane facePlane(const TriMesh& mesh, int f, double degenerate2) {
   const Vec3 n = faceNormal(mesh, f);
-  Plane p;
+  AnchoredPlane p;
   if (n.squaredNorm() <= degenerate2) return p;
   p.normal = n.normalized();
   p.anchor = mesh.vertices[mesh.faces[f][0]];
   return p;
 }
 
-bool degenerate(const Plane& p) { return p.normal.isZero(); }
+bool degenerate(const AnchoredPlane& p) { return p.normal.isZero(); }
 
 // Which side of a plane the patch lies on: -1 behind, +1 in front, 0 not yet known (all on it).
 int sideOf(double distance, double tol) { return distance > tol ? 1 : (distance < -tol ? -1 : 0); }
@@ -103,7 +105,7 @@ class PatchGrower {
       for (int k = 0; k < 3; ++k) {
         for (int g : edgeFaces_[edgeKey(t[k], t[(k + 1) % 3])]) {
           if (g == c.face || owner[g] >= 0 || rejectStamp_[g] == patch) continue;
-          const Plane &a = planes_[c.face], &b = planes_[g];
+          const AnchoredPlane &a = planes_[c.face], &b = planes_[g];
           const double turn = degenerate(a) || degenerate(b) ? 1.0 : 1.0 - a.normal.dot(b.normal);
           front.push({turn, g, c.face});
         }
@@ -136,11 +138,11 @@ class PatchGrower {
 
     // The face's own plane against every vertex of the patch (unless it is the plane of the face
     // it was reached from, up to rounding: then the checks above already cover it).
-    const Plane& own = planes_[face];
+    const AnchoredPlane& own = planes_[face];
     bool newPlane = !degenerate(own);
     int ownSide = 0;
     if (newPlane && from >= 0) {
-      const Plane& prev = planes_[from];
+      const AnchoredPlane& prev = planes_[from];
       bool same = !degenerate(prev) && (own.normal - prev.normal).norm() < 1e-12;
       for (int k = 0; same && k < 3; ++k) same = std::abs(prev.distance(mesh_.vertices[t[k]])) < 1e-3 * tol_;
       newPlane = !same;
@@ -165,7 +167,7 @@ class PatchGrower {
 
   const TriMesh& mesh_;
   double tol_;
-  std::vector<Plane> planes_;                                  // per face
+  std::vector<AnchoredPlane> planes_;                                  // per face
   std::unordered_map<std::uint64_t, std::vector<int>> edgeFaces_;
   std::vector<int> vertexStamp_;  // vertex -> patch it was last added to
   std::vector<int> rejectStamp_;  // face -> patch that retracted it last
@@ -217,7 +219,7 @@ bool isConvexPatch(const TriMesh& mesh, const std::vector<int>& faces, double to
   vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
   const double d2 = degenerateArea2(mesh);
   for (int f : faces) {
-    const Plane p = facePlane(mesh, f, d2);
+    const AnchoredPlane p = facePlane(mesh, f, d2);
     if (degenerate(p)) continue;
     bool front = false, behind = false;
     for (int v : vertices) {
