@@ -67,79 +67,7 @@ struct Hull {
   std::vector<Vec3> normals;  // outward unit normals
   std::vector<double> offsets;
   std::vector<std::array<Vec3, 3>> triangles;  // boundary of the convex hull, in a canonical order
-  Vec3 lo, hi;
-
-  // Hulls with many facets get a cell grid over their box. A cell lists the planes that some
-  // corner of the cell violates; the others hold in the whole cell (it is convex), so only the
-  // listed ones are tested. Cells inside every plane or strictly outside one need no test.
-  enum : int { kInside = -1, kOutside = -2 };
-  int res = 0;  // 0: no grid
-  Vec3 cellScale = Vec3::Zero();
-  std::vector<int> cellStart;   // kInside / kOutside, or the start in cellPlanes
-  std::vector<int> cellPlanes;  // listed plane indices, cell after cell; cellStart has one more entry
-
-  bool contains(const Vec3& p) const {
-    if (res == 0) return satisfies(p, 0, static_cast<int>(normals.size()), nullptr);
-    if ((p.array() < lo.array() - kHullSlack).any() || (p.array() > hi.array() + kHullSlack).any()) return false;
-    int c[3];
-    for (int a = 0; a < 3; ++a) c[a] = std::clamp(static_cast<int>(std::floor((p[a] - lo[a]) * cellScale[a])), 0, res - 1);
-    const int cell = (c[2] * res + c[1]) * res + c[0];
-    const int first = cellStart[2 * cell], last = cellStart[2 * cell + 1];
-    if (first == kInside) return true;
-    if (first == kOutside) return false;
-    return satisfies(p, first, last, cellPlanes.data());
-  }
-
- private:
-  bool satisfies(const Vec3& p, int first, int last, const int* list) const {
-    for (int k = first; k < last; ++k) {
-      const int i = list ? list[k] : k;
-      if (normals[i].dot(p) > offsets[i] + kHullSlack) return false;
-    }
-    return true;
-  }
-
- public:
-  void buildGrid() {
-    const int planes = static_cast<int>(normals.size());
-    if (planes <= 24) return;
-    res = std::clamp(static_cast<int>(std::lround(2.0 * std::cbrt(static_cast<double>(planes)))), 4, 16);
-    const Vec3 size = hi - lo;
-    for (int a = 0; a < 3; ++a) cellScale[a] = size[a] > 0 ? res / size[a] : 0.0;
-    cellStart.assign(2 * static_cast<std::size_t>(res) * res * res, 0);
-    std::vector<Vec3> corner(8);
-    for (int z = 0; z < res; ++z)
-      for (int y = 0; y < res; ++y)
-        for (int x = 0; x < res; ++x) {
-          for (int k = 0; k < 8; ++k) {
-            const Vec3 t((x + (k & 1)) / static_cast<double>(res), (y + ((k >> 1) & 1)) / static_cast<double>(res),
-                         (z + ((k >> 2) & 1)) / static_cast<double>(res));
-            corner[k] = lo + size.cwiseProduct(t);
-          }
-          const int cell = (z * res + y) * res + x;
-          const int first = static_cast<int>(cellPlanes.size());
-          bool outside = false;
-          for (int i = 0; i < planes && !outside; ++i) {
-            int violated = 0, clear = 0;
-            for (const Vec3& q : corner) {
-              const double v = normals[i].dot(q) - offsets[i];
-              violated += v > 0.0;
-              clear += v > 2 * kHullSlack;
-            }
-            if (clear == 8) outside = true;
-            else if (violated > 0) cellPlanes.push_back(i);
-          }
-          if (outside) {
-            cellPlanes.resize(first);
-            cellStart[2 * cell] = kOutside;
-          } else if (static_cast<int>(cellPlanes.size()) == first) {
-            cellStart[2 * cell] = kInside;
-          } else {
-            cellStart[2 * cell] = first;
-            cellStart[2 * cell + 1] = static_cast<int>(cellPlanes.size());
-          }
-        }
-  }
+  Vec3 lo, hi;  // bounding box of the hull's vertices
 };
 
 /// Convex hull of the points as half-spaces and triangles; false for fewer than 4 non-coplanar points.
@@ -243,9 +171,7 @@ bool buildHull(const std::vector<Vec3>& points, Hull& hull) {
     hull.normals.push_back(n);
     hull.offsets.push_back(d);
   }
-  if (hull.normals.empty()) return false;
-  hull.buildGrid();
-  return true;
+  return !hull.normals.empty();
 }
 
 /// The hulls as one HullSet (acd/algo/hull_set.hpp) indexed over the sampling box: a point is in
@@ -262,9 +188,10 @@ HullSet hullUnion(const std::vector<Hull>& hulls, const Box3& box, tbb::task_are
   return set;
 }
 
-/// Distance from p to the solid convex hull (0 inside).
-double distanceToHull(const Hull& h, const Vec3& p) {
-  if (h.contains(p)) return 0.0;
+/// Distance from p to the hull's boundary: its distance to the solid hull for a point outside it.
+/// Asked only for points outside the union (HullSet says no hull holds them, box and facets), so
+/// whether a point is inside a hull is decided in one place, the HullSet.
+double distanceToHullBoundary(const Hull& h, const Vec3& p) {
   double best = std::numeric_limits<double>::infinity();
   for (const auto& t : h.triangles) best = std::min(best, (closestPointOnTriangle(p, t[0], t[1], t[2]) - p).squaredNorm());
   return std::sqrt(best);
@@ -554,7 +481,7 @@ void sampleSurfaceDistances(const TriMesh& m, const std::vector<Hull>& hs, const
         double best = std::numeric_limits<double>::infinity();
         for (const auto& [bound, h] : order) {
           if (bound >= best) break;
-          best = std::min(best, distanceToHull(hs[h], p));
+          best = std::min(best, distanceToHullBoundary(hs[h], p));
         }
         acc.sum += best;
         acc.max = std::max(acc.max, best);
