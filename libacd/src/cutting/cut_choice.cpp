@@ -21,6 +21,11 @@ namespace acd {
 namespace {
 using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+/// Vertices this close to a cut plane are on its cap (cut vertices lie on it up to rounding).
+constexpr double kCapThickness = 1e-9;
+/// Lookahead scores closer than this (times the piece's volume, or absolute for concavities) tie.
+constexpr double kScoreTie = 1e-9;
 }  // namespace
 
 bool cutCleanly(const TriMesh& mesh, const Plane& plane, std::vector<TriMesh>& pieces, Plane& used) {
@@ -90,8 +95,9 @@ std::vector<Plane> candidatePlanes(const TriMesh& mesh, const SurfaceGraph& grap
     // pockets without knots, where G_K has no edges): legs restricted to matched knots or free
     // to take the cheapest knot, with a notch on a boundary taken as an end of the root cut or
     // not. The lookahead keeps whichever plane serves better.
+    const std::vector<double> curvature = slotCurvatures(mesh, graph);  // shared by the five searches
     {
-      const KnotGraph kg = buildKnotGraph(mesh, graph, map, o.delta);
+      const KnotGraph kg = buildKnotGraph(mesh, graph, map, o.delta, &curvature);
       const GlobalCut cycle = knotGraphCycle(mesh, map, kg);
       if (cycle.vertices.size() >= 3)
         candidates.push_back(Plane::through(notch, fitCutPlane(mesh, cycle, bridgeNormal, 0.5 * o.tau).normal));
@@ -101,6 +107,7 @@ std::vector<Plane> candidatePlanes(const TriMesh& mesh, const SurfaceGraph& grap
       fo.delta = o.delta;
       fo.matchKnots = variant < 2;
       fo.notchAsEnd = variant % 2 == 0;
+      fo.slotCurvature = &curvature;
       const GlobalCut cut = findGlobalCut(mesh, graph, map, fo);
       if (cut.vertices.size() < 2) continue;
       const Plane plane = fitCutPlane(mesh, cut, bridgeNormal, 0.5 * o.tau);
@@ -143,6 +150,50 @@ CutChoice cutByFirstPlane(const TriMesh& mesh, const std::vector<Plane>& candida
   return choice;
 }
 
+/// The points whose hull is a child's hull: the vertices off the cut plane and, of those on it (the
+/// cap), only the corners of their convex outline. Cap points are coplanar only up to rounding, and
+/// every test of one against the cap's plane would fall through CGAL's filters to exact rational
+/// arithmetic; dropping the cap's interior changes the hull by rounding noise and costs nothing.
+std::vector<Vec3> lookaheadHullPoints(const TriMesh& child, const Plane& plane) {
+  const Vec3 n = plane.normal.normalized();
+  const double d = plane.offset / plane.normal.norm();
+  const Vec3 u = n.unitOrthogonal(), w = n.cross(u);
+  std::vector<Vec3> points;
+  std::vector<std::pair<Eigen::Vector2d, int>> cap;
+  for (int v = 0; v < static_cast<int>(child.vertices.size()); ++v) {
+    const Vec3& p = child.vertices[v];
+    if (std::abs(n.dot(p) - d) > kCapThickness)
+      points.push_back(p);
+    else
+      cap.push_back({Eigen::Vector2d(u.dot(p), w.dot(p)), v});
+  }
+  // Andrew's monotone chain, strict turns only; ties in position by vertex index.
+  std::sort(cap.begin(), cap.end(), [](const auto& a, const auto& b) {
+    if (a.first.x() != b.first.x()) return a.first.x() < b.first.x();
+    if (a.first.y() != b.first.y()) return a.first.y() < b.first.y();
+    return a.second < b.second;
+  });
+  if (cap.size() < 3) {
+    for (const auto& c : cap) points.push_back(child.vertices[c.second]);
+    return points;
+  }
+  auto cross = [](const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+  };
+  std::vector<int> outline(2 * cap.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < cap.size(); ++i) {  // lower chain
+    while (k >= 2 && cross(cap[outline[k - 2]].first, cap[outline[k - 1]].first, cap[i].first) <= 0) --k;
+    outline[k++] = static_cast<int>(i);
+  }
+  for (std::size_t i = cap.size() - 1, lower = k + 1; i-- > 0;) {  // upper chain
+    while (k >= lower && cross(cap[outline[k - 2]].first, cap[outline[k - 1]].first, cap[i].first) <= 0) --k;
+    outline[k++] = static_cast<int>(i);
+  }
+  for (std::size_t i = 0; i + 1 < k; ++i) points.push_back(child.vertices[cap[outline[i]].second]);
+  return points;
+}
+
 CutChoice cutByLookahead(const TriMesh& mesh, const std::vector<Plane>& candidates, const CutSite& site,
                          const ConcavityOptions& co, double tau) {
   std::vector<std::vector<TriMesh>> children(candidates.size());
@@ -150,7 +201,15 @@ CutChoice cutByLookahead(const TriMesh& mesh, const std::vector<Plane>& candidat
   std::vector<char> cutOk(candidates.size(), 0);
   std::vector<double> score(candidates.size(), 0.0);
   std::vector<int> exceeding(candidates.size(), 0);
+  // Different notches' cuts often fit the same plane: an exact repeat is scored once (it could
+  // not win anyway, the earlier candidate wins ties).
+  std::vector<int> repeatOf(candidates.size(), -1);
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    for (std::size_t j = 0; j < i && repeatOf[i] < 0; ++j)
+      if (candidates[i].normal == candidates[j].normal && candidates[i].offset == candidates[j].offset)
+        repeatOf[i] = static_cast<int>(j);
   tbb::parallel_for(std::size_t(0), candidates.size(), [&](std::size_t i) {
+    if (repeatOf[i] >= 0) return;
     cutOk[i] = cutCleanly(mesh, candidates[i], children[i], used[i]);
     if (!cutOk[i]) return;
     for (const TriMesh& child : children[i]) {
@@ -158,7 +217,7 @@ CutChoice cutByLookahead(const TriMesh& mesh, const std::vector<Plane>& candidat
         SurfaceGraph childGraph(child);
         score[i] = std::max(score[i], measureConcavity(child, childGraph, co).concavity);
       } else {
-        const TriMesh hull = convexHull(child.vertices).mesh;
+        const TriMesh hull = convexHull(lookaheadHullPoints(child, used[i])).mesh;
         score[i] += signedVolume(hull) - signedVolume(child);
         // A cut for a hull standing off its piece is judged first by how many children still do.
         if (site.fromExcess)
@@ -166,6 +225,10 @@ CutChoice cutByLookahead(const TriMesh& mesh, const std::vector<Plane>& candidat
       }
     }
   });
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    if (repeatOf[i] >= 0) cutOk[i] = cutOk[repeatOf[i]], score[i] = score[repeatOf[i]], exceeding[i] = exceeding[repeatOf[i]];
+  // Scores within rounding noise of the best are ties, and ties go to the earlier candidate.
+  const double tie = kScoreTie * (site.stalls > 0 ? 1.0 : std::abs(signedVolume(mesh)));
   CutChoice choice;
   double bestScore = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < candidates.size(); ++i) {
@@ -174,7 +237,7 @@ CutChoice cutByLookahead(const TriMesh& mesh, const std::vector<Plane>& candidat
       continue;
     }
     if (!choice.ok || exceeding[i] < exceeding[choice.index] ||
-        (exceeding[i] == exceeding[choice.index] && score[i] < bestScore)) {
+        (exceeding[i] == exceeding[choice.index] && score[i] < bestScore - tie)) {
       bestScore = score[i];
       choice.index = i;
       choice.ok = true;

@@ -31,11 +31,21 @@ int loopOrder(const ConcavityMap& map, const Knot& k, int pocket) {
   return pe.leftBridge == pocket ? k.along : static_cast<int>(pe.path.size()) - 1 - k.along;
 }
 
+/// Eq. 4's weight of the edge over `slot` in the pocket of `bridge`, the curvature looked up in
+/// slotCurvatures (same value as cutEdgeWeight's, computed once per piece, not once per relaxation).
+EdgeWeight pocketCutWeight(const TriMesh& mesh, const SurfaceGraph& graph, const Bridge& bridge,
+                           const std::vector<double>& curvature) {
+  return [&mesh, &graph, &bridge, &curvature](int a, int b, int slot) {
+    return cutEdgeWeight(bridge.concavityOf(mesh.vertices[a]), bridge.concavityOf(mesh.vertices[b]), curvature[slot],
+                         graph.length(slot));
+  };
+}
+
 /// Knots (indices into `knots`) matched to the entry knot nearest `start` on boundary `entry`,
 /// one per other boundary at most. Empty when the entry boundary has no knots of this pocket.
 std::vector<int> matchedPartners(const TriMesh& mesh, const SurfaceGraph& graph, const PathFinder& finder,
-                                 const ConcavityMap& map, const std::vector<Knot>& knots, int pocket, int start,
-                                 int entry) {
+                                 const ConcavityMap& map, const std::vector<double>& curvature,
+                                 const std::vector<Knot>& knots, int pocket, int start, int entry) {
   std::vector<int> result;
   if (entry < 0) return result;
   std::map<int, std::vector<int>> byBoundary;  // projection -> knots in loop order
@@ -59,9 +69,7 @@ std::vector<int> matchedPartners(const TriMesh& mesh, const SurfaceGraph& graph,
   for (std::size_t r = 0; r < rows.size(); ++r) {
     std::vector<char> mask = allowed;
     mask[knots[rows[r]].vertex] = 1;
-    finder.flood({knots[rows[r]].vertex},
-                 [&](int a, int b, int slot) { return cutEdgeWeight(mesh, graph, bridge, a, b, graph.length(slot)); }, &mask,
-                 dist[r], parent);
+    finder.flood({knots[rows[r]].vertex}, pocketCutWeight(mesh, graph, bridge, curvature), &mask, dist[r], parent);
   }
   for (const auto& [p, columns] : byBoundary) {
     if (p == entry) continue;
@@ -85,7 +93,8 @@ struct Leg {
 /// Cheapest leg inside `pocket` from `start` to a knot (or, failing that, any vertex) on a
 /// boundary of the pocket other than `excludeProjection`.
 Leg bestLeg(const TriMesh& mesh, const SurfaceGraph& graph, const PathFinder& finder, const ConcavityMap& map,
-            int pocket, int start, int excludeProjection, double delta, bool matchKnots) {
+            const std::vector<double>& curvature, int pocket, int start, int excludeProjection, double delta,
+            bool matchKnots) {
   Leg leg;
   const std::vector<char> allowed = pocketVertices(mesh, map, pocket);
   const Bridge& bridge = map.bridges[pocket];
@@ -93,8 +102,7 @@ Leg bestLeg(const TriMesh& mesh, const SurfaceGraph& graph, const PathFinder& fi
   std::vector<int> parent;
   std::vector<char> mask = allowed;
   mask[start] = 1;
-  finder.flood({start}, [&](int a, int b, int slot) { return cutEdgeWeight(mesh, graph, bridge, a, b, graph.length(slot)); },
-               &mask, dist, parent);
+  finder.flood({start}, pocketCutWeight(mesh, graph, bridge, curvature), &mask, dist, parent);
   auto consider = [&](int v, int projection, bool knot) {
     if (v == start || !std::isfinite(dist[v])) return;
     // Knots are preferred: a knot-less end costs twice as much.
@@ -109,7 +117,7 @@ Leg bestLeg(const TriMesh& mesh, const SurfaceGraph& graph, const PathFinder& fi
   // Entering across a boundary that has knots of this pocket: the leg may only end at a knot
   // matched (Observation 4.2) to the entry knot nearest the chain's end.
   const std::vector<int> partners =
-      matchKnots ? matchedPartners(mesh, graph, finder, map, knots, pocket, start, excludeProjection) : std::vector<int>{};
+      matchKnots ? matchedPartners(mesh, graph, finder, map, curvature, knots, pocket, start, excludeProjection) : std::vector<int>{};
   for (int k : partners) consider(knots[k].vertex, knots[k].projection, true);
   if (partners.empty())
     for (const Knot& k : knots)
@@ -224,6 +232,9 @@ GlobalCut findGlobalCut(const TriMesh& mesh, const SurfaceGraph& graph, const Co
   if (notch < 0 || map.bridges.empty()) return cut;
   const int root = map.vertexBridge[notch];
   PathFinder finder(graph);
+  std::vector<double> ownCurvature;
+  if (!options.slotCurvature) ownCurvature = slotCurvatures(mesh, graph);
+  const std::vector<double>& curvature = options.slotCurvature ? *options.slotCurvature : ownCurvature;
 
   // Root pocket cut: notch to its two cheapest ends on different boundaries. A notch that lies on
   // a boundary itself is one end already: the cut continues across that boundary from it.
@@ -234,7 +245,7 @@ GlobalCut findGlobalCut(const TriMesh& mesh, const SurfaceGraph& graph, const Co
     for (std::size_t i = 1; i + 1 < pe.path.size(); ++i)
       if (pe.path[i] == notch) notchProjection = p;
   }
-  Leg first = bestLeg(mesh, graph, finder, map, root, notch, notchProjection, options.delta, options.matchKnots);
+  Leg first = bestLeg(mesh, graph, finder, map, curvature, root, notch, notchProjection, options.delta, options.matchKnots);
   if (first.endVertex < 0) return cut;
   Leg second;
   if (notchProjection >= 0) {
@@ -244,7 +255,7 @@ GlobalCut findGlobalCut(const TriMesh& mesh, const SurfaceGraph& graph, const Co
     second.projection = notchProjection;
     second.nextPocket = pe.leftBridge == root ? pe.rightBridge : pe.leftBridge;
   } else {
-    second = bestLeg(mesh, graph, finder, map, root, notch, first.projection, options.delta, options.matchKnots);
+    second = bestLeg(mesh, graph, finder, map, curvature, root, notch, first.projection, options.delta, options.matchKnots);
   }
   cut.cupShaped = pocketKnots(mesh, map, root, options.delta).size() < 2;
 
@@ -300,7 +311,7 @@ GlobalCut findGlobalCut(const TriMesh& mesh, const SurfaceGraph& graph, const Co
       end.stuck = true;
       continue;
     }
-    Leg leg = bestLeg(mesh, graph, finder, map, pocket, end.chain.back(), end.projection, options.delta, options.matchKnots);
+    Leg leg = bestLeg(mesh, graph, finder, map, curvature, pocket, end.chain.back(), end.projection, options.delta, options.matchKnots);
     if (leg.endVertex < 0) {
       end.stuck = true;
       continue;

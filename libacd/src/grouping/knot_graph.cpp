@@ -17,10 +17,13 @@ int loopPosition(const ConcavityMap& map, const Knot& k) {
 
 }  // namespace
 
-KnotGraph buildKnotGraph(const TriMesh& mesh, const SurfaceGraph& graph, const ConcavityMap& map, double delta) {
+KnotGraph buildKnotGraph(const TriMesh& mesh, const SurfaceGraph& graph, const ConcavityMap& map, double delta,
+                         const std::vector<double>* slotCurvature) {
   KnotGraph kg;
   const PathFinder finder(graph);
-  const std::vector<double> curvature = slotCurvatures(mesh, graph);
+  std::vector<double> ownCurvature;
+  if (!slotCurvature) ownCurvature = slotCurvatures(mesh, graph);
+  const std::vector<double>& curvature = slotCurvature ? *slotCurvature : ownCurvature;
   const int bridges = static_cast<int>(map.bridges.size());
   std::vector<std::vector<char>> inPocket(bridges, std::vector<char>(mesh.vertices.size(), 0));
   for (std::size_t f = 0; f < mesh.faces.size(); ++f)

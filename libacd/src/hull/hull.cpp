@@ -2,6 +2,7 @@
 #include <acd/hull.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Mpzf.h>
 #include <CGAL/Random.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/convex_hull_3.h>
@@ -23,10 +24,137 @@ struct PointHash {
     return h;
   }
 };
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using HullMesh = CGAL::Surface_mesh<K::Point_3>;
+
+/// Sign of (a - b) . ((q - p) x (r - p)), exactly. A double evaluation decides when it is clear of
+/// its rounding error (below 10 eps of the terms' absolute sum; 1e-14 leaves a wide margin); else
+/// ring arithmetic on the doubles in CGAL's Mpzf, which is exact and, unlike the rationals of
+/// CGAL's own hull predicate, needs no gcd: pieces' cut faces make these near-zero cases common.
+CGAL::Sign sideSign(const K::Point_3& a, const K::Point_3& b, const K::Point_3& p, const K::Point_3& q,
+                    const K::Point_3& r) {
+  const double ux = q.x() - p.x(), uy = q.y() - p.y(), uz = q.z() - p.z();
+  const double vx = r.x() - p.x(), vy = r.y() - p.y(), vz = r.z() - p.z();
+  const double dx = a.x() - b.x(), dy = a.y() - b.y(), dz = a.z() - b.z();
+  const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+  const double det = dx * nx + dy * ny + dz * nz;
+  const double terms = std::abs(dx) * (std::abs(uy * vz) + std::abs(uz * vy)) +
+                       std::abs(dy) * (std::abs(uz * vx) + std::abs(ux * vz)) +
+                       std::abs(dz) * (std::abs(ux * vy) + std::abs(uy * vx));
+  if (det > 1e-14 * terms) return CGAL::POSITIVE;
+  if (det < -1e-14 * terms) return CGAL::NEGATIVE;
+  if (terms == 0) return CGAL::ZERO;
+  using E = CGAL::Mpzf;
+  const E eux = E(q.x()) - E(p.x()), euy = E(q.y()) - E(p.y()), euz = E(q.z()) - E(p.z());
+  const E evx = E(r.x()) - E(p.x()), evy = E(r.y()) - E(p.y()), evz = E(r.z()) - E(p.z());
+  const E edx = E(a.x()) - E(b.x()), edy = E(a.y()) - E(b.y()), edz = E(a.z()) - E(b.z());
+  const E e = edx * (euy * evz - euz * evy) + edy * (euz * evx - eux * evz) + edz * (eux * evy - euy * evx);
+  return e.sign();
+}
+
+/// CGAL's hull traits with the two predicates quickhull spends its time in (which side of a facet
+/// a point is on; which of two points is farther) evaluated by sideSign. Same answers, exactly.
+struct HullTraits : CGAL::Convex_hull_traits_3<K, HullMesh, CGAL::Tag_true> {
+  struct Less_signed_distance_to_plane_3 {
+    using result_type = bool;
+    bool operator()(const Plane_3& h, const Point_3& s, const Point_3& t) const {
+      return sideSign(s, t, h.p(), h.q(), h.r()) == CGAL::NEGATIVE;
+    }
+  };
+  Less_signed_distance_to_plane_3 less_signed_distance_to_plane_3_object() const { return {}; }
+};
+
+// Akl-Toussaint elimination: the points extreme in 26 directions span a polytope inside the hull,
+// and a point strictly inside it cannot be a hull vertex. The test is a floating-point orientation
+// with a margin above its worst rounding error, so a point is dropped only when it is certainly
+// inside; points on or near a face stay. The hull is the same; quickhull sees a fraction of the
+// points (most of a piece's surface lies inside its hull).
+void dropInteriorPoints(std::vector<K::Point_3>& pts) {
+  if (pts.size() < 256) return;
+  std::vector<std::size_t> extreme;
+  for (int dx = -1; dx <= 1; ++dx)
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dz = -1; dz <= 1; ++dz) {
+        if (dx == 0 && dy == 0 && dz == 0) continue;
+        std::size_t best = 0;
+        double bestValue = -std::numeric_limits<double>::infinity();
+        for (std::size_t i = 0; i < pts.size(); ++i) {
+          const double v = dx * pts[i].x() + dy * pts[i].y() + dz * pts[i].z();
+          if (v > bestValue) bestValue = v, best = i;  // ties: the first point
+        }
+        extreme.push_back(best);
+      }
+  std::sort(extreme.begin(), extreme.end());
+  extreme.erase(std::unique(extreme.begin(), extreme.end()), extreme.end());
+  if (extreme.size() < 4) return;
+  std::vector<K::Point_3> corners;
+  for (std::size_t i : extreme) corners.push_back(pts[i]);
+  CGAL::Surface_mesh<K::Point_3> inner;
+  CGAL::convex_hull_3(corners.begin(), corners.end(), inner);
+  if (inner.number_of_faces() < 4) return;
+  double lo[3] = {pts[0].x(), pts[0].y(), pts[0].z()}, hi[3] = {lo[0], lo[1], lo[2]};
+  for (const auto& p : pts)
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  const double size = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+  // |error| of (b-a)x(c-a).(p-a) is below ~16 eps |b-a||c-a||p-a| <= 16 eps (2 size)^3: 1e-12 size^3 is far above it.
+  const double margin = 1e-12 * size * size * size;
+  struct Facet {
+    double a[3], n[3];
+  };
+  std::vector<Facet> facets;
+  for (auto f : inner.faces()) {
+    auto h = inner.halfedge(f);
+    const auto& a = inner.point(inner.source(h));
+    const auto& b = inner.point(inner.target(h));
+    const auto& c = inner.point(inner.target(inner.next(h)));
+    const double u[3] = {b.x() - a.x(), b.y() - a.y(), b.z() - a.z()};
+    const double v[3] = {c.x() - a.x(), c.y() - a.y(), c.z() - a.z()};
+    facets.push_back({{a.x(), a.y(), a.z()},
+                      {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]}});
+  }
+  // Outward normals (CGAL's orientation), checked: the corners' centroid must be inside every facet.
+  double centre[3] = {0, 0, 0};
+  for (const auto& c : corners)
+    for (int k = 0; k < 3; ++k) centre[k] += c[k] / static_cast<double>(corners.size());
+  for (const Facet& f : facets)
+    if ((centre[0] - f.a[0]) * f.n[0] + (centre[1] - f.a[1]) * f.n[1] + (centre[2] - f.a[2]) * f.n[2] >= 0) return;
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const auto& p = pts[i];
+    bool inside = true;
+    for (const Facet& f : facets) {
+      const double s = (p.x() - f.a[0]) * f.n[0] + (p.y() - f.a[1]) * f.n[1] + (p.z() - f.a[2]) * f.n[2];
+      if (s > -margin) {  // outward normals: negative is inside
+        inside = false;
+        break;
+      }
+    }
+    if (!inside) pts[kept++] = p;
+  }
+  pts.resize(kept);
+}
+
 }  // namespace
+}  // namespace acd
+
+namespace CGAL::Convex_hull_3::internal {
+/// Quickhull's side-of-facet test for HullTraits (see sideSign).
+template <>
+class Is_on_positive_side_of_plane_3<acd::HullTraits, boost::false_type> {
+  const acd::K::Point_3 &p, &q, &r;
+
+ public:
+  using Protector = Protect_FPU_rounding<false>;
+  Is_on_positive_side_of_plane_3(const acd::HullTraits&, const acd::K::Point_3& p_, const acd::K::Point_3& q_,
+                                 const acd::K::Point_3& r_)
+      : p(p_), q(q_), r(r_) {}
+  bool operator()(const acd::K::Point_3& s) const { return acd::sideSign(s, p, p, q, r) == POSITIVE; }
+};
+}  // namespace CGAL::Convex_hull_3::internal
+
+namespace acd {
 
 ConvexHull convexHull(const std::vector<Vec3>& points) {
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   ConvexHull out;
   std::vector<K::Point_3> pts;
   pts.reserve(points.size());
@@ -44,8 +172,9 @@ ConvexHull convexHull(const std::vector<Vec3>& points) {
   // Into a Surface_mesh: CGAL 5.5's polygon-soup output of convex_hull_3 is unreliable
   // (different, wrong face counts from run to run on the same points).
   CGAL::get_default_random() = CGAL::Random(0);  // per-thread state: keep the result thread-independent
-  CGAL::Surface_mesh<K::Point_3> sm;
-  CGAL::convex_hull_3(pts.begin(), pts.end(), sm);
+  dropInteriorPoints(pts);
+  HullMesh sm;
+  CGAL::convex_hull_3(pts.begin(), pts.end(), sm, HullTraits());
   if (sm.number_of_faces() < 4) {
     out.degenerate = true;
     return out;

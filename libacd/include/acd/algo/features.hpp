@@ -15,6 +15,8 @@ struct FeatureOptions {
   int maxPockets = 12;     // pockets a global cut may cross before it is closed by force
   bool matchKnots = true;  // legs end only at knots matched to the entry knot (Observation 4.2)
   bool notchAsEnd = true;  // a notch on a pocket boundary is itself one end of the root pocket cut
+  /// slotCurvatures(mesh, graph), when the caller shares one between calls (else made per call).
+  const std::vector<double>* slotCurvature = nullptr;
 };
 
 /// A knot: a mesh vertex on a pocket boundary, with the pocket it was found for.

@@ -24,7 +24,8 @@ struct KnotGraph {
 
 /// Knots of every pocket, pocket cuts between the matched knots of every pair of boundaries
 /// of each pocket, and links joining the knots two pockets found on their shared boundary.
-KnotGraph buildKnotGraph(const TriMesh& mesh, const SurfaceGraph& graph, const ConcavityMap& map, double delta);
+KnotGraph buildKnotGraph(const TriMesh& mesh, const SurfaceGraph& graph, const ConcavityMap& map, double delta,
+                         const std::vector<double>* slotCurvature = nullptr);
 
 /// Minimum-weight cycle of G_K through the root pocket cut (the cut of the notch's pocket whose
 /// path holds the notch, or passes nearest to it). Empty when the notch's pocket has no cut or

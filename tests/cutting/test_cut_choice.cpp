@@ -1,0 +1,149 @@
+// The choice of a cut among candidate planes (cut_choice.cpp): the lookahead on shapes whose best
+// cut is known, its ties and repeats, the hull points it scores with, and the candidates' shape.
+#include <acd/algo/cut_choice.hpp>
+#include <acd/hull.hpp>
+#include <acd/shapes.hpp>
+
+#include <gtest/gtest.h>
+
+#include "helpers.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <set>
+
+using namespace acd;
+
+namespace {
+
+Plane plane(const Vec3& normal, double offset) { return {normal, offset}; }
+
+std::vector<double> sortedVolumes(const std::vector<TriMesh>& pieces) {
+  std::vector<double> v;
+  for (const TriMesh& m : pieces) v.push_back(signedVolume(m));
+  std::sort(v.begin(), v.end());
+  return v;
+}
+
+CutChoice lookahead(const TriMesh& mesh, const std::vector<Plane>& candidates) {
+  return cutByLookahead(mesh, candidates, CutSite{0, Vec3::UnitZ(), 0, false}, ConcavityOptions{}, 0.05);
+}
+
+}  // namespace
+
+// The L of three unit cells: cut at x = 1 it falls into two boxes (hull volume beyond the pieces:
+// 0); cut at x = 0.5 the larger side keeps the notch (hull excess 0.5, the notch's triangle).
+TEST(CutByLookahead, PicksThePlaneWhoseChildrenAreConvex) {
+  const TriMesh l = shapes::lShape();
+  const CutChoice choice = lookahead(l, {plane(Vec3::UnitX(), 0.5), plane(Vec3::UnitX(), 1.0)});
+  ASSERT_TRUE(choice.ok);
+  EXPECT_EQ(choice.index, 1u);
+  EXPECT_EQ(choice.failed, 0);
+  const std::vector<double> v = sortedVolumes(choice.pieces);
+  ASSERT_EQ(v.size(), 2u);
+  EXPECT_NEAR(v[0], 1.0, 1e-12);
+  EXPECT_NEAR(v[1], 2.0, 1e-12);
+  for (const TriMesh& piece : choice.pieces)
+    EXPECT_NEAR(signedVolume(hullMesh(piece.vertices)), signedVolume(piece), 1e-12);
+}
+
+TEST(CutByLookahead, EqualScoresGoToTheEarlierCandidate) {
+  // x = 1 and y = 1 both leave two boxes: a tie, whichever comes first wins.
+  const TriMesh l = shapes::lShape();
+  const Plane x = plane(Vec3::UnitX(), 1.0), y = plane(Vec3::UnitY(), 1.0);
+  EXPECT_EQ(lookahead(l, {x, y}).index, 0u);
+  EXPECT_EQ(lookahead(l, {y, x}).index, 0u);
+  // The same with y moved by rounding noise: still a tie.
+  const Plane yNoisy = plane(Vec3::UnitY(), 1.0 + 1e-15);
+  EXPECT_EQ(lookahead(l, {x, yNoisy}).index, 0u);
+  EXPECT_EQ(lookahead(l, {yNoisy, x}).index, 0u);
+}
+
+TEST(CutByLookahead, RepeatsAndPlanesThatMissCountAsBefore) {
+  const TriMesh l = shapes::lShape();
+  const Plane good = plane(Vec3::UnitX(), 1.0), poor = plane(Vec3::UnitX(), 0.5), miss = plane(Vec3::UnitX(), 5.0);
+  const CutChoice repeated = lookahead(l, {poor, good, good, poor});
+  ASSERT_TRUE(repeated.ok);
+  EXPECT_EQ(repeated.index, 1u);
+  EXPECT_EQ(repeated.failed, 0);
+  const CutChoice missing = lookahead(l, {miss, miss, good});
+  ASSERT_TRUE(missing.ok);
+  EXPECT_EQ(missing.index, 2u);
+  EXPECT_EQ(missing.failed, 2);  // a repeat of a plane that misses misses too
+  EXPECT_FALSE(lookahead(l, {miss, miss}).ok);
+}
+
+// A fine sphere cut obliquely: the scored points are the child's vertices off the plane and the
+// outline of its cap. Their hull is the child's hull (CGAL's, from all vertices) to rounding.
+TEST(LookaheadHullPoints, SameHullAsAllVerticesWithoutTheCapsInterior) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 8; ++trial) {
+    SCOPED_TRACE(trial);
+    const TriMesh sphere = shapes::icosphere(Vec3(u(rng), u(rng), u(rng)), 1.0, 4);
+    const Vec3 n = Vec3(u(rng), u(rng), u(rng)).normalized();
+    const Plane p = Plane::through(boundingBox(sphere).center() + 0.4 * u(rng) * n, n);
+    const CutResult cut = cutByPlane(sphere, p);
+    ASSERT_TRUE(cut.ok);
+    for (const auto* side : {&cut.below, &cut.above})
+      for (const TriMesh& child : *side) {
+        const std::vector<Vec3> points = lookaheadHullPoints(child, p);
+        const std::set<std::array<double, 3>> vertices = [&] {
+          std::set<std::array<double, 3>> s;
+          for (const Vec3& v : child.vertices) s.insert({v.x(), v.y(), v.z()});
+          return s;
+        }();
+        for (const Vec3& q : points) EXPECT_TRUE(vertices.count({q.x(), q.y(), q.z()}));
+        const double full = signedVolume(hullMesh(child.vertices));
+        EXPECT_NEAR(signedVolume(hullMesh(points)), full, 1e-12 * full);
+        // A sphere's section is convex, so its outline keeps all cap points; the drop is of the
+        // vertices inside the cap, of which a fine sphere's cut has none. The count is bounded
+        // by the child's vertices and at least the off-plane ones plus three.
+        int off = 0;
+        for (const Vec3& v : child.vertices) off += std::abs(p.signedDistance(v)) > 1e-9;
+        EXPECT_LE(points.size(), child.vertices.size());
+        EXPECT_GE(static_cast<int>(points.size()), off + 3);
+      }
+  }
+}
+
+TEST(LookaheadHullPoints, KeepsOnlyTheCornersOfTheCapOutline) {
+  // A box of 2 x 2 voxels cut halfway up: its side faces' edges cross the plane between the
+  // corners, so the cap has points along its outline's sides. Only the four corners stay.
+  const TriMesh box = shapes::voxels({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}}, 0.5);  // 1 x 1 x 0.5
+  const Plane z = plane(Vec3::UnitZ(), 0.25);
+  const CutResult cut = cutByPlane(box, z);
+  ASSERT_TRUE(cut.ok);
+  ASSERT_EQ(cut.below.size(), 1u);
+  const TriMesh& child = cut.below[0];
+  int onCap = 0;
+  for (const Vec3& v : child.vertices) onCap += std::abs(v.z() - 0.25) < 1e-12;
+  ASSERT_GT(onCap, 4);  // the voxel box has edge midpoints: the cap has more than its corners
+  const std::vector<Vec3> points = lookaheadHullPoints(child, z);
+  int kept = 0;
+  for (const Vec3& q : points) kept += std::abs(q.z() - 0.25) < 1e-12;
+  EXPECT_EQ(kept, 4);
+  EXPECT_NEAR(signedVolume(hullMesh(points)), 0.25, 1e-14);
+}
+
+// Every candidate passes through the notch it is for (a plane off the notch would leave it as it was).
+TEST(CandidatePlanes, AllPassThroughTheNotch) {
+  const TriMesh l = shapes::lShape();
+  SurfaceGraph graph(l);
+  const ConcavityMap map = acdtest::measure(l, 0.025);
+  ASSERT_GE(map.notch, 0);
+  DecomposeOptions o;
+  o.tau = 0.05;
+  o.epsilon = 0.025;
+  o.delta = 0.0025;
+  for (int stalls : {0, 1, 2, 3}) {
+    SCOPED_TRACE(stalls);
+    const CutSite site{map.notch, map.bridges[map.vertexBridge[map.notch]].normal, stalls, false};
+    double seconds = 0;
+    const std::vector<Plane> candidates = candidatePlanes(l, graph, map, o, site, seconds);
+    ASSERT_GE(candidates.size(), 2u);
+    EXPECT_LE(candidates.size(), 9u);  // global cuts (5, or 6 with a cup) + bisector + fan of 2, or a fan of 8 + the bridge plane
+    for (const Plane& c : candidates) EXPECT_NEAR(c.signedDistance(l.vertices[map.notch]), 0.0, 1e-12);
+  }
+}
