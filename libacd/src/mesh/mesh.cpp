@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <numeric>
-#include <unordered_map>
 
 namespace acd {
 
@@ -50,40 +49,31 @@ TriMesh concatenate(const std::vector<TriMesh>& meshes) {
   return all;
 }
 
+namespace {
+/// The faces with the vertices they use, renumbered in the order of their original indices (so
+/// that output is stable). `remap` is all -1 on entry and on return, sized for `vertices`.
+TriMesh compactFaces(const std::vector<Vec3>& vertices, const std::vector<Face>& faces, std::vector<int>& remap) {
+  std::vector<int> used;
+  for (const Face& f : faces)
+    for (int v : f)
+      if (remap[v] < 0) remap[v] = 0, used.push_back(v);
+  std::sort(used.begin(), used.end());
+  TriMesh out;
+  out.vertices.reserve(used.size());
+  for (int v : used) {
+    remap[v] = static_cast<int>(out.vertices.size());
+    out.vertices.push_back(vertices[v]);
+  }
+  out.faces.reserve(faces.size());
+  for (const Face& f : faces) out.faces.push_back({remap[f[0]], remap[f[1]], remap[f[2]]});
+  for (int v : used) remap[v] = -1;
+  return out;
+}
+}  // namespace
+
 TriMesh compact(const TriMesh& mesh) {
   std::vector<int> remap(mesh.vertices.size(), -1);
-  TriMesh out;
-  out.faces.reserve(mesh.faces.size());
-  for (const Face& f : mesh.faces) {
-    Face g;
-    for (int k = 0; k < 3; ++k) {
-      int& r = remap[f[k]];
-      if (r < 0) {
-        r = static_cast<int>(out.vertices.size());
-        out.vertices.push_back(mesh.vertices[f[k]]);
-      }
-      g[k] = r;
-    }
-    out.faces.push_back(g);
-  }
-  // Keep the original vertex order so that output is stable: renumber by first original index.
-  std::vector<int> order(out.vertices.size());
-  std::vector<int> original(out.vertices.size());
-  for (int v = 0; v < static_cast<int>(remap.size()); ++v)
-    if (remap[v] >= 0) original[remap[v]] = v;
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return original[a] < original[b]; });
-  std::vector<int> rank(order.size());
-  TriMesh sorted;
-  sorted.vertices.resize(order.size());
-  for (int i = 0; i < static_cast<int>(order.size()); ++i) {
-    rank[order[i]] = i;
-    sorted.vertices[i] = out.vertices[order[i]];
-  }
-  sorted.faces = std::move(out.faces);
-  for (Face& f : sorted.faces)
-    for (int& v : f) v = rank[v];
-  return sorted;
+  return compactFaces(mesh.vertices, mesh.faces, remap);
 }
 
 namespace {
@@ -95,43 +85,74 @@ int findRoot(std::vector<int>& parent, int x) {
 
 std::vector<TriMesh> splitEdgeConnected(const TriMesh& mesh) {
   const int nf = static_cast<int>(mesh.faces.size());
+  const int nv = static_cast<int>(mesh.vertices.size());
   std::vector<int> parent(nf);
   std::iota(parent.begin(), parent.end(), 0);
-  std::unordered_map<std::uint64_t, int> firstFace;
-  firstFace.reserve(mesh.faces.size() * 2);
-  for (int f = 0; f < nf; ++f) {
+  // The faces at each edge, listed at the edge's lower vertex as (other end, face): faces that
+  // share an edge are neighbours in their vertex's sorted list.
+  std::vector<int> start(nv + 1, 0);
+  for (const Face& f : mesh.faces)
+    for (int k = 0; k < 3; ++k) ++start[std::min(f[k], f[(k + 1) % 3]) + 1];
+  for (int v = 0; v < nv; ++v) start[v + 1] += start[v];
+  std::vector<std::pair<int, int>> around(start[nv]);
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (int f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k) {
-      auto [it, inserted] = firstFace.emplace(edgeKey(mesh.faces[f][k], mesh.faces[f][(k + 1) % 3]), f);
-      if (!inserted) parent[findRoot(parent, f)] = findRoot(parent, it->second);
+      const int a = mesh.faces[f][k], b = mesh.faces[f][(k + 1) % 3];
+      around[fill[std::min(a, b)]++] = {std::max(a, b), f};
     }
+  for (int v = 0; v < nv; ++v) {
+    const auto first = around.begin() + start[v], last = around.begin() + start[v + 1];
+    std::sort(first, last);
+    for (auto it = first; it != last && it + 1 != last; ++it)
+      if (it->first == (it + 1)->first) parent[findRoot(parent, (it + 1)->second)] = findRoot(parent, it->second);
   }
-  std::unordered_map<int, int> pieceOf;
-  std::vector<TriMesh> pieces;
+  // Pieces in the order of their first face, faces in input order.
+  std::vector<int> pieceOf(nf, -1);
+  std::vector<std::vector<Face>> faces;
   for (int f = 0; f < nf; ++f) {
-    const int r = findRoot(parent, f);
-    auto [it, inserted] = pieceOf.emplace(r, static_cast<int>(pieces.size()));
-    if (inserted) pieces.push_back(TriMesh{mesh.vertices, {}});
-    pieces[it->second].faces.push_back(mesh.faces[f]);
+    int& piece = pieceOf[findRoot(parent, f)];
+    if (piece < 0) piece = static_cast<int>(faces.size()), faces.emplace_back();
+    faces[piece].push_back(mesh.faces[f]);
   }
-  for (TriMesh& p : pieces) p = compact(p);
+  std::vector<int> remap(nv, -1);
+  std::vector<TriMesh> pieces;
+  pieces.reserve(faces.size());
+  for (const auto& pieceFaces : faces) pieces.push_back(compactFaces(mesh.vertices, pieceFaces, remap));
   return pieces;
 }
 
 bool isClosedOriented(const TriMesh& mesh) {
-  // Each directed edge once, and its reverse once.
-  std::unordered_map<std::uint64_t, int> directed;
-  directed.reserve(mesh.faces.size() * 3);
+  // Each directed edge once, and its reverse once: out-neighbour lists per vertex, sorted.
+  if (mesh.faces.empty()) return false;
+  int nv = 0;
+  for (const Face& f : mesh.faces)
+    for (int v : f) {
+      if (v < 0) return false;
+      nv = std::max(nv, v + 1);
+    }
+  std::vector<int> start(nv + 1, 0);
   for (const Face& f : mesh.faces)
     for (int k = 0; k < 3; ++k) {
-      const auto a = static_cast<std::uint64_t>(f[k]), b = static_cast<std::uint64_t>(f[(k + 1) % 3]);
-      if (a == b) return false;
-      if (++directed[(a << 32) | b] > 1) return false;
+      if (f[k] == f[(k + 1) % 3]) return false;
+      ++start[f[k] + 1];
     }
-  for (const auto& [key, count] : directed) {
-    const std::uint64_t reverse = (key << 32) | (key >> 32);
-    if (directed.find(reverse) == directed.end()) return false;
+  for (int v = 0; v < nv; ++v) start[v + 1] += start[v];
+  std::vector<int> next(start[nv]);
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (const Face& f : mesh.faces)
+    for (int k = 0; k < 3; ++k) next[fill[f[k]]++] = f[(k + 1) % 3];
+  for (int v = 0; v < nv; ++v) {
+    std::sort(next.begin() + start[v], next.begin() + start[v + 1]);
+    if (std::adjacent_find(next.begin() + start[v], next.begin() + start[v + 1]) != next.begin() + start[v + 1])
+      return false;
   }
-  return !mesh.faces.empty();
+  for (int a = 0; a < nv; ++a)
+    for (int i = start[a]; i < start[a + 1]; ++i) {
+      const int b = next[i];
+      if (!std::binary_search(next.begin() + start[b], next.begin() + start[b + 1], a)) return false;
+    }
+  return true;
 }
 
 }  // namespace acd
