@@ -9,13 +9,11 @@ namespace acd {
 SurfaceGraph::SurfaceGraph(const TriMesh& mesh) : mesh_(&mesh) {
   const int nv = static_cast<int>(mesh.vertices.size());
   const int nf = static_cast<int>(mesh.faces.size());
-  directedFace_.reserve(3 * nf * 2);
   std::vector<std::pair<int, int>> directed;
   directed.reserve(3 * nf * 2);
   for (int f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k) {
       const int a = mesh.faces[f][k], b = mesh.faces[f][(k + 1) % 3];
-      directedFace_[(static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b)] = f;
       directed.emplace_back(a, b);
       directed.emplace_back(b, a);
     }
@@ -30,14 +28,28 @@ SurfaceGraph::SurfaceGraph(const TriMesh& mesh) : mesh_(&mesh) {
     neighbour_[i] = directed[i].second;
     length_[i] = (mesh.vertices[directed[i].first] - mesh.vertices[directed[i].second]).norm();
   }
+  // Neighbour lists are sorted, so a directed edge's slot is found by bisection. On a repeated
+  // directed edge (a non-manifold input) the later face is kept.
+  leftFace_.assign(directed.size(), -1);
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = mesh.faces[f][k], b = mesh.faces[f][(k + 1) % 3];
+      leftFace_[slotOf(a, b)] = f;
+    }
   across_.assign(3 * nf, -1);
   for (int f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k) across_[3 * f + k] = faceLeftOf(mesh.faces[f][(k + 1) % 3], mesh.faces[f][k]);
 }
 
+int SurfaceGraph::slotOf(int a, int b) const {
+  const auto first = neighbour_.begin() + start_[a], last = neighbour_.begin() + start_[a + 1];
+  const auto it = std::lower_bound(first, last, b);
+  return it != last && *it == b ? static_cast<int>(it - neighbour_.begin()) : -1;
+}
+
 int SurfaceGraph::faceLeftOf(int a, int b) const {
-  auto it = directedFace_.find((static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b));
-  return it == directedFace_.end() ? -1 : it->second;
+  const int slot = slotOf(a, b);
+  return slot < 0 ? -1 : leftFace_[slot];
 }
 
 PathFinder::PathFinder(const SurfaceGraph& graph)

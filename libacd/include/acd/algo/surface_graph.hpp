@@ -7,7 +7,6 @@
 
 #include <cstdint>
 #include <functional>
-#include <unordered_map>
 #include <vector>
 
 namespace acd {
@@ -28,6 +27,8 @@ class SurfaceGraph {
 
   /// Face that has the directed edge a->b (the face on the left of a->b), or -1.
   int faceLeftOf(int a, int b) const;
+  /// Slot of neighbour b in a's list, or -1 when a-b is not an edge.
+  int slotOf(int a, int b) const;
   /// Face across edge k (vertices k, k+1) of face f, or -1 on a boundary.
   int faceAcross(int f, int k) const { return across_[3 * f + k]; }
 
@@ -35,7 +36,7 @@ class SurfaceGraph {
   const TriMesh* mesh_;
   std::vector<int> start_, neighbour_;
   std::vector<double> length_;
-  std::unordered_map<std::uint64_t, int> directedFace_;
+  std::vector<int> leftFace_;  // per slot: the face left of v -> neighbour, or -1
   std::vector<int> across_;
 };
 
