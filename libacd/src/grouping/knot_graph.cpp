@@ -51,11 +51,20 @@ KnotGraph buildKnotGraph(const TriMesh& mesh, const SurfaceGraph& graph, const C
     std::vector<std::vector<double>> dist(knots.size());
     std::vector<std::vector<int>> parent(knots.size());
     std::vector<char>& mask = inPocket[pocket];
-    for (int k = 0; k < static_cast<int>(knots.size()); ++k) {
-      const char saved = mask[knots[k].vertex];
-      mask[knots[k].vertex] = 1;
-      finder.flood({knots[k].vertex}, weight, &mask, dist[k], parent[k]);
-      mask[knots[k].vertex] = saved;
+    // Pairs are matched from an earlier boundary to a later one, so a knot needs the distances to
+    // the knots of later boundaries only; its flood stops once they are settled.
+    for (auto i = byBoundary.begin(); i != byBoundary.end(); ++i) {
+      std::vector<int> later;
+      for (auto j = std::next(i); j != byBoundary.end(); ++j)
+        for (int node : j->second) later.push_back(kg.nodes[node].vertex);
+      if (later.empty()) continue;
+      for (int node : i->second) {
+        const int k = node - base;
+        const char saved = mask[knots[k].vertex];
+        mask[knots[k].vertex] = 1;
+        finder.flood({knots[k].vertex}, weight, &mask, dist[k], parent[k], &later);
+        mask[knots[k].vertex] = saved;
+      }
     }
     for (auto i = byBoundary.begin(); i != byBoundary.end(); ++i)
       for (auto j = std::next(i); j != byBoundary.end(); ++j) {

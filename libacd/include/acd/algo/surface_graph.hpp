@@ -55,9 +55,12 @@ class PathFinder {
   std::vector<int> path(int s, int t, const EdgeWeight& weight = {},
                         const std::vector<char>* allowed = nullptr);
 
-  /// Multi-source Dijkstra: distance from the nearest source, and the parent to walk back.
+  /// Multi-source Dijkstra: distance from the nearest source, and the parent to walk back. With
+  /// `targets`, the search stops once all of them are settled: their distances and parent chains
+  /// are final, other vertices' distances may be upper bounds.
   void flood(const std::vector<int>& sources, const EdgeWeight& weight, const std::vector<char>* allowed,
-             std::vector<double>& distance, std::vector<int>& parent) const;
+             std::vector<double>& distance, std::vector<int>& parent,
+             const std::vector<int>* targets = nullptr) const;
 
  private:
   const SurfaceGraph& graph_;
