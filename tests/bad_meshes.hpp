@@ -229,4 +229,12 @@ inline std::vector<Case> all() {
   return c;
 }
 
+/// The mesh of the case called `name` (throws for an unknown name).
+inline TriMesh byName(const std::string& name) {
+  static const std::vector<Case> cases = all();
+  for (const Case& c : cases)
+    if (c.name == name) return c.mesh;
+  throw std::runtime_error("no bad-mesh case " + name);
+}
+
 }  // namespace badmeshes

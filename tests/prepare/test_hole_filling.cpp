@@ -1,4 +1,6 @@
-// Open meshes for solid ACD: their holes are closed first (acd/algo/hole_filling.hpp, prepareSolid).
+// Hole filling (libacd/src/prepare/hole_filling.cpp, acd/algo/hole_filling.hpp): open meshes for
+// solid ACD have their holes closed first, through prepareSolid's fill-holes policy and on to the
+// decomposition.
 #include <acd/algo/hole_filling.hpp>
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>

@@ -1,0 +1,52 @@
+// The watertight wrap (libacd/src/prepare/alpha_wrap.cpp, acd/alpha_wrap.hpp): its parameters
+// follow tau, it is closed and lies outside the input at the offset (distances measured with the
+// tests' own geometry), and the library's Hausdorff estimate agrees with a brute-force one.
+#include <acd/alpha_wrap.hpp>
+#include <acd/decompose.hpp>
+#include <acd/diagnosis.hpp>
+#include <acd/shapes.hpp>
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "helpers.hpp"
+
+using namespace acd;
+using acdtest::MeshIndex;
+
+TEST(Wrap, ParametersFollowTau) {
+  for (double tau : {0.02, 0.05, 0.2}) {
+    const WrapParameters p = wrapParametersFor(tau);
+    EXPECT_GT(p.offset, 0.0);
+    EXPECT_LT(p.offset, tau);  // room is left in the tau budget
+    EXPECT_GE(p.alpha, p.offset);
+  }
+}
+
+TEST(Wrap, IsClosedOutsideTheInputAtTheOffset) {
+  const TriMesh sphere = shapes::icosphere(Vec3(0, 0, 0), 1.0, 3);
+  const Wrap w = alphaWrap(sphere, 0.1, 0.01);
+  ASSERT_TRUE(w.status.ok()) << w.status.message;
+  EXPECT_TRUE(isClosedOriented(w.mesh));
+  EXPECT_GT(signedVolume(w.mesh), signedVolume(sphere));
+  EXPECT_EQ(countSelfIntersections(w.mesh), 0);
+  // Independent distances: every wrap vertex at about the offset from the sphere's surface.
+  const MeshIndex index(sphere);
+  double lo = 1e9, hi = 0;
+  for (const Vec3& p : w.mesh.vertices) {
+    const double d = index.distance(p);
+    lo = std::min(lo, d), hi = std::max(hi, d);
+    EXPECT_FALSE(index.inside(p));
+  }
+  EXPECT_GT(lo, 0.005);
+  EXPECT_LT(hi, 0.02);
+  // The library's Hausdorff estimate agrees with a brute-force one in both directions.
+  const double h = hausdorffDistance(w.mesh, sphere);
+  const MeshIndex wrapIndex(w.mesh);
+  std::mt19937_64 rng(3);
+  double brute = hi;
+  for (const Vec3& p : acdtest::sampleSurface(sphere, 4000, rng)) brute = std::max(brute, wrapIndex.distance(p));
+  EXPECT_NEAR(h, brute, 0.002);
+}
+

@@ -1,0 +1,146 @@
+// The safe repairs (libacd/src/prepare/repair.cpp, acd/repair.hpp) on the generated bad-mesh set
+// (tests/bad_meshes.hpp): each repair with its exact outcome, checked with the tests' own geometry.
+#include <acd/decompose.hpp>
+#include <acd/diagnosis.hpp>
+#include <acd/repair.hpp>
+
+#include <gtest/gtest.h>
+
+#include "bad_meshes.hpp"
+#include "helpers.hpp"
+
+using namespace acd;
+
+namespace {
+
+TriMesh caseMesh(const std::string& name) { return badmeshes::byName(name); }
+
+bool hasZeroAreaFace(const TriMesh& m) {
+  const double d2 = boundingBox(m).size().squaredNorm();
+  for (int f = 0; f < static_cast<int>(m.faces.size()); ++f)
+    if (0.5 * faceNormal(m, f).norm() <= 1e-14 * d2) return true;
+  return false;
+}
+
+int componentsOf(const TriMesh& m) { return static_cast<int>(splitEdgeConnected(m).size()); }
+
+}  // namespace
+
+TEST(Repair, CleanMeshIsUnchanged) {
+  const TriMesh box = caseMesh("clean_box");
+  const MeshRepair r = repairMesh(box);
+  ASSERT_TRUE(r.status.ok());
+  EXPECT_TRUE(r.repairs.empty());
+  EXPECT_EQ(r.mesh.faces.size(), 12u);
+  EXPECT_EQ(r.mesh.vertices.size(), 8u);
+  EXPECT_DOUBLE_EQ(signedVolume(r.mesh), 1.0);
+}
+
+TEST(Repair, ZeroAreaFaceIsCollapsed) {
+  const TriMesh m = caseMesh("zero_area_face");
+  ASSERT_TRUE(hasZeroAreaFace(m));
+  const MeshRepair r = repairMesh(m);
+  ASSERT_TRUE(r.status.ok());
+  EXPECT_EQ(r.removedDegenerateFaces, 1);
+  EXPECT_EQ(r.leftDegenerateFaces, 0);
+  EXPECT_FALSE(hasZeroAreaFace(r.mesh));
+  EXPECT_TRUE(isClosedOriented(r.mesh));
+  EXPECT_NEAR(signedVolume(r.mesh), 1.0, 1e-12);
+}
+
+TEST(Repair, NeedleFacesAreCollapsed) {
+  const MeshRepair r = repairMesh(caseMesh("needle_faces"));
+  ASSERT_TRUE(r.status.ok());
+  EXPECT_EQ(r.mergedVertices, 0);  // 3e-6 is above the merge tolerance (1e-6 of the diagonal)
+  EXPECT_EQ(r.removedDegenerateFaces, 2);
+  EXPECT_EQ(r.mesh.faces.size(), 12u);
+  EXPECT_EQ(r.mesh.vertices.size(), 8u);
+  EXPECT_TRUE(isClosedOriented(r.mesh));
+  EXPECT_NEAR(signedVolume(r.mesh), 1.0, 1e-5);
+}
+
+TEST(Repair, SoupVerticesAreMerged) {
+  const MeshRepair r = repairMesh(caseMesh("stl_soup"));
+  EXPECT_EQ(r.mergedVertices, 36 - 8);
+  EXPECT_EQ(r.mesh.vertices.size(), 8u);
+  EXPECT_TRUE(isClosedOriented(r.mesh));
+  const TriMesh sphere = shapes::icosphere(Vec3(0, 0, 0), 1.0, 2);
+  const MeshRepair noisy = repairMesh(caseMesh("float_noise_soup"));
+  EXPECT_EQ(noisy.mesh.vertices.size(), sphere.vertices.size());
+  EXPECT_EQ(noisy.mergedVertices, static_cast<int>(3 * sphere.faces.size() - sphere.vertices.size()));
+  EXPECT_TRUE(isClosedOriented(noisy.mesh));
+}
+
+TEST(Repair, MergeToleranceIsRelativeToTheModel) {
+  // The same soup at a millionth of the size merges the same way; a gap of 1e-5 of the size stays.
+  TriMesh tiny = caseMesh("stl_soup");
+  for (Vec3& p : tiny.vertices) p *= 1e-6;
+  EXPECT_EQ(repairMesh(tiny).mesh.vertices.size(), 8u);
+  TriMesh gap = caseMesh("clean_box");
+  gap.vertices.push_back(gap.vertices[0] + Vec3(1e-5, 0, 0));
+  gap.faces[0][0] = 8;  // the first face uses the near copy: a crack 1e-5 wide
+  const MeshRepair r = repairMesh(gap);
+  EXPECT_EQ(r.mergedVertices, 0);
+}
+
+TEST(Repair, DoubleSidedFaceKeepsOneSide) {
+  const MeshRepair r = repairMesh(caseMesh("double_sided_face"));
+  EXPECT_EQ(r.doubleSidedKeptOne, 1);
+  EXPECT_EQ(r.doubleSidedDroppedBoth, 0);
+  EXPECT_EQ(r.mesh.faces.size(), 12u);
+  EXPECT_TRUE(isClosedOriented(r.mesh));
+  EXPECT_NEAR(signedVolume(r.mesh), 1.0, 1e-12);
+}
+
+TEST(Repair, InnerWallIsDroppedBothSides) {
+  const MeshRepair r = repairMesh(caseMesh("inner_wall"));
+  EXPECT_EQ(r.doubleSidedDroppedBoth, 2);  // two triangles, each given by both cells
+  EXPECT_EQ(r.mesh.faces.size(), 20u);
+  EXPECT_EQ(componentsOf(r.mesh), 1);
+  EXPECT_TRUE(isClosedOriented(r.mesh));
+  EXPECT_NEAR(std::abs(signedVolume(r.mesh)), 2.0, 1e-12);
+}
+
+TEST(Repair, DoubleSidedSheetKeepsOneSide) {
+  const MeshRepair r = repairMesh(caseMesh("double_sided_sheet"));
+  EXPECT_EQ(r.doubleSidedKeptOne, 2);
+  EXPECT_EQ(r.mesh.faces.size(), 2u);
+}
+
+TEST(Repair, DuplicateFaceIsDropped) {
+  const MeshRepair r = repairMesh(caseMesh("duplicate_face"));
+  EXPECT_EQ(r.droppedDuplicateFaces, 1);
+  EXPECT_EQ(r.mesh.faces.size(), 12u);
+  EXPECT_TRUE(isClosedOriented(r.mesh));
+}
+
+TEST(Repair, OrientationIsMadeConsistent) {
+  const MeshRepair r = repairMesh(caseMesh("inconsistent_orientation"));
+  EXPECT_EQ(r.flippedFaces, 3);
+  EXPECT_TRUE(isClosedOriented(r.mesh));
+  EXPECT_NEAR(signedVolume(r.mesh), 1.0, 1e-12);
+}
+
+TEST(Repair, NonManifoldEdgesAndVerticesAreSplit) {
+  const MeshRepair edge4 = repairMesh(caseMesh("non_manifold_edge_4"));
+  EXPECT_EQ(edge4.mergedVertices, 2);
+  EXPECT_EQ(edge4.splitVertices, 2);
+  EXPECT_EQ(componentsOf(edge4.mesh), 2);
+  for (const TriMesh& part : splitEdgeConnected(edge4.mesh)) EXPECT_TRUE(isClosedOriented(part));
+  const MeshRepair vertex = repairMesh(caseMesh("non_manifold_vertex"));
+  EXPECT_EQ(vertex.splitVertices, 1);
+  EXPECT_EQ(componentsOf(vertex.mesh), 2);
+  const MeshRepair fin = repairMesh(caseMesh("non_manifold_edge_3"));
+  EXPECT_EQ(fin.splitVertices, 2);
+  EXPECT_EQ(componentsOf(fin.mesh), 2);  // the closed box and the loose fin
+}
+
+TEST(Repair, BrokenDataIsRefusedWithOneLine) {
+  for (const char* name : {"non_finite_vertex", "index_out_of_range"}) {
+    const MeshRepair r = repairMesh(caseMesh(name));
+    EXPECT_FALSE(r.status.ok()) << name;
+    EXPECT_EQ(r.status.message.find('\n'), std::string::npos);
+  }
+  EXPECT_EQ(repairMesh(TriMesh{}).status.code, StatusCode::EmptyMesh);
+}
+
