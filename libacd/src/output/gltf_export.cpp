@@ -97,13 +97,17 @@ Status writeGltf(const std::string& path, const std::vector<TriMesh>& meshes, co
   model.defaultScene = 0;
   tinygltf::TinyGLTF writer;
   // embedBuffers: a GLB holds its buffer; a .gltf gets it as the file `bufferName` beside it.
+  // tinygltf reports success for a .glb it could not open (it does not check its stream), so the
+  // file is removed first and must exist afterwards.
+  std::error_code ec;
+  std::filesystem::remove(path, ec);
   bool ok = false;
   try {
     ok = writer.WriteGltfSceneToFile(&model, path, false, binary, true, binary);
   } catch (const std::exception&) {
     ok = false;
   }
-  if (!ok) return Status::error(StatusCode::FileUnreadable, "cannot write " + path);
+  if (!ok || !std::filesystem::exists(path)) return Status::error(StatusCode::FileUnreadable, "cannot write " + path);
   if (!binary && !std::filesystem::exists(std::filesystem::path(path).parent_path() / bufferName))
     return Status::error(StatusCode::FileUnreadable, "cannot write " + bufferName + " beside " + path);
   return Status::success();
