@@ -1,0 +1,68 @@
+// The paper's units (libacd/src/mesh/normalize.cpp): the minimum enclosing sphere on point sets
+// whose sphere is known (a box: its half diagonal; a regular tetrahedron: its circumradius; a
+// long segment with points inside: half its length), and the normalisation's round trip.
+#include <acd/normalize.hpp>
+#include <acd/shapes.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using namespace acd;
+
+namespace {
+
+TriMesh pointsOnly(const std::vector<Vec3>& points) {
+  TriMesh m;
+  m.vertices = points;
+  m.faces = {{0, 1, 2}};
+  return m;
+}
+
+}  // namespace
+
+TEST(MinimumSphereNormalization, BoxHasItsHalfDiagonal) {
+  const TriMesh box = shapes::box(Vec3(1, 2, 3), Vec3(3, 6, 9));
+  const Normalization n = minimumSphereNormalization(box);
+  EXPECT_TRUE(n.center.isApprox(Vec3(2, 4, 6), 1e-12));
+  EXPECT_NEAR(1.0 / n.scale, 0.5 * std::sqrt(4.0 + 16.0 + 36.0), 1e-12);
+}
+
+TEST(MinimumSphereNormalization, RegularTetrahedronHasItsCircumradius) {
+  const std::vector<Vec3> tet{Vec3(1, 1, 1), Vec3(1, -1, -1), Vec3(-1, 1, -1), Vec3(-1, -1, 1)};
+  const Normalization n = minimumSphereNormalization(pointsOnly(tet));
+  EXPECT_NEAR(n.center.norm(), 0.0, 1e-12);
+  EXPECT_NEAR(1.0 / n.scale, std::sqrt(3.0), 1e-12);
+}
+
+// The two ends of a segment fix the sphere when every other point lies inside it.
+TEST(MinimumSphereNormalization, SegmentEndsWithPointsInside) {
+  std::vector<Vec3> pts{Vec3(-5, 1, 1), Vec3(5, 1, 1)};
+  std::mt19937_64 rng(1);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  while (pts.size() < 60) {
+    const Vec3 p(4 * u(rng), 1 + 2 * u(rng), 1 + 2 * u(rng));
+    if ((p - Vec3(0, 1, 1)).norm() < 4.9) pts.push_back(p);
+  }
+  const Normalization n = minimumSphereNormalization(pointsOnly(pts));
+  EXPECT_TRUE(n.center.isApprox(Vec3(0, 1, 1), 1e-12)) << n.center.transpose();
+  EXPECT_NEAR(1.0 / n.scale, 5.0, 1e-12);
+}
+
+// Normalised, the model lies in the unit ball and touches its sphere; undoing gives it back.
+TEST(MinimumSphereNormalization, ApplyAndUndo) {
+  const TriMesh m = shapes::torus(3.0, 1.0, 16, 8);
+  TriMesh placed = m;
+  for (Vec3& v : placed.vertices) v = 7.0 * v + Vec3(100, -20, 3);
+  const Normalization n = minimumSphereNormalization(placed);
+  const TriMesh unit = applyNormalization(placed, n);
+  double far = 0;
+  for (const Vec3& v : unit.vertices) far = std::max(far, v.norm());
+  EXPECT_NEAR(far, 1.0, 1e-12);
+  EXPECT_EQ(unit.faces, placed.faces);
+  const TriMesh back = undoNormalization(unit, n);
+  for (std::size_t i = 0; i < back.vertices.size(); ++i)
+    EXPECT_TRUE(back.vertices[i].isApprox(placed.vertices[i], 1e-12)) << i;
+  EXPECT_TRUE(n.undo(n.apply(Vec3(1, 2, 3))).isApprox(Vec3(1, 2, 3), 1e-12));
+}

@@ -1,0 +1,63 @@
+// countSelfIntersections (libacd/src/prepare/self_intersections.cpp) on constructions whose count
+// is known by hand: a triangle through another, neighbours that only share an edge or a vertex,
+// a thin triangle piercing two opposite faces of a box, overlapping boxes, and the limit.
+#include <acd/diagnosis.hpp>
+#include <acd/shapes.hpp>
+
+#include <gtest/gtest.h>
+
+using namespace acd;
+
+namespace {
+
+TriMesh joined(const TriMesh& a, const TriMesh& b) {
+  TriMesh out = a;
+  const int base = static_cast<int>(a.vertices.size());
+  out.vertices.insert(out.vertices.end(), b.vertices.begin(), b.vertices.end());
+  for (const Face& f : b.faces) out.faces.push_back({f[0] + base, f[1] + base, f[2] + base});
+  return out;
+}
+
+TriMesh triangle(const Vec3& a, const Vec3& b, const Vec3& c) {
+  TriMesh t;
+  t.vertices = {a, b, c};
+  t.faces = {{0, 1, 2}};
+  return t;
+}
+
+}  // namespace
+
+TEST(SelfIntersections, CrossingTrianglesAreOnePair) {
+  const TriMesh flat = triangle(Vec3(0, 0, 0), Vec3(4, 0, 0), Vec3(0, 4, 0));
+  const TriMesh through = triangle(Vec3(1, 1, -1), Vec3(1.2, 1, -1), Vec3(1, 1.2, 1));
+  EXPECT_EQ(countSelfIntersections(joined(flat, through)), 1);
+  // Beside it, not through it: none.
+  const TriMesh beside = triangle(Vec3(5, 5, -1), Vec3(5.2, 5, -1), Vec3(5, 5.2, 1));
+  EXPECT_EQ(countSelfIntersections(joined(flat, beside)), 0);
+}
+
+// Faces meeting along a shared edge or at a shared vertex do not count.
+TEST(SelfIntersections, SharedEdgesAndVerticesDoNotCount) {
+  TriMesh fan;
+  fan.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(-1, 0, 0.5), Vec3(0, -1, -0.5)};
+  fan.faces = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}};
+  EXPECT_EQ(countSelfIntersections(fan), 0);
+  EXPECT_EQ(countSelfIntersections(shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1))), 0);
+  EXPECT_EQ(countSelfIntersections(shapes::torus(2.0, 0.5, 32, 16)), 0);
+  EXPECT_EQ(countSelfIntersections(shapes::uShape()), 0);
+}
+
+// A thin triangle through the unit box, away from the faces' diagonals: it crosses one
+// triangle of the bottom and one of the top.
+TEST(SelfIntersections, ThinTriangleThroughABoxCrossesTwoFaces) {
+  const TriMesh box = shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1));
+  const TriMesh stick = triangle(Vec3(0.3, 0.6, -1), Vec3(0.31, 0.6, -1), Vec3(0.3, 0.61, 2));
+  EXPECT_EQ(countSelfIntersections(joined(box, stick)), 2);
+  EXPECT_EQ(countSelfIntersections(joined(box, stick), 1), 1);  // the limit stops the count
+}
+
+TEST(SelfIntersections, OverlappingBoxesCrossAndSeparateOnesDoNot) {
+  const TriMesh a = shapes::box(Vec3(0, 0, 0), Vec3(2, 2, 2));
+  EXPECT_GT(countSelfIntersections(joined(a, shapes::box(Vec3(1, 1, 1), Vec3(3, 3, 3)))), 0);
+  EXPECT_EQ(countSelfIntersections(joined(a, shapes::box(Vec3(3, 0, 0), Vec3(4, 2, 2)))), 0);
+}
