@@ -150,22 +150,24 @@ CutChoice cutByFirstPlane(const TriMesh& mesh, const std::vector<Plane>& candida
   return choice;
 }
 
-/// The points whose hull is a child's hull: the vertices off the cut plane and, of those on it (the
-/// cap), only the corners of their convex outline. Cap points are coplanar only up to rounding, and
-/// every test of one against the cap's plane would fall through CGAL's filters to exact rational
-/// arithmetic; dropping the cap's interior changes the hull by rounding noise and costs nothing.
-std::vector<Vec3> lookaheadHullPoints(const TriMesh& child, const Plane& plane) {
+TriMesh lookaheadHull(const TriMesh& child, const Plane& plane) {
+  // In the plane's frame (u, w, n; right-handed, so orientation is kept) the cap's points get a
+  // height of exactly 0: quickhull's tests among them are then decided without exact arithmetic
+  // (cap points are coplanar only up to rounding in the model's frame, and every test of one
+  // against the cap's facets would go to it). Only the cap outline's corners are kept.
   const Vec3 n = plane.normal.normalized();
-  const double d = plane.offset / plane.normal.norm();
+  const Vec3 origin = n * (plane.offset / plane.normal.norm());
   const Vec3 u = n.unitOrthogonal(), w = n.cross(u);
-  std::vector<Vec3> points;
+  std::vector<Vec3> framed;
+  std::vector<int> vertexOf;
   std::vector<std::pair<Eigen::Vector2d, int>> cap;
   for (int v = 0; v < static_cast<int>(child.vertices.size()); ++v) {
-    const Vec3& p = child.vertices[v];
-    if (std::abs(n.dot(p) - d) > kCapThickness)
-      points.push_back(p);
+    const Vec3 d = child.vertices[v] - origin;
+    const Vec3 p(u.dot(d), w.dot(d), n.dot(d));
+    if (std::abs(p.z()) > kCapThickness)
+      framed.push_back(p), vertexOf.push_back(v);
     else
-      cap.push_back({Eigen::Vector2d(u.dot(p), w.dot(p)), v});
+      cap.push_back({Eigen::Vector2d(p.x(), p.y()), v});
   }
   // Andrew's monotone chain, strict turns only; ties in position by vertex index.
   std::sort(cap.begin(), cap.end(), [](const auto& a, const auto& b) {
@@ -173,25 +175,32 @@ std::vector<Vec3> lookaheadHullPoints(const TriMesh& child, const Plane& plane) 
     if (a.first.y() != b.first.y()) return a.first.y() < b.first.y();
     return a.second < b.second;
   });
-  if (cap.size() < 3) {
-    for (const auto& c : cap) points.push_back(child.vertices[c.second]);
-    return points;
-  }
   auto cross = [](const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
     return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
   };
-  std::vector<int> outline(2 * cap.size());
+  std::vector<int> outline(2 * cap.size() + 1);
   std::size_t k = 0;
-  for (std::size_t i = 0; i < cap.size(); ++i) {  // lower chain
-    while (k >= 2 && cross(cap[outline[k - 2]].first, cap[outline[k - 1]].first, cap[i].first) <= 0) --k;
-    outline[k++] = static_cast<int>(i);
+  if (cap.size() < 3) {
+    for (std::size_t i = 0; i < cap.size(); ++i) outline[k++] = static_cast<int>(i);
+  } else {
+    for (std::size_t i = 0; i < cap.size(); ++i) {  // lower chain
+      while (k >= 2 && cross(cap[outline[k - 2]].first, cap[outline[k - 1]].first, cap[i].first) <= 0) --k;
+      outline[k++] = static_cast<int>(i);
+    }
+    for (std::size_t i = cap.size() - 1, lower = k + 1; i-- > 0;) {  // upper chain
+      while (k >= lower && cross(cap[outline[k - 2]].first, cap[outline[k - 1]].first, cap[i].first) <= 0) --k;
+      outline[k++] = static_cast<int>(i);
+    }
+    --k;  // the chain ends where it began
   }
-  for (std::size_t i = cap.size() - 1, lower = k + 1; i-- > 0;) {  // upper chain
-    while (k >= lower && cross(cap[outline[k - 2]].first, cap[outline[k - 1]].first, cap[i].first) <= 0) --k;
-    outline[k++] = static_cast<int>(i);
+  for (std::size_t i = 0; i < k; ++i) {
+    const auto& [xy, v] = cap[outline[i]];
+    framed.emplace_back(xy.x(), xy.y(), 0.0);
+    vertexOf.push_back(v);
   }
-  for (std::size_t i = 0; i + 1 < k; ++i) points.push_back(child.vertices[cap[outline[i]].second]);
-  return points;
+  ConvexHull hull = convexHull(framed);
+  for (std::size_t i = 0; i < hull.mesh.vertices.size(); ++i) hull.mesh.vertices[i] = child.vertices[vertexOf[hull.source[i]]];
+  return std::move(hull.mesh);
 }
 
 CutChoice cutByLookahead(const TriMesh& mesh, const std::vector<Plane>& candidates, const CutSite& site,
@@ -217,7 +226,7 @@ CutChoice cutByLookahead(const TriMesh& mesh, const std::vector<Plane>& candidat
         SurfaceGraph childGraph(child);
         score[i] = std::max(score[i], measureConcavity(child, childGraph, co).concavity);
       } else {
-        const TriMesh hull = convexHull(lookaheadHullPoints(child, used[i])).mesh;
+        const TriMesh hull = lookaheadHull(child, used[i]);
         score[i] += signedVolume(hull) - signedVolume(child);
         // A cut for a hull standing off its piece is judged first by how many children still do.
         if (site.fromExcess)

@@ -27,38 +27,48 @@ struct PointHash {
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using HullMesh = CGAL::Surface_mesh<K::Point_3>;
 
-/// Sign of (a - b) . ((q - p) x (r - p)), exactly. A double evaluation decides when it is clear of
-/// its rounding error (below 10 eps of the terms' absolute sum; 1e-14 leaves a wide margin); else
-/// ring arithmetic on the doubles in CGAL's Mpzf, which is exact and, unlike the rationals of
-/// CGAL's own hull predicate, needs no gcd: pieces' cut faces make these near-zero cases common.
-CGAL::Sign sideSign(const K::Point_3& a, const K::Point_3& b, const K::Point_3& p, const K::Point_3& q,
-                    const K::Point_3& r) {
-  const double ux = q.x() - p.x(), uy = q.y() - p.y(), uz = q.z() - p.z();
-  const double vx = r.x() - p.x(), vy = r.y() - p.y(), vz = r.z() - p.z();
-  const double dx = a.x() - b.x(), dy = a.y() - b.y(), dz = a.z() - b.z();
-  const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
-  const double det = dx * nx + dy * ny + dz * nz;
-  const double terms = std::abs(dx) * (std::abs(uy * vz) + std::abs(uz * vy)) +
-                       std::abs(dy) * (std::abs(uz * vx) + std::abs(ux * vz)) +
-                       std::abs(dz) * (std::abs(ux * vy) + std::abs(uy * vx));
-  if (det > 1e-14 * terms) return CGAL::POSITIVE;
-  if (det < -1e-14 * terms) return CGAL::NEGATIVE;
-  if (terms == 0) return CGAL::ZERO;
-  using E = CGAL::Mpzf;
-  const E eux = E(q.x()) - E(p.x()), euy = E(q.y()) - E(p.y()), euz = E(q.z()) - E(p.z());
-  const E evx = E(r.x()) - E(p.x()), evy = E(r.y()) - E(p.y()), evz = E(r.z()) - E(p.z());
-  const E edx = E(a.x()) - E(b.x()), edy = E(a.y()) - E(b.y()), edz = E(a.z()) - E(b.z());
-  const E e = edx * (euy * evz - euz * evy) + edy * (euz * evx - eux * evz) + edz * (eux * evy - euy * evx);
-  return e.sign();
-}
+/// Sign of (a - b) . ((q - p) x (r - p)), exactly, for one facet p, q, r and many points. A double
+/// evaluation decides when it is clear of its rounding error (below 10 eps of the terms' absolute
+/// sum; 1e-14 leaves a wide margin); else ring arithmetic on the doubles in CGAL's Mpzf, which is
+/// exact and, unlike the rationals of CGAL's own hull predicate, needs no gcd: pieces' cut faces
+/// make these near-zero cases common.
+class FacetSide {
+ public:
+  FacetSide(const K::Point_3& p, const K::Point_3& q, const K::Point_3& r) : p_(p), q_(q), r_(r) {
+    const double ux = q.x() - p.x(), uy = q.y() - p.y(), uz = q.z() - p.z();
+    const double vx = r.x() - p.x(), vy = r.y() - p.y(), vz = r.z() - p.z();
+    n_[0] = uy * vz - uz * vy, n_[1] = uz * vx - ux * vz, n_[2] = ux * vy - uy * vx;
+    m_[0] = std::abs(uy * vz) + std::abs(uz * vy);
+    m_[1] = std::abs(uz * vx) + std::abs(ux * vz);
+    m_[2] = std::abs(ux * vy) + std::abs(uy * vx);
+  }
+  CGAL::Sign operator()(const K::Point_3& a, const K::Point_3& b) const {
+    const double dx = a.x() - b.x(), dy = a.y() - b.y(), dz = a.z() - b.z();
+    const double det = dx * n_[0] + dy * n_[1] + dz * n_[2];
+    const double terms = std::abs(dx) * m_[0] + std::abs(dy) * m_[1] + std::abs(dz) * m_[2];
+    if (det > 1e-14 * terms) return CGAL::POSITIVE;
+    if (det < -1e-14 * terms) return CGAL::NEGATIVE;
+    if (terms == 0) return CGAL::ZERO;
+    using E = CGAL::Mpzf;
+    const E eux = E(q_.x()) - E(p_.x()), euy = E(q_.y()) - E(p_.y()), euz = E(q_.z()) - E(p_.z());
+    const E evx = E(r_.x()) - E(p_.x()), evy = E(r_.y()) - E(p_.y()), evz = E(r_.z()) - E(p_.z());
+    const E edx = E(a.x()) - E(b.x()), edy = E(a.y()) - E(b.y()), edz = E(a.z()) - E(b.z());
+    const E e = edx * (euy * evz - euz * evy) + edy * (euz * evx - eux * evz) + edz * (eux * evy - euy * evx);
+    return e.sign();
+  }
+
+ private:
+  const K::Point_3 &p_, &q_, &r_;
+  double n_[3], m_[3];
+};
 
 /// CGAL's hull traits with the two predicates quickhull spends its time in (which side of a facet
-/// a point is on; which of two points is farther) evaluated by sideSign. Same answers, exactly.
+/// a point is on; which of two points is farther) evaluated by FacetSide. Same answers, exactly.
 struct HullTraits : CGAL::Convex_hull_traits_3<K, HullMesh, CGAL::Tag_true> {
   struct Less_signed_distance_to_plane_3 {
     using result_type = bool;
     bool operator()(const Plane_3& h, const Point_3& s, const Point_3& t) const {
-      return sideSign(s, t, h.p(), h.q(), h.r()) == CGAL::NEGATIVE;
+      return FacetSide(h.p(), h.q(), h.r())(s, t) == CGAL::NEGATIVE;
     }
   };
   Less_signed_distance_to_plane_3 less_signed_distance_to_plane_3_object() const { return {}; }
@@ -138,17 +148,18 @@ void dropInteriorPoints(std::vector<K::Point_3>& pts) {
 }  // namespace acd
 
 namespace CGAL::Convex_hull_3::internal {
-/// Quickhull's side-of-facet test for HullTraits (see sideSign).
+/// Quickhull's side-of-facet test for HullTraits (see FacetSide).
 template <>
 class Is_on_positive_side_of_plane_3<acd::HullTraits, boost::false_type> {
-  const acd::K::Point_3 &p, &q, &r;
+  const acd::K::Point_3& p;
+  acd::FacetSide side;
 
  public:
   using Protector = Protect_FPU_rounding<false>;
   Is_on_positive_side_of_plane_3(const acd::HullTraits&, const acd::K::Point_3& p_, const acd::K::Point_3& q_,
                                  const acd::K::Point_3& r_)
-      : p(p_), q(q_), r(r_) {}
-  bool operator()(const acd::K::Point_3& s) const { return acd::sideSign(s, p, p, q, r) == POSITIVE; }
+      : p(p_), side(p_, q_, r_) {}
+  bool operator()(const acd::K::Point_3& s) const { return side(s, p) == POSITIVE; }
 };
 }  // namespace CGAL::Convex_hull_3::internal
 

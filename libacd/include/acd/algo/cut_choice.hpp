@@ -59,9 +59,11 @@ CutChoice cutByFirstPlane(const TriMesh& mesh, const std::vector<Plane>& candida
 CutChoice cutByLookahead(const TriMesh& mesh, const std::vector<Plane>& candidates, const CutSite& site,
                          const ConcavityOptions& co, double tau);
 
-/// The points a child of a cut needs for its hull: its vertices off `plane` and the corners of the
-/// convex outline of those on it (within 1e-9). Same hull up to rounding, without the cap's
-/// interior points, which are coplanar only up to rounding and slow exact hull predicates down.
-std::vector<Vec3> lookaheadHullPoints(const TriMesh& child, const Plane& plane);
+/// The hull the lookahead scores a child of a cut by `plane` with: its vertices off the plane and
+/// the corners of the convex outline of those on it (within 1e-9), computed in the plane's frame
+/// with the cap at height exactly 0. The hull's vertices are the child's, in place; it is the
+/// child's convex hull up to rounding, found without the exact arithmetic that near-coplanar cap
+/// points cost.
+TriMesh lookaheadHull(const TriMesh& child, const Plane& plane);
 
 }  // namespace acd
