@@ -41,71 +41,90 @@ std::vector<std::string> splitList(const std::string& s) {
   return out;
 }
 
-}  // namespace
-
-int run(int argc, char** argv) {
-  CLI::App app{"PRM with samples biased toward the openings between the ACD components of the free space"};
+/// The command line: the scenario file and what overrides or adds to it.
+struct Args {
   std::string scenarioPath, samplerList, outputDir;
   int samples = 0, trials = 0, sweepTrials = 0;
   long long seed = 0;
   bool sweep = false, quiet = false, n90 = false, race = false, noFixed = false;
   int n90Start = 50, n90Max = 8000, n90Trials = 20, raceRuns = 20;
   double timeLimit = 30.0;
-  app.add_option("scenario", scenarioPath, "Scenario file (YAML, see docs/PLANNER.md)")->required();
-  app.add_option("-n,--samples", samples, "Sampled milestones per roadmap (overrides the scenario)");
-  app.add_option("-t,--trials", trials, "Seeded trials per sampler (overrides the scenario)");
-  app.add_option("-s,--samplers", samplerList, "Comma-separated: uniform,acd,gaussian,obstacle_based,bridge_test");
-  app.add_option("--seed", seed, "Scenario seed (overrides the scenario)");
-  app.add_option("-o,--output", outputDir, "Output folder (default: the scenario's 'output', else out/planner/<name>)");
-  app.add_flag("--sweep", sweep, "Also run every sample count of the scenario's 'sweep' (success-rate plot data)");
-  app.add_option("--sweep-trials", sweepTrials, "Trials per point of the sweep (overrides the scenario)");
-  app.add_flag("--n90", n90, "Also search, per sampler, the milestones needed for 90 % success (n90.csv)");
-  app.add_option("--n90-start", n90Start, "First N of the search (doubled from there; default 50)");
-  app.add_option("--n90-max", n90Max, "Largest N the search tries (default 8000)");
-  app.add_option("--n90-trials", n90Trials, "Trials per N of the search (default 20)");
-  app.add_flag("--race", race, "Also run OMPL's PRM, RRTConnect, KPIECE1 and PRM with the acd sampler against the clock (race.csv)");
-  app.add_option("--time-limit", timeLimit, "Seconds per run of --race (default 30)");
-  app.add_option("--runs", raceRuns, "Runs per planner of --race (default 20)");
-  app.add_flag("--no-fixed", noFixed, "Skip the fixed-N table (with --n90 or --race)");
-  app.add_flag("-q,--quiet", quiet, "No progress and no preprocessing report");
+};
+
+void addOptions(CLI::App& app, Args& a) {
+  app.add_option("scenario", a.scenarioPath, "Scenario file (YAML, see docs/PLANNER.md)")->required();
+  app.add_option("-n,--samples", a.samples, "Sampled milestones per roadmap (overrides the scenario)");
+  app.add_option("-t,--trials", a.trials, "Seeded trials per sampler (overrides the scenario)");
+  app.add_option("-s,--samplers", a.samplerList, "Comma-separated: uniform,acd,gaussian,obstacle_based,bridge_test");
+  app.add_option("--seed", a.seed, "Scenario seed (overrides the scenario)");
+  app.add_option("-o,--output", a.outputDir, "Output folder (default: the scenario's 'output', else out/planner/<name>)");
+  app.add_flag("--sweep", a.sweep, "Also run every sample count of the scenario's 'sweep' (success-rate plot data)");
+  app.add_option("--sweep-trials", a.sweepTrials, "Trials per point of the sweep (overrides the scenario)");
+  app.add_flag("--n90", a.n90, "Also search, per sampler, the milestones needed for 90 % success (n90.csv)");
+  app.add_option("--n90-start", a.n90Start, "First N of the search (doubled from there; default 50)");
+  app.add_option("--n90-max", a.n90Max, "Largest N the search tries (default 8000)");
+  app.add_option("--n90-trials", a.n90Trials, "Trials per N of the search (default 20)");
+  app.add_flag("--race", a.race, "Also run OMPL's PRM, RRTConnect, KPIECE1 and PRM with the acd sampler against the clock (race.csv)");
+  app.add_option("--time-limit", a.timeLimit, "Seconds per run of --race (default 30)");
+  app.add_option("--runs", a.raceRuns, "Runs per planner of --race (default 20)");
+  app.add_flag("--no-fixed", a.noFixed, "Skip the fixed-N table (with --n90 or --race)");
+  app.add_flag("-q,--quiet", a.quiet, "No progress and no preprocessing report");
+}
+
+/// The scenario file with the command line's overrides; throws ScenarioError for a bad file or option.
+planner::Scenario scenarioFor(const Args& a) {
+  planner::Scenario scenario = planner::loadScenario(a.scenarioPath);
+  if (a.samples < 0 || a.trials < 0 || a.sweepTrials < 0)
+    throw planner::ScenarioError("--samples, --trials and --sweep-trials must be positive");
+  if (a.n90Start <= 0 || a.n90Max < a.n90Start || a.n90Trials <= 0)
+    throw planner::ScenarioError("--n90-start and --n90-trials must be positive, --n90-max at least --n90-start");
+  if (!(a.timeLimit > 0) || a.raceRuns <= 0) throw planner::ScenarioError("--time-limit and --runs must be positive");
+  if (a.noFixed && !a.n90 && !a.race) throw planner::ScenarioError("--no-fixed needs --n90 or --race");
+  if (a.samples > 0) scenario.samples = a.samples;
+  if (a.trials > 0) scenario.trials = a.trials;
+  if (a.sweepTrials > 0) scenario.sweepTrials = a.sweepTrials;
+  if (a.seed != 0) {
+    if (a.seed < 0 || a.seed > 0xFFFFFFFFll) throw planner::ScenarioError("--seed must be in 1..4294967295");
+    scenario.seed = static_cast<unsigned>(a.seed);
+  }
+  if (!a.samplerList.empty()) {
+    scenario.samplers.clear();
+    for (const std::string& name : splitList(a.samplerList)) {
+      const auto& known = planner::knownSamplers();
+      if (std::find(known.begin(), known.end(), name) == known.end())
+        throw planner::ScenarioError("--samplers: unknown sampler '" + name + "'");
+      scenario.samplers.push_back(name);
+    }
+  }
+  if (!a.outputDir.empty()) scenario.outputDir = a.outputDir;
+  if (scenario.outputDir.empty()) scenario.outputDir = "out/planner/" + scenario.name;
+  return scenario;
+}
+
+}  // namespace
+
+int run(int argc, char** argv) {
+  CLI::App app{"PRM with samples biased toward the openings between the ACD components of the free space"};
+  Args args;
+  addOptions(app, args);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return appcli::usageExit(app.exit(e));  // --help is not an error
   }
+  const bool sweep = args.sweep, quiet = args.quiet, n90 = args.n90, race = args.race, noFixed = args.noFixed;
+  const int n90Start = args.n90Start, n90Max = args.n90Max, n90Trials = args.n90Trials, raceRuns = args.raceRuns;
+  const double timeLimit = args.timeLimit;
 
   ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
   planner::Scenario scenario;
   planner::Preprocessing pre;
   std::unique_ptr<planner::PlanningProblem> problem;
   try {
-    scenario = planner::loadScenario(scenarioPath);
-    if (samples < 0 || trials < 0 || sweepTrials < 0) throw planner::ScenarioError("--samples, --trials and --sweep-trials must be positive");
-    if (n90Start <= 0 || n90Max < n90Start || n90Trials <= 0)
-      throw planner::ScenarioError("--n90-start and --n90-trials must be positive, --n90-max at least --n90-start");
-    if (!(timeLimit > 0) || raceRuns <= 0) throw planner::ScenarioError("--time-limit and --runs must be positive");
-    if (noFixed && !n90 && !race) throw planner::ScenarioError("--no-fixed needs --n90 or --race");
-    if (samples > 0) scenario.samples = samples;
-    if (trials > 0) scenario.trials = trials;
-    if (sweepTrials > 0) scenario.sweepTrials = sweepTrials;
-    if (seed != 0) {
-      if (seed < 0 || seed > 0xFFFFFFFFll) throw planner::ScenarioError("--seed must be in 1..4294967295");
-      scenario.seed = static_cast<unsigned>(seed);
-    }
-    if (!samplerList.empty()) {
-      scenario.samplers.clear();
-      for (const std::string& name : splitList(samplerList)) {
-        const auto& known = planner::knownSamplers();
-        if (std::find(known.begin(), known.end(), name) == known.end())
-          throw planner::ScenarioError("--samplers: unknown sampler '" + name + "'");
-        scenario.samplers.push_back(name);
-      }
-    }
+    scenario = scenarioFor(args);
     // Every random stream of a trial has its own local seed (seeding.hpp); the global seed
     // covers anything else OMPL draws, and must be set before OMPL's first generator exists.
     ompl::RNG::setSeed(scenario.seed);
-    if (!outputDir.empty()) scenario.outputDir = outputDir;
-    if (scenario.outputDir.empty()) scenario.outputDir = "out/planner/" + scenario.name;
     pre = planner::preprocess(scenario);
     problem = std::make_unique<planner::PlanningProblem>(scenario, pre.freeSpace, pre.openings);
   } catch (const planner::ScenarioError& e) {

@@ -256,6 +256,38 @@ class Parser {
     if (root["name"]) s.name = scalar<std::string>(root["name"], "name");
     if (root["description"]) s.description = scalar<std::string>(root["description"], "description");
     if (root["expected"]) s.expected = scalar<std::string>(root["expected"], "expected");
+    readObstacles(root, s);
+    if (!root["robot"]) fail("missing key 'robot'");
+    s.robot = robot(root["robot"]);
+    readSpace(root, s);
+    if (root["wrap"]) {
+      const YAML::Node& n = root["wrap"];
+      checkKeys(n, "wrap", {"alpha", "offset"});
+      if (n["alpha"]) s.wrap.alpha = positive(n["alpha"], "wrap.alpha");
+      if (n["offset"]) s.wrap.offset = positive(n["offset"], "wrap.offset");
+    }
+    if (!root["start"]) fail("missing key 'start'");
+    if (!root["goal"]) fail("missing key 'goal'");
+    s.start = pose(root["start"], "start");
+    s.goal = pose(root["goal"], "goal");
+    if (s.robot.planar) {
+      for (const Pose* p : {&s.start, &s.goal}) {
+        const acd::Vec3 axis = p->orientation * acd::Vec3::UnitZ();
+        if (axis.z() < 1 - 1e-9) fail("planar robot: 'start' and 'goal' may only turn about z (use 'yaw_deg')");
+      }
+      if (std::abs(s.start.position.z() - s.goal.position.z()) > 1e-12)
+        fail("planar robot: 'start' and 'goal' must have the same z");
+    }
+    for (const auto& [p, name] : {std::pair<const Pose*, const char*>{&s.start, "start"}, {&s.goal, "goal"}})
+      if (((p->position - s.bounds.lo).array() < 0).any() || ((p->position - s.bounds.hi).array() > 0).any())
+        fail("'" + std::string(name) + "' position is outside the " + (root["volume"] ? "volume" : "workspace"));
+    readRuns(root, s);
+    return s;
+  }
+
+ private:
+  /// 'world' and 'obstacles' (not with 'free_space').
+  void readObstacles(const YAML::Node& root, Scenario& s) {
     if (root["free_space"] && (root["obstacles"] || root["world"])) fail("give either 'obstacles' (or 'world') or 'free_space', not both");
     if (root["world"]) {  // OMPL.app's environment: one mesh, closed or not
       const std::string file = scalar<std::string>(root["world"], "world");
@@ -281,8 +313,10 @@ class Parser {
         }
       }
     }
-    if (!root["robot"]) fail("missing key 'robot'");
-    s.robot = robot(root["robot"]);
+  }
+
+  /// 'free_space', or 'workspace' and 'volume' (or the environment's box grown by the robot's reach).
+  void readSpace(const YAML::Node& root, Scenario& s) {
     if (root["free_space"]) {
       s.freeSpace = closedFile(root["free_space"], "free_space");
       s.freeSpaceGiven = true;
@@ -312,27 +346,10 @@ class Parser {
     }
     if (((s.bounds.lo - s.workspace.lo).array() < 0).any() || ((s.bounds.hi - s.workspace.hi).array() > 0).any())
       fail("'volume' must lie inside 'workspace'");
-    if (root["wrap"]) {
-      const YAML::Node& n = root["wrap"];
-      checkKeys(n, "wrap", {"alpha", "offset"});
-      if (n["alpha"]) s.wrap.alpha = positive(n["alpha"], "wrap.alpha");
-      if (n["offset"]) s.wrap.offset = positive(n["offset"], "wrap.offset");
-    }
-    if (!root["start"]) fail("missing key 'start'");
-    if (!root["goal"]) fail("missing key 'goal'");
-    s.start = pose(root["start"], "start");
-    s.goal = pose(root["goal"], "goal");
-    if (s.robot.planar) {
-      for (const Pose* p : {&s.start, &s.goal}) {
-        const acd::Vec3 axis = p->orientation * acd::Vec3::UnitZ();
-        if (axis.z() < 1 - 1e-9) fail("planar robot: 'start' and 'goal' may only turn about z (use 'yaw_deg')");
-      }
-      if (std::abs(s.start.position.z() - s.goal.position.z()) > 1e-12)
-        fail("planar robot: 'start' and 'goal' must have the same z");
-    }
-    for (const auto& [p, name] : {std::pair<const Pose*, const char*>{&s.start, "start"}, {&s.goal, "goal"}})
-      if (((p->position - s.bounds.lo).array() < 0).any() || ((p->position - s.bounds.hi).array() > 0).any())
-        fail("'" + std::string(name) + "' position is outside the " + (root["volume"] ? "volume" : "workspace"));
+  }
+
+  /// The samplers, the counts, the PRM's and the acd sampler's settings, the seed and the output folder.
+  void readRuns(const YAML::Node& root, Scenario& s) {
     if (root["samplers"]) {
       const YAML::Node& list = root["samplers"];
       if (!list.IsSequence() || list.size() == 0) fail("'samplers' must be a non-empty list");
@@ -388,10 +405,8 @@ class Parser {
       s.seed = static_cast<unsigned>(seed);
     }
     if (root["output"]) s.outputDir = scalar<std::string>(root["output"], "output");
-    return s;
   }
 
- private:
   std::string source_;
   std::string baseDir_;
 };
