@@ -486,24 +486,6 @@ TEST_P(DecomposeCorpus, Invariants) {
     EXPECT_LE(rep.components, 3 * measured.at(c.model) / 2) << c.model << ": more parts than the bound";
 }
 
-TEST(SelfIntersections, CorpusMeshesThatPassThroughThemselvesAreFound) {
-  for (const auto& [model, expected] : std::vector<std::pair<std::string, bool>>{
-           {"cow", true}, {"camel", true}, {"elephant", false}, {"knot", false}}) {
-    const std::string path = corpus(model);
-    if (!std::ifstream(path)) GTEST_SKIP() << path << " not present (scripts/fetch_corpus.sh)";
-    const ReadResult r = readMesh(path);
-    ASSERT_TRUE(r.status.ok());
-    EXPECT_EQ(countSelfIntersections(r.mesh) > 0, expected) << model;
-  }
-  EXPECT_EQ(countSelfIntersections(shapes::torus(2.0, 0.5, 32, 16)), 0);
-  // Two boxes overlapping: their faces cross.
-  TriMesh two = shapes::box(Vec3(0, 0, 0), Vec3(2, 2, 2));
-  const TriMesh other = shapes::box(Vec3(1, 1, 1), Vec3(3, 3, 3));
-  for (const Face& f : other.faces) two.faces.push_back({f[0] + 8, f[1] + 8, f[2] + 8});
-  two.vertices.insert(two.vertices.end(), other.vertices.begin(), other.vertices.end());
-  EXPECT_GT(countSelfIntersections(two), 0);
-}
-
 INSTANTIATE_TEST_SUITE_P(
     Models, DecomposeCorpus,
     ::testing::ValuesIn([] {

@@ -1,10 +1,19 @@
 // countSelfIntersections (libacd/src/prepare/self_intersections.cpp) on constructions whose count
 // is known by hand: a triangle through another, neighbours that only share an edge or a vertex,
-// a thin triangle piercing two opposite faces of a box, overlapping boxes, and the limit.
+// a thin triangle piercing two opposite faces of a box, overlapping boxes, and the limit; and the
+// corpus models known to pass through themselves (cow, camel) or not.
 #include <acd/diagnosis.hpp>
+#include <acd/io.hpp>
 #include <acd/shapes.hpp>
 
 #include <gtest/gtest.h>
+
+#include "helpers.hpp"
+
+#include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 using namespace acd;
 
@@ -60,4 +69,22 @@ TEST(SelfIntersections, OverlappingBoxesCrossAndSeparateOnesDoNot) {
   const TriMesh a = shapes::box(Vec3(0, 0, 0), Vec3(2, 2, 2));
   EXPECT_GT(countSelfIntersections(joined(a, shapes::box(Vec3(1, 1, 1), Vec3(3, 3, 3)))), 0);
   EXPECT_EQ(countSelfIntersections(joined(a, shapes::box(Vec3(3, 0, 0), Vec3(4, 2, 2)))), 0);
+}
+
+TEST(SelfIntersections, CorpusMeshesThatPassThroughThemselvesAreFound) {
+  for (const auto& [model, expected] : std::vector<std::pair<std::string, bool>>{
+           {"cow", true}, {"camel", true}, {"elephant", false}, {"knot", false}}) {
+    const std::string path = acdtest::corpus(model);
+    if (!std::ifstream(path)) GTEST_SKIP() << path << " not present (scripts/fetch_corpus.sh)";
+    const ReadResult r = readMesh(path);
+    ASSERT_TRUE(r.status.ok());
+    EXPECT_EQ(countSelfIntersections(r.mesh) > 0, expected) << model;
+  }
+  EXPECT_EQ(countSelfIntersections(shapes::torus(2.0, 0.5, 32, 16)), 0);
+  // Two boxes overlapping: their faces cross.
+  TriMesh two = shapes::box(Vec3(0, 0, 0), Vec3(2, 2, 2));
+  const TriMesh other = shapes::box(Vec3(1, 1, 1), Vec3(3, 3, 3));
+  for (const Face& f : other.faces) two.faces.push_back({f[0] + 8, f[1] + 8, f[2] + 8});
+  two.vertices.insert(two.vertices.end(), other.vertices.begin(), other.vertices.end());
+  EXPECT_GT(countSelfIntersections(two), 0);
 }
