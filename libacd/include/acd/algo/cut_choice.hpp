@@ -53,9 +53,8 @@ CutChoice cutByFirstPlane(const TriMesh& mesh, const std::vector<Plane>& candida
 /// One step of lookahead: cut with every candidate (in parallel) and keep the one whose children
 /// are best approximated by their hulls (least hull volume beyond the children's own volume); after
 /// a stall, the one whose children are least concave; for a site from hull excess, first the one
-/// that leaves fewest children whose hull stands more than the limit off them. Scores within
-/// 1e-9 (of the piece's volume) tie, and ties go to the earlier candidate; an exact repeat of an
-/// earlier plane is not cut again.
+/// that leaves fewest children whose hull stands more than the limit off them. Ties go to the
+/// earlier candidate; an exact repeat of an earlier plane is not cut again.
 CutChoice cutByLookahead(const TriMesh& mesh, const std::vector<Plane>& candidates, const CutSite& site,
                          const ConcavityOptions& co, double tau);
 
