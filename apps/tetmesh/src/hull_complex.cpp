@@ -86,7 +86,7 @@ Vec3 projectOnto(const Vec3& p, const std::vector<const ContactPlane*>& planes) 
     std::vector<const ContactPlane*> trial = use;
     trial.push_back(q);
     Eigen::MatrixXd N(trial.size(), 3);
-    for (std::size_t r = 0; r < trial.size(); ++r) N.row(r) = trial[r]->n.transpose();
+    for (std::size_t r = 0; r < trial.size(); ++r) N.row(r) = trial[r]->normal.transpose();
     const Eigen::MatrixXd G = N * N.transpose();
     if (G.determinant() > 1e-6) use = trial;
     if (use.size() == 3) break;
@@ -95,7 +95,7 @@ Vec3 projectOnto(const Vec3& p, const std::vector<const ContactPlane*>& planes) 
   Eigen::MatrixXd N(use.size(), 3);
   Eigen::VectorXd r(use.size());
   for (std::size_t k = 0; k < use.size(); ++k) {
-    N.row(k) = use[k]->n.transpose();
+    N.row(k) = use[k]->normal.transpose();
     r(k) = use[k]->distance(p);
   }
   const Eigen::VectorXd lambda = (N * N.transpose()).ldlt().solve(r);
@@ -147,10 +147,10 @@ using Cdt = CGAL::Constrained_triangulation_plus_2<CGAL::Constrained_Delaunay_tr
 struct PlaneFrame {
   Vec3 origin, u, v;
   explicit PlaneFrame(const ContactPlane& p) {
-    origin = p.c * p.n;
-    const Vec3 a = std::abs(p.n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
-    u = p.n.cross(a).normalized();
-    v = p.n.cross(u);
+    origin = p.offset * p.normal;
+    const Vec3 a = std::abs(p.normal.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+    u = p.normal.cross(a).normalized();
+    v = p.normal.cross(u);
   }
   K::Point_2 to2(const Vec3& x) const { return {(x - origin).dot(u), (x - origin).dot(v)}; }
   Vec3 to3(const K::Point_2& q) const { return origin + q.x() * u + q.y() * v; }
@@ -245,7 +245,7 @@ void splitIntoTriangles(Plc& plc) {
     Vec3 normal = Vec3::Zero();
     for (int k = 0; k < m; ++k) normal += plc.points[f.polygon[k]].cross(plc.points[f.polygon[(k + 1) % m]]);
     ContactPlane plane{normal.normalized(), 0.0};
-    plane.c = plane.n.dot(plc.points[f.polygon[0]]);
+    plane.offset = plane.normal.dot(plc.points[f.polygon[0]]);
     const PlaneFrame frame(plane);
     Cdt cdt;
     std::vector<Cdt::Vertex_handle> vh;
@@ -373,7 +373,7 @@ void findContacts(ComplexBuild& b, const std::vector<acd::Box3>& boxes, HullComp
       int id = -1;
       double sideI = 1.0;
       for (int k = 0; k < static_cast<int>(planes.size()) && id < 0; ++k) {
-        const double dot = planes[k].n.dot(pl.n);
+        const double dot = planes[k].normal.dot(pl.normal);
         if (std::abs(dot) < 1.0 - 1e-6) continue;
         bool same = !touching.empty();
         for (const Vec3& p : touching) same = same && std::abs(planes[k].distance(p)) <= 10 * tol;

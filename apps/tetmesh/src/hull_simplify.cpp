@@ -97,18 +97,18 @@ SimplifiedHulls simplifyHulls(const std::vector<TriMesh>& hulls, const HullSimpl
     // Any offset between the two hulls separates them. An earlier plane of the same direction
     // whose offset lies in that gap is reused: two parallel planes a hair apart would leave a
     // sliver of a gap between regions.
-    const double lo = std::min(ct.offset, maxAlong(hulls[i].vertices, h.n)) - tol;
-    const double hi = std::max(ct.offset, minAlong(hulls[j].vertices, h.n)) + tol;
+    const double lo = std::min(ct.offset, maxAlong(hulls[i].vertices, h.normal)) - tol;
+    const double hi = std::max(ct.offset, minAlong(hulls[j].vertices, h.normal)) + tol;
     bool shared = false;
     for (const HalfSpace& p : planes) {
-      const double dot = p.n.dot(h.n);
-      if (dot > 1.0 - 1e-9 && p.c >= lo && p.c <= hi) h = p, shared = true;
-      if (dot < -1.0 + 1e-9 && -p.c >= lo && -p.c <= hi) h = {-p.n, -p.c}, shared = true;
+      const double dot = p.normal.dot(h.normal);
+      if (dot > 1.0 - 1e-9 && p.offset >= lo && p.offset <= hi) h = p, shared = true;
+      if (dot < -1.0 + 1e-9 && -p.offset >= lo && -p.offset <= hi) h = {-p.normal, -p.offset}, shared = true;
       if (shared) break;
     }
     if (!shared) planes.push_back(h);
     setup[i].keep.push_back(h);
-    setup[j].keep.push_back({-h.n, -h.c});
+    setup[j].keep.push_back({-h.normal, -h.offset});
   };
   for (int i = 0; i < n; ++i)
     for (int j = i + 1; j < n; ++j) {

@@ -32,6 +32,7 @@
 #include <acd/mass_properties.hpp>
 #include <acd/mesh.hpp>
 #include <acd/normalize.hpp>
+#include <acd/plane.hpp>
 #include <acd/post_passes.hpp>
 #include <acd/repair.hpp>
 #include <acd/report.hpp>

@@ -4,17 +4,11 @@
 #pragma once
 
 #include <acd/mesh.hpp>
+#include <acd/plane.hpp>
 
 #include <vector>
 
 namespace acd {
-
-/// The half-space n . x <= c (|n| = 1).
-struct HalfSpace {
-  Vec3 n = Vec3::UnitZ();
-  double c = 0.0;
-  double distance(const Vec3& p) const { return n.dot(p) - c; }
-};
 
 class ConvexPolytope {
  public:

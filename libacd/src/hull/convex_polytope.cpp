@@ -71,7 +71,7 @@ ConvexPolytope ConvexPolytope::clipped(const HalfSpace& h) const {
     }
     dropRepeats(kept, eps_);
     if (kept.size() < 3 || !(areaVector(kept).norm() > eps_ * eps_)) continue;
-    if (f.normal.dot(h.n) > 1.0 - 1e-12) {
+    if (f.normal.dot(h.normal) > 1.0 - 1e-12) {
       bool onPlane = true;
       for (const Vec3& p : kept) onPlane = onPlane && std::abs(h.distance(p)) <= eps_;
       capExists = capExists || onPlane;
@@ -83,13 +83,13 @@ ConvexPolytope ConvexPolytope::clipped(const HalfSpace& h) const {
   Vec3 centre = Vec3::Zero();
   for (const Vec3& p : cap) centre += p;
   centre /= static_cast<double>(cap.size());
-  const Vec3 u = (std::abs(h.n.x()) < 0.9 ? h.n.cross(Vec3::UnitX()) : h.n.cross(Vec3::UnitY())).normalized();
-  const Vec3 v = h.n.cross(u);
+  const Vec3 u = (std::abs(h.normal.x()) < 0.9 ? h.normal.cross(Vec3::UnitX()) : h.normal.cross(Vec3::UnitY())).normalized();
+  const Vec3 v = h.normal.cross(u);
   std::sort(cap.begin(), cap.end(), [&](const Vec3& a, const Vec3& b) {
     return std::atan2((a - centre).dot(v), (a - centre).dot(u)) < std::atan2((b - centre).dot(v), (b - centre).dot(u));
   });
   dropRepeats(cap, eps_);
-  if (cap.size() >= 3 && areaVector(cap).norm() > eps_ * eps_) out.faces_.push_back({std::move(cap), h.n});
+  if (cap.size() >= 3 && areaVector(cap).norm() > eps_ * eps_) out.faces_.push_back({std::move(cap), h.normal});
   return out;
 }
 

@@ -24,7 +24,7 @@ bool HullSet::add(const TriMesh& convex) {
     for (const Vec3& v : convex.vertices) d = std::max(d, n.dot(v));
     bool duplicate = false;  // coplanar triangles of one facet give one plane
     for (const HalfSpace& p : facets)
-      if (p.n.x() * n.x() + p.n.y() * n.y() + p.n.z() * n.z() > 1 - 1e-12 && std::abs(p.c - d) <= slack_) {
+      if (p.normal.x() * n.x() + p.normal.y() * n.y() + p.normal.z() * n.z() > 1 - 1e-12 && std::abs(p.offset - d) <= slack_) {
         duplicate = true;
         break;
       }
@@ -53,7 +53,7 @@ void HullSet::add(const Box3& box, const std::vector<HalfSpace>& facets) {
 bool HullSet::contains(int h, const Vec3& p) const {
   for (int k = first_[h], e = first_[h + 1]; k < e; ++k) {
     const HalfSpace& q = planes_[k];
-    if (q.n.x() * p.x() + q.n.y() * p.y() + q.n.z() * p.z() > q.c + slack_) return false;
+    if (q.normal.x() * p.x() + q.normal.y() * p.y() + q.normal.z() * p.z() > q.offset + slack_) return false;
   }
   return true;
 }
@@ -104,16 +104,16 @@ void HullSet::buildIndex(const Box3& box, std::size_t targetCells, tbb::task_are
               crossing.clear();
               for (int k = first_[h]; k < first_[h + 1] && !excluded; ++k) {
                 const HalfSpace& q = planes_[k];
-                const double mn = (q.n.x() > 0 ? q.n.x() * clo.x() : q.n.x() * chi.x()) +
-                                  (q.n.y() > 0 ? q.n.y() * clo.y() : q.n.y() * chi.y()) +
-                                  (q.n.z() > 0 ? q.n.z() * clo.z() : q.n.z() * chi.z());
-                const double mx = (q.n.x() > 0 ? q.n.x() * chi.x() : q.n.x() * clo.x()) +
-                                  (q.n.y() > 0 ? q.n.y() * chi.y() : q.n.y() * clo.y()) +
-                                  (q.n.z() > 0 ? q.n.z() * chi.z() : q.n.z() * clo.z());
-                if (mn - tol > q.c + slack_)
+                const double mn = (q.normal.x() > 0 ? q.normal.x() * clo.x() : q.normal.x() * chi.x()) +
+                                  (q.normal.y() > 0 ? q.normal.y() * clo.y() : q.normal.y() * chi.y()) +
+                                  (q.normal.z() > 0 ? q.normal.z() * clo.z() : q.normal.z() * chi.z());
+                const double mx = (q.normal.x() > 0 ? q.normal.x() * chi.x() : q.normal.x() * clo.x()) +
+                                  (q.normal.y() > 0 ? q.normal.y() * chi.y() : q.normal.y() * clo.y()) +
+                                  (q.normal.z() > 0 ? q.normal.z() * chi.z() : q.normal.z() * clo.z());
+                if (mn - tol > q.offset + slack_)
                   excluded = true;  // no point of the cell passes this plane
-                else if (mx + tol > q.c + slack_)  // may reject some point of the cell
-                  crossing.emplace_back((mx - q.c) / std::max(mx - mn, 1e-300), static_cast<std::uint32_t>(k));
+                else if (mx + tol > q.offset + slack_)  // may reject some point of the cell
+                  crossing.emplace_back((mx - q.offset) / std::max(mx - mn, 1e-300), static_cast<std::uint32_t>(k));
               }
               if (excluded) continue;
               if (crossing.empty()) {
@@ -127,7 +127,7 @@ void HullSet::buildIndex(const Box3& box, std::size_t targetCells, tbb::task_are
               s.slots.push_back({static_cast<double>(crossing.size()), 0.0, 0.0, 0.0});
               for (const auto& [share, k] : crossing) {
                 const HalfSpace& q = planes_[k];
-                s.slots.push_back({q.n.x(), q.n.y(), q.n.z(), q.c});
+                s.slots.push_back({q.normal.x(), q.normal.y(), q.normal.z(), q.offset});
               }
               ++s.runs;
             }

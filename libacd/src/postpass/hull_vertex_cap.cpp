@@ -51,9 +51,9 @@ ConvexPolytope enclosedBy(const std::vector<Vec3>& pts, const std::vector<Vec3>&
     for (std::size_t b = a + 1; b < planes.size(); ++b)
       for (std::size_t c = b + 1; c < planes.size(); ++c) {
         Eigen::Matrix3d m;
-        m << planes[a].n.transpose(), planes[b].n.transpose(), planes[c].n.transpose();
+        m << planes[a].normal.transpose(), planes[b].normal.transpose(), planes[c].normal.transpose();
         if (std::abs(m.determinant()) < 1e-9) continue;
-        const Vec3 x = m.partialPivLu().solve(Vec3(planes[a].c, planes[b].c, planes[c].c));
+        const Vec3 x = m.partialPivLu().solve(Vec3(planes[a].offset, planes[b].offset, planes[c].offset));
         bool inside = true;
         for (const HalfSpace& h : planes) inside = inside && h.distance(x) <= 1e-9 * (1.0 + x.norm());
         if (inside) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x), ++corners;

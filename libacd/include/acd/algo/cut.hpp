@@ -2,20 +2,12 @@
 #pragma once
 
 #include <acd/mesh.hpp>
+#include <acd/plane.hpp>
 
 #include <string>
 #include <vector>
 
 namespace acd {
-
-/// The plane normal . x = offset; `normal` need not be unit length.
-struct Plane {
-  Vec3 normal = Vec3::UnitZ();
-  double offset = 0.0;
-
-  double signedDistance(const Vec3& p) const { return (normal.dot(p) - offset) / normal.norm(); }
-  static Plane through(const Vec3& point, const Vec3& normal) { return {normal, normal.dot(point)}; }
-};
 
 struct CutResult {
   bool ok = false;
