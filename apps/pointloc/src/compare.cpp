@@ -21,7 +21,7 @@ class Timer {
   /// Times `test` on the first k points in `arena`.
   template <class Test>
   Method timeOn(Method m, tbb::task_arena& a, const Test& test) {
-    const PointStream& points = *run_.points;
+    const acd::BoxPointStream& points = *run_.points;
     for (int r = 0; r < run_.p.repeat; ++r) {
       const auto t = Clock::now();
       const bool alone = a.max_concurrency() == 1;

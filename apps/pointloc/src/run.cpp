@@ -78,7 +78,7 @@ int decomposeAndIndex(Run& run) {
 }
 
 int locateAll(Run& run) {
-  const PointStream& points = *run.points;
+  const acd::BoxPointStream& points = *run.points;
   for (int r = 0; r < run.p.repeat; ++r) {
     const auto tLoc = Clock::now();
     const double cpuLoc = cpuNow(run.usedThreads == 1);
@@ -100,7 +100,7 @@ int locateAll(Run& run) {
 }
 
 void measureErrors(Run& run) {
-  const PointStream& points = *run.points;
+  const acd::BoxPointStream& points = *run.points;
   const std::uint64_t samples = run.p.exactSamples;
   const auto tExact = Clock::now();
   const acd::InsideTest& exact = run.exact.emplace(run.mesh);
@@ -146,7 +146,7 @@ void measureErrors(Run& run) {
 
 int dumpPoints(const Run& run) {
   if (run.p.dumpPath.empty()) return kOk;
-  const PointStream& points = *run.points;
+  const acd::BoxPointStream& points = *run.points;
   std::ofstream f(run.p.dumpPath);
   f << "x,y,z,hulls,direct,exact\n";
   char line[160];

@@ -5,7 +5,7 @@
 
 #include "blocks.hpp"
 #include "parameters.hpp"
-#include "point_stream.hpp"
+#include <acd/random.hpp>
 
 #include <acd/algo/hull_set.hpp>
 #include <acd/decompose.hpp>
@@ -38,7 +38,7 @@ struct Run {
   acd::HullSet hulls{0.0};
   std::vector<int> hullComponent;  // hull index -> component index
   int unresolved = 0;
-  std::optional<PointStream> points;
+  std::optional<acd::BoxPointStream> points;
   std::optional<tbb::task_arena> arena;
   int usedThreads = 1;
   double indexSeconds = 0;

@@ -1,5 +1,7 @@
 #include "surface_embedding.hpp"
 
+#include <acd/algo/closest_point.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -9,32 +11,6 @@
 namespace tetmesh {
 
 namespace {
-
-/// Closest point to p on the segment ab.
-Vec3 closestOnSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const Vec3 ab = b - a;
-  const double len2 = ab.squaredNorm();
-  if (!(len2 > 0)) return a;
-  const double t = std::clamp((p - a).dot(ab) / len2, 0.0, 1.0);
-  return a + t * ab;
-}
-
-/// Closest point to p on the triangle abc: the projection on its plane when that falls inside,
-/// else the closest point on one of its edges.
-Vec3 closestOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 n = (b - a).cross(c - a);
-  const double n2 = n.squaredNorm();
-  if (n2 > 0) {
-    const Vec3 q = p - ((p - a).dot(n) / n2) * n;
-    // Signed areas of the sub-triangles opposite each corner, in units of the full area.
-    const double u = (c - b).cross(q - b).dot(n), v = (a - c).cross(q - c).dot(n), w = (b - a).cross(q - a).dot(n);
-    if (u >= 0 && v >= 0 && w >= 0) return q;
-  }
-  Vec3 best = closestOnSegment(p, a, b);
-  for (const Vec3& e : {closestOnSegment(p, b, c), closestOnSegment(p, c, a)})
-    if ((e - p).squaredNorm() < (best - p).squaredNorm()) best = e;
-  return best;
-}
 
 /// Uniform grid over the tets: each cell lists the tets whose bounding box meets it.
 class TetGrid {
@@ -200,8 +176,8 @@ std::array<double, 4> barycentric(const Vec3& p, const Vec3& a, const Vec3& b, c
 Vec3 closestPointInTet(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   const auto w = barycentric(p, a, b, c, d);
   if (*std::min_element(w.begin(), w.end()) >= 0) return p;
-  Vec3 best = closestOnTriangle(p, b, c, d);
-  for (const Vec3& q : {closestOnTriangle(p, a, c, d), closestOnTriangle(p, a, b, d), closestOnTriangle(p, a, b, c)})
+  Vec3 best = acd::closestPointOnTriangle(p, b, c, d);
+  for (const Vec3& q : {acd::closestPointOnTriangle(p, a, c, d), acd::closestPointOnTriangle(p, a, b, d), acd::closestPointOnTriangle(p, a, b, c)})
     if ((q - p).squaredNorm() < (best - p).squaredNorm()) best = q;
   return best;
 }

@@ -48,14 +48,7 @@ constexpr std::size_t kUnionCells = std::size_t(1) << 15;
 
 // ---------------------------------------------------------------- random numbers
 
-/// Counter-based uniform numbers in [0, 1): value k of sample i depends only on (seed, stream, i, k).
-struct Stream {
-  std::uint64_t key;
-  Stream(std::uint64_t seed, std::uint64_t stream) : key(mix64(mix64(seed) ^ (stream * 0xD1B54A32D192ED03ull))) {}
-  double uniform(std::uint64_t i, unsigned k) const {
-    return unitInterval(mix64(key ^ mix64(i * 4 + k)));
-  }
-};
+using Stream = UniformStream;  // acd/random.hpp
 
 // ---------------------------------------------------------------- convex hulls
 
