@@ -218,6 +218,18 @@ class MeshIndex {
   std::vector<Node> nodes_;
 };
 
+/// n points uniform in the cube [-1, 1]^3 (or, with `ball`, in the unit ball), from `seed`.
+inline std::vector<Vec3> randomPoints(int n, std::uint64_t seed, bool ball = false) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> uni(-1.0, 1.0);
+  std::vector<Vec3> p;
+  while (static_cast<int>(p.size()) < n) {
+    const Vec3 q(uni(rng), uni(rng), uni(rng));
+    if (!ball || q.norm() <= 1.0) p.push_back(q);
+  }
+  return p;
+}
+
 /// Uniform random points on the surface (area-weighted).
 inline std::vector<Vec3> sampleSurface(const TriMesh& mesh, int count, std::mt19937_64& rng) {
   std::vector<double> cumulative;

@@ -26,16 +26,6 @@ using acdtest::corpus;
 
 namespace {
 
-TriMesh joined(const std::vector<TriMesh>& parts) {
-  TriMesh out;
-  for (const TriMesh& p : parts) {
-    const int base = static_cast<int>(out.vertices.size());
-    out.vertices.insert(out.vertices.end(), p.vertices.begin(), p.vertices.end());
-    for (const Face& f : p.faces) out.faces.push_back({f[0] + base, f[1] + base, f[2] + base});
-  }
-  return out;
-}
-
 /// Largest distance of a piece vertex in front of one of the piece's face planes (<= 0: convex).
 double convexityViolation(const TriMesh& piece) {
   double worst = -std::numeric_limits<double>::infinity();
@@ -186,7 +176,7 @@ TEST(ExactSolid, NotchedBoxCoveredOnce) {
 TEST(ExactSolid, SeparateSolidsDecomposedEach) {
   TriMesh second = shapes::lShape();
   for (Vec3& v : second.vertices) v += Vec3(10, 0, 0);
-  const TriMesh two = joined({shapes::lShape(), second});
+  const TriMesh two = concatenate({shapes::lShape(), second});
   const ExactDecomposition d = solidECD(two);
   ASSERT_TRUE(d.status.ok()) << d.status.message;
   EXPECT_TRUE(d.finished);
@@ -226,7 +216,7 @@ TEST(ExactSolid, OpenMeshFilledOrRefused) {
 
 TEST(ExactSolid, RefusesSelfIntersectingInput) {
   const TriMesh overlapping =
-      joined({shapes::box(Vec3(0, 0, 0), Vec3(2, 2, 2)), shapes::box(Vec3(1, 1, 1), Vec3(3, 3, 3))});
+      concatenate({shapes::box(Vec3(0, 0, 0), Vec3(2, 2, 2)), shapes::box(Vec3(1, 1, 1), Vec3(3, 3, 3))});
   const ExactDecomposition d = solidECD(overlapping);
   EXPECT_FALSE(d.status.ok());
   EXPECT_NE(d.status.message.find("intersects itself"), std::string::npos) << d.status.message;
@@ -238,7 +228,7 @@ TEST(ExactSolid, ListenerHearsStagesPiecesAndCounts) {
   TriMesh second = shapes::lShape();
   for (Vec3& v : second.vertices) v += Vec3(10, 0, 0);
   std::vector<TriMesh> solids;
-  const ExactDecomposition prepared = prepareExactSolids(joined({shapes::lShape(), second}), {}, solids);
+  const ExactDecomposition prepared = prepareExactSolids(concatenate({shapes::lShape(), second}), {}, solids);
   ASSERT_TRUE(prepared.status.ok()) << prepared.status.message;
   ASSERT_EQ(solids.size(), 2u);
   Recorder all;

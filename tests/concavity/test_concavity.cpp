@@ -17,22 +17,13 @@
 #include <string>
 
 using namespace acd;
+using acdtest::randomPoints;
 using acdtest::corpus;
 using acdtest::normalised;
 using acdtest::measure;
 
 namespace {
 
-std::vector<Vec3> randomPoints(int n, std::uint64_t seed, bool ball = false) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> uni(-1.0, 1.0);
-  std::vector<Vec3> p;
-  while (static_cast<int>(p.size()) < n) {
-    const Vec3 q(uni(rng), uni(rng), uni(rng));
-    if (!ball || q.norm() <= 1.0) p.push_back(q);
-  }
-  return p;
-}
 
 
 }  // namespace

@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include "helpers.hpp"
+
 #include <array>
 #include <cmath>
 #include <map>
@@ -18,19 +20,10 @@
 #include <string>
 
 using namespace acd;
+using acdtest::randomPoints;
 
 namespace {
 
-std::vector<Vec3> randomPoints(int n, std::uint64_t seed, bool ball = false) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> uni(-1.0, 1.0);
-  std::vector<Vec3> p;
-  while (static_cast<int>(p.size()) < n) {
-    const Vec3 q(uni(rng), uni(rng), uni(rng));
-    if (!ball || q.norm() <= 1.0) p.push_back(q);
-  }
-  return p;
-}
 
 void expectConvexHullOf(const ConvexHull& hull, const std::vector<Vec3>& points) {
   ASSERT_FALSE(hull.degenerate);
@@ -70,30 +63,45 @@ std::set<int> stockHullVertices(const std::vector<Vec3>& points) {
   return out;
 }
 
-/// A sphere cut by an oblique plane: the vertices below it and the points where its edges cross
-/// it, as a cut piece's vertices are (coplanar only up to rounding), plus points inside.
+/// A sphere of random centre and radius cut by a random oblique plane (offset from the centre by
+/// up to `spread`): the vertices below the plane and the points where edges cross it, as a cut
+/// piece's vertices are (coplanar only up to rounding).
+struct CutSphere {
+  TriMesh sphere;
+  Vec3 normal;
+  double offset;
+  std::vector<Vec3> points;
+};
+
+CutSphere cutSphere(std::mt19937_64& rng, int level, double spread) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  CutSphere c;
+  c.sphere = shapes::icosphere(Vec3(u(rng), u(rng), u(rng)), 1.0 + 0.5 * u(rng), level);
+  c.normal = Vec3(u(rng), u(rng), u(rng)).normalized();
+  c.offset = c.normal.dot(boundingBox(c.sphere).center()) + spread * u(rng);
+  for (const Vec3& v : c.sphere.vertices)
+    if (c.normal.dot(v) <= c.offset) c.points.push_back(v);
+  for (const Face& f : c.sphere.faces)
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 &a = c.sphere.vertices[f[k]], &b = c.sphere.vertices[f[(k + 1) % 3]];
+      const double da = c.normal.dot(a) - c.offset, db = c.normal.dot(b) - c.offset;
+      if (da < 0 && db > 0) c.points.push_back(a + da / (da - db) * (b - a));
+    }
+  return c;
+}
+
+/// A cut sphere's points plus `inside` points inside it and below the plane.
 std::vector<Vec3> cutSpherePoints(std::uint64_t seed, int level, int inside) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  const TriMesh sphere = shapes::icosphere(Vec3(u(rng), u(rng), u(rng)), 1.0 + 0.5 * u(rng), level);
-  const Vec3 n = Vec3(u(rng), u(rng), u(rng)).normalized();
-  const double offset = n.dot(boundingBox(sphere).center()) + 0.3 * u(rng);
-  std::vector<Vec3> points;
-  for (const Vec3& v : sphere.vertices)
-    if (n.dot(v) <= offset) points.push_back(v);
-  for (const Face& f : sphere.faces)
-    for (int k = 0; k < 3; ++k) {
-      const Vec3 &a = sphere.vertices[f[k]], &b = sphere.vertices[f[(k + 1) % 3]];
-      const double da = n.dot(a) - offset, db = n.dot(b) - offset;
-      if (da < 0 && db > 0) points.push_back(a + da / (da - db) * (b - a));
-    }
-  const Vec3 centre = boundingBox(sphere).center();
-  const double r = 0.5 * boundingBox(sphere).size().x();
+  CutSphere c = cutSphere(rng, level, 0.3);
+  const Vec3 centre = boundingBox(c.sphere).center();
+  const double r = 0.5 * boundingBox(c.sphere).size().x();
   for (int i = 0; i < inside; ++i) {
     const Vec3 p = centre + 0.9 * r * Vec3(u(rng), u(rng), u(rng)) / std::sqrt(3.0);
-    if (n.dot(p) < offset) points.push_back(p);
+    if (c.normal.dot(p) < c.offset) c.points.push_back(p);
   }
-  return points;
+  return c.points;
 }
 
 }  // namespace
@@ -159,22 +167,10 @@ TEST(Hull, GridPointsWithCollinearAndCoplanarPointsGiveNoDegenerateFacets) {
 TEST(Hull, PointsOfACutSectionGiveFacetPlanesThatBoundThePoints) {
   // Spheres cut obliquely: each section's points are coplanar up to rounding.
   std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (int level : {2, 3, 4})
     for (int trial = 0; trial < 20; ++trial) {
       SCOPED_TRACE("level " + std::to_string(level) + " trial " + std::to_string(trial));
-      const TriMesh sphere = shapes::icosphere(Vec3(u(rng), u(rng), u(rng)), 1.0 + 0.5 * u(rng), level);
-      const Vec3 n = Vec3(u(rng), u(rng), u(rng)).normalized();
-      const double offset = n.dot(boundingBox(sphere).center()) + 0.5 * u(rng);
-      std::vector<Vec3> points;
-      for (const Vec3& v : sphere.vertices)
-        if (n.dot(v) <= offset) points.push_back(v);
-      for (const Face& f : sphere.faces)
-        for (int k = 0; k < 3; ++k) {
-          const Vec3 &a = sphere.vertices[f[k]], &b = sphere.vertices[f[(k + 1) % 3]];
-          const double da = n.dot(a) - offset, db = n.dot(b) - offset;
-          if (da < 0 && db > 0) points.push_back(a + da / (da - db) * (b - a));
-        }
+      const std::vector<Vec3> points = cutSphere(rng, level, 0.5).points;
       const ConvexHull hull = convexHull(points);
       expectConvexHullOf(hull, points);
       int slivers = 0;

@@ -19,14 +19,6 @@ using namespace acd;
 
 namespace {
 
-TriMesh joined(const TriMesh& a, const TriMesh& b) {
-  TriMesh out = a;
-  const int base = static_cast<int>(a.vertices.size());
-  out.vertices.insert(out.vertices.end(), b.vertices.begin(), b.vertices.end());
-  for (const Face& f : b.faces) out.faces.push_back({f[0] + base, f[1] + base, f[2] + base});
-  return out;
-}
-
 TriMesh triangle(const Vec3& a, const Vec3& b, const Vec3& c) {
   TriMesh t;
   t.vertices = {a, b, c};
@@ -39,10 +31,10 @@ TriMesh triangle(const Vec3& a, const Vec3& b, const Vec3& c) {
 TEST(SelfIntersections, CrossingTrianglesAreOnePair) {
   const TriMesh flat = triangle(Vec3(0, 0, 0), Vec3(4, 0, 0), Vec3(0, 4, 0));
   const TriMesh through = triangle(Vec3(1, 1, -1), Vec3(1.2, 1, -1), Vec3(1, 1.2, 1));
-  EXPECT_EQ(countSelfIntersections(joined(flat, through)), 1);
+  EXPECT_EQ(countSelfIntersections(concatenate({flat, through})), 1);
   // Beside it, not through it: none.
   const TriMesh beside = triangle(Vec3(5, 5, -1), Vec3(5.2, 5, -1), Vec3(5, 5.2, 1));
-  EXPECT_EQ(countSelfIntersections(joined(flat, beside)), 0);
+  EXPECT_EQ(countSelfIntersections(concatenate({flat, beside})), 0);
 }
 
 // Faces meeting along a shared edge or at a shared vertex do not count.
@@ -61,14 +53,14 @@ TEST(SelfIntersections, SharedEdgesAndVerticesDoNotCount) {
 TEST(SelfIntersections, ThinTriangleThroughABoxCrossesTwoFaces) {
   const TriMesh box = shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1));
   const TriMesh stick = triangle(Vec3(0.3, 0.6, -1), Vec3(0.31, 0.6, -1), Vec3(0.3, 0.61, 2));
-  EXPECT_EQ(countSelfIntersections(joined(box, stick)), 2);
-  EXPECT_EQ(countSelfIntersections(joined(box, stick), 1), 1);  // the limit stops the count
+  EXPECT_EQ(countSelfIntersections(concatenate({box, stick})), 2);
+  EXPECT_EQ(countSelfIntersections(concatenate({box, stick}), 1), 1);  // the limit stops the count
 }
 
 TEST(SelfIntersections, OverlappingBoxesCrossAndSeparateOnesDoNot) {
   const TriMesh a = shapes::box(Vec3(0, 0, 0), Vec3(2, 2, 2));
-  EXPECT_GT(countSelfIntersections(joined(a, shapes::box(Vec3(1, 1, 1), Vec3(3, 3, 3)))), 0);
-  EXPECT_EQ(countSelfIntersections(joined(a, shapes::box(Vec3(3, 0, 0), Vec3(4, 2, 2)))), 0);
+  EXPECT_GT(countSelfIntersections(concatenate({a, shapes::box(Vec3(1, 1, 1), Vec3(3, 3, 3))})), 0);
+  EXPECT_EQ(countSelfIntersections(concatenate({a, shapes::box(Vec3(3, 0, 0), Vec3(4, 2, 2))})), 0);
 }
 
 TEST(SelfIntersections, CorpusMeshesThatPassThroughThemselvesAreFound) {

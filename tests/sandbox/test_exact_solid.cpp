@@ -18,16 +18,6 @@ using namespace acd;
 
 namespace {
 
-TriMesh joined(const std::vector<TriMesh>& parts) {
-  TriMesh out;
-  for (const TriMesh& p : parts) {
-    const int base = static_cast<int>(out.vertices.size());
-    out.vertices.insert(out.vertices.end(), p.vertices.begin(), p.vertices.end());
-    for (const Face& f : p.faces) out.faces.push_back({f[0] + base, f[1] + base, f[2] + base});
-  }
-  return out;
-}
-
 struct Collect : ExactListener {
   std::vector<std::vector<Vec3>> pieces;
   void stage(ExactStage, std::size_t) override {}
@@ -93,7 +83,7 @@ TEST(ExactSolidCapped, FinishedSolidsKeepTheirPieces) {
   ExactOptions o;
   o.timeLimitSeconds = 2.0;
   o.progress = [&](const std::string& stage, double) { stages.push_back(stage); };
-  const ExactDecomposition d = acdsandbox::exactSolidDecomposition(joined({shapes::lShape(), torus}), o);
+  const ExactDecomposition d = acdsandbox::exactSolidDecomposition(concatenate({shapes::lShape(), torus}), o);
   ASSERT_TRUE(d.status.ok()) << d.status.message;
   ASSERT_EQ(d.solids, 2u);
   EXPECT_FALSE(d.finished);

@@ -32,7 +32,7 @@ int loopOrder(const ConcavityMap& map, const Knot& k, int pocket) {
 }
 
 /// Eq. 4's weight of the edge over `slot` in the pocket of `bridge`, the curvature looked up in
-/// slotCurvatures (same value as cutEdgeWeight's, computed once per piece, not once per relaxation).
+/// slotCurvatures (computed once per piece, not once per relaxation).
 EdgeWeight pocketCutWeight(const TriMesh& mesh, const SurfaceGraph& graph, const Bridge& bridge,
                            const std::vector<double>& curvature) {
   return [&mesh, &graph, &bridge, &curvature](int a, int b, int slot) {
@@ -215,14 +215,6 @@ std::vector<double> slotCurvatures(const TriMesh& mesh, const SurfaceGraph& grap
     for (int slot = graph.begin(a); slot < graph.end(a); ++slot)
       curvature[slot] = concaveDihedral(mesh, graph, a, graph.neighbour(slot));
   return curvature;
-}
-
-double cutEdgeWeight(const TriMesh& mesh, const SurfaceGraph& graph, const Bridge& bridge, int a, int b,
-                     double length) {
-  // omega = length / concavity, gamma = curvature; the offsets (in the inline overload) keep
-  // flat, convex or zero-concavity edges usable but expensive.
-  return cutEdgeWeight(bridge.concavityOf(mesh.vertices[a]), bridge.concavityOf(mesh.vertices[b]),
-                       concaveDihedral(mesh, graph, a, b), length);
 }
 
 GlobalCut findGlobalCut(const TriMesh& mesh, const SurfaceGraph& graph, const ConcavityMap& map,

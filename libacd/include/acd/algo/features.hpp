@@ -47,17 +47,13 @@ struct GlobalCut {
 /// Knots of every boundary of pocket `bridge`.
 std::vector<Knot> pocketKnots(const TriMesh& mesh, const ConcavityMap& map, int bridge, double delta);
 
-/// Edge weight for pocket cuts, Eq. 4 per edge: length / (concavity * curvature), each
-/// term offset so flat or convex edges stay finite. Curvature is the edge's concave
-/// dihedral angle (see docs/ALGORITHM.md).
-double cutEdgeWeight(const TriMesh& mesh, const SurfaceGraph& graph, const Bridge& bridge, int a, int b,
-                     double length);
-
-/// Curvature term of cutEdgeWeight for every adjacency slot of `graph` (concave dihedral angle,
+/// Curvature term of cutEdgeWeight (Eq. 4) for every adjacency slot of `graph` (concave dihedral angle,
 /// 0 for convex edges), computed once so that repeated floods do not recompute face normals.
 std::vector<double> slotCurvatures(const TriMesh& mesh, const SurfaceGraph& graph);
 
-/// cutEdgeWeight with the curvature already known.
+/// Edge weight for pocket cuts, Eq. 4 per edge: length / (concavity * curvature), each term
+/// offset so flat, convex or zero-concavity edges stay usable but expensive. Curvature is the
+/// edge's concave dihedral angle (slotCurvatures; see docs/ALGORITHM.md).
 inline double cutEdgeWeight(double concavityA, double concavityB, double curvature, double length) {
   return length / ((0.5 * (concavityA + concavityB) + 0.01) * (curvature + 0.1));
 }
