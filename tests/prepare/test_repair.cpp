@@ -2,7 +2,9 @@
 // (tests/bad_meshes.hpp): each repair with its exact outcome, checked with the tests' own geometry.
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
+#include <acd/io.hpp>
 #include <acd/repair.hpp>
+#include <acd/shapes.hpp>
 
 #include <gtest/gtest.h>
 
@@ -144,3 +146,41 @@ TEST(Repair, BrokenDataIsRefusedWithOneLine) {
   EXPECT_EQ(repairMesh(TriMesh{}).status.code, StatusCode::EmptyMesh);
 }
 
+
+namespace {
+
+void expectSameRepair(const TriMesh& input, const std::string& what) {
+  RepairOptions always;
+  always.skipWhenClean = false;
+  const MeshRepair skipped = repairMesh(input), full = repairMesh(input, always);
+  ASSERT_EQ(skipped.status.ok(), full.status.ok()) << what;
+  EXPECT_EQ(skipped.repairs, full.repairs) << what;
+  EXPECT_EQ(skipped.splitVertices, full.splitVertices) << what;
+  EXPECT_EQ(skipped.mesh.vertices, full.mesh.vertices) << what;
+  EXPECT_EQ(skipped.mesh.faces, full.mesh.faces) << what;
+}
+
+}  // namespace
+
+// The shortcut for clean surfaces must give exactly what CGAL's steps give, on clean inputs
+// (where it applies) and on every bad case (where it must not, or must not matter).
+TEST(Repair, CleanSurfaceShortcutGivesWhatCgalGives) {
+  for (const badmeshes::Case& c : badmeshes::all()) expectSameRepair(c.mesh, c.name);
+  expectSameRepair(shapes::torus(2.0, 0.6, 24, 12), "torus");
+  expectSameRepair(shapes::icosphere(Vec3(0, 0, 0), 1.0, 3), "icosphere");
+  expectSameRepair(shapes::voxels({{0, 0, 0}, {1, 1, 0}}), "cubes sharing an edge");
+  expectSameRepair(shapes::voxels({{0, 0, 0}, {1, 1, 1}}), "cubes sharing a corner");
+  for (const char* name : {"armadillo", "elephant", "knot", "camel"}) {
+    const ReadResult r = readMesh(acdtest::corpus(name));
+    ASSERT_TRUE(r.status.ok()) << name;
+    expectSameRepair(r.mesh, name);
+  }
+}
+
+// A vertex where two fans meet is not clean even though every edge is used once each way.
+TEST(Repair, PinchedVertexIsSplitWithTheShortcutOn) {
+  const MeshRepair r = repairMesh(shapes::voxels({{0, 0, 0}, {1, 1, 1}}));
+  ASSERT_TRUE(r.status.ok());
+  EXPECT_EQ(r.splitVertices, 1);
+  EXPECT_TRUE(isClosedOriented(r.mesh));
+}

@@ -17,7 +17,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <climits>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <unordered_map>
 
@@ -150,6 +152,52 @@ DuplicateOutcome resolveDuplicates(const std::vector<Face>& faces) {
 
 std::string count(int n, const char* singular, const char* plural) {
   return std::to_string(n) + " " + (n == 1 ? singular : plural);
+}
+
+/// Whether steps 3 to 6 would give `mesh` back as it is: every edge used once in each direction,
+/// the faces around every vertex one fan, and every face clear of the needle and cap limits by
+/// a wide margin (so no rounding decides).
+bool cleanSolidSurface(const TriMesh& mesh, const RepairOptions& options) {
+  if (!isClosedOriented(mesh)) return false;
+  const double ratio2 = 0.25 * options.needleRatio * options.needleRatio;  // half the ratio, squared
+  const double capCos = std::cos((options.capDegrees - 1.0) * std::acos(-1.0) / 180.0);
+  for (const Face& f : mesh.faces) {
+    double shortest2 = std::numeric_limits<double>::infinity(), longest2 = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3& a = mesh.vertices[f[k]];
+      const Vec3 u = mesh.vertices[f[(k + 1) % 3]] - a, w = mesh.vertices[f[(k + 2) % 3]] - a;
+      const double l2 = u.squaredNorm();
+      shortest2 = std::min(shortest2, l2);
+      longest2 = std::max(longest2, l2);
+      if (!(u.dot(w) > capCos * std::sqrt(l2 * w.squaredNorm()))) return false;
+    }
+    if (!(shortest2 > 0.0 && longest2 < ratio2 * shortest2)) return false;
+  }
+  // One fan per vertex: around v, the faces (v, b, c) link b to c; closed and oriented, the links
+  // form cycles, and a manifold vertex has exactly one.
+  const int nv = static_cast<int>(mesh.vertices.size());
+  std::vector<int> start(nv + 1, 0);
+  for (const Face& f : mesh.faces)
+    for (int v : f) ++start[v + 1];
+  for (int v = 0; v < nv; ++v) start[v + 1] += start[v];
+  std::vector<std::pair<int, int>> links(start[nv]);
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (const Face& f : mesh.faces)
+    for (int k = 0; k < 3; ++k) links[fill[f[k]]++] = {f[(k + 1) % 3], f[(k + 2) % 3]};
+  for (int v = 0; v < nv; ++v) {
+    const auto first = links.begin() + start[v], last = links.begin() + start[v + 1];
+    if (first == last) return false;  // unused vertices are compacted away before
+    std::sort(first, last);
+    int at = first->second, steps = 1;
+    while (at != first->first) {
+      const auto next = std::lower_bound(first, last, std::make_pair(at, INT_MIN));
+      if (next == last || next->first != at) return false;
+      at = next->second;
+      if (++steps > last - first) return false;
+    }
+    if (steps != last - first) return false;
+  }
+  return true;
 }
 
 /// Steps 3 to 6, with CGAL's polygon-soup and mesh repairs; `r.mesh` is the result. Should CGAL
@@ -306,7 +354,12 @@ MeshRepair repairMesh(const TriMesh& input, const RepairOptions& options) {
   if (faces.empty()) return refuse(StatusCode::EmptyMesh, "mesh has no faces left after dropping degenerate faces");
   const TriMesh merged = compact(TriMesh{used.vertices, faces});  // the merged-away vertices go
 
-  repairWithCgal(merged, options, diagonal, r);
+  if (options.skipWhenClean && cleanSolidSurface(merged, options)) {
+    // As CGAL's Surface_mesh gives a triangle back: from its last corner.
+    r.mesh = merged;
+    for (Face& f : r.mesh.faces) f = {f[2], f[0], f[1]};
+  } else
+    repairWithCgal(merged, options, diagonal, r);
 
   describeRepairs(options, r);
   r.status = Status::success();
