@@ -69,4 +69,48 @@ TEST(HullExcess, StopsAtTheFirstPointBeyondTheLimit) {
   EXPECT_LE(e.distance, 0.5 + 1e-9);
 }
 
+// Over the U's slot the hull's lid is 0.5 from the walls along the slot's middle line and closer
+// elsewhere. The corners' distance to the nearest wall bounds a patch exactly, so only patches
+// astride the middle line are split; the Lipschitz bound alone would split the whole lid to patches
+// of radius 0.51 - d.
+TEST(HullExcess, FlatStretchesAreSettledWithoutSplittingToTheResolution) {
+  const TriMesh u = acd::shapes::uShape();
+  const acd::HullExcess e = acd::measureHullExcess(u, acd::hullMesh(u.vertices), 0.51, 1e-6);
+  EXPECT_FALSE(e.exceeds);
+  EXPECT_LE(e.bound, 0.51 + 1e-12);
+  EXPECT_GE(e.distance, 0.5 - 1e-3);  // the corners probed in place of the splits find the middle line
+  EXPECT_LT(e.probes, 1000);  // 386; the Lipschitz bound alone: 2732
+}
+
+// Against the tests' own distance code on a bumpy sphere: hull points sampled densely never lie
+// farther than the bound, a sampled point beyond the limit means the search says so, and the
+// reported point is where the reported distance is.
+TEST(HullExcess, AgreesWithDenseSamplingOnABumpySphere) {
+  TriMesh m = acd::shapes::icosphere(Vec3(0, 0, 0), 1.0, 2);
+  const std::vector<Vec3> noise = acdtest::randomPoints(static_cast<int>(m.vertices.size()), 7);
+  for (std::size_t v = 0; v < m.vertices.size(); ++v) m.vertices[v] *= 1.0 + 0.15 * noise[v].x();
+  const TriMesh hull = acd::hullMesh(m.vertices);
+  acdtest::MeshIndex index(m);
+  double sampled = 0.0;
+  const int n = 24;
+  for (const acd::Face& f : hull.faces)
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; i + j <= n; ++j) {
+        const Vec3 q = hull.vertices[f[0]] + (hull.vertices[f[1]] - hull.vertices[f[0]]) * (double(i) / n) +
+                       (hull.vertices[f[2]] - hull.vertices[f[0]]) * (double(j) / n);
+        sampled = std::max(sampled, index.distance(q));
+      }
+  ASSERT_GT(sampled, 0.02);
+  for (double limit : {0.5 * sampled, 0.9 * sampled, 1.1 * sampled, 2.0 * sampled}) {
+    const acd::HullExcess e = acd::measureHullExcess(m, hull, limit, 1e-4);
+    if (sampled > limit) EXPECT_TRUE(e.exceeds) << limit;
+    if (!e.exceeds) {
+      EXPECT_GE(e.bound, sampled - 1e-12) << limit;
+      EXPECT_LE(e.bound, limit + 1e-4 + 1e-12) << limit;  // leaves at the resolution may reach past it
+    }
+    EXPECT_LE(e.distance, e.bound + 1e-12) << limit;
+    EXPECT_NEAR(index.distance(e.hullPoint), e.distance, 1e-9) << limit;
+  }
+}
+
 }  // namespace

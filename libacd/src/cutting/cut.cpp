@@ -174,23 +174,20 @@ CutResult cutByPlane(const TriMesh& mesh, const Plane& plane, double snap) {
   }
 
   // The section: edges of the lower surface without a twin in it. The cap of the lower part
-  // runs them backwards (its normal is +n).
+  // runs them backwards (its normal is +n). The input is closed, so only edges in the plane can
+  // lack a twin; the closure check below catches an input that is not.
   std::unordered_map<std::uint64_t, int> directed;
-  directed.reserve(below.size() * 3);
+  auto inPlane = [&](int a, int b) { return side[a] == 0 && side[b] == 0; };
   for (const Face& f : below)
     for (int k = 0; k < 3; ++k)
-      directed[(static_cast<std::uint64_t>(f[k]) << 32) | static_cast<std::uint32_t>(f[(k + 1) % 3])]++;
+      if (inPlane(f[k], f[(k + 1) % 3]))
+        directed[(static_cast<std::uint64_t>(f[k]) << 32) | static_cast<std::uint32_t>(f[(k + 1) % 3])]++;
   std::vector<std::pair<int, int>> section;
   for (const Face& f : below)
     for (int k = 0; k < 3; ++k) {
       const int a = f[k], b = f[(k + 1) % 3];
-      if (!directed.count((static_cast<std::uint64_t>(b) << 32) | static_cast<std::uint32_t>(a))) {
-        if (side[a] != 0 || side[b] != 0) {
-          result.error = "open edge off the plane (input not closed?)";
-          return result;
-        }
+      if (inPlane(a, b) && !directed.count((static_cast<std::uint64_t>(b) << 32) | static_cast<std::uint32_t>(a)))
         section.emplace_back(b, a);
-      }
     }
   std::vector<Face> cap;
   if (!section.empty() && !triangulateSection(points, section, n, cap, result.error)) return result;

@@ -1,5 +1,6 @@
 // Distances from hull points to the mesh's surface with CGAL's AABB tree (double arithmetic: a
 // distance, not a predicate).
+#include <acd/algo/closest_point.hpp>
 #include <acd/algo/hull_excess.hpp>
 #include <acd/inside.hpp>
 #include <acd/random.hpp>
@@ -13,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace acd {
@@ -50,9 +52,23 @@ bool insideFace(const Triangle& t, const Patch& p) {
   return true;
 }
 
-/// The branch and bound shared by both measures. `probe(q, patch)` returns the distance at q and
-/// how far every point of the patch may be from q before the bound matters (the patch's radius,
-/// less q's depth inside the model), or a negative distance when the whole patch is known to be 0.
+/// The largest distance from a patch's corners to triangle t, and which corner. The distance to
+/// one triangle is a convex function of the point, so no point of the patch is farther from t; and
+/// the distance to the surface (or the solid) is at most the distance to any of its triangles.
+/// Over a flat stretch of surface this bound is exact where "centroid distance + radius" would
+/// split the patch down to the resolution.
+std::pair<double, int> farthestCornerFrom(const Triangle& t, const Patch& p) {
+  const Vec3 a = toVec(t[0]), b = toVec(t[1]), c = toVec(t[2]);
+  std::pair<double, int> farthest{0.0, 0};
+  for (int k = 0; k < 3; ++k)
+    farthest = std::max(farthest, {(closestPointOnTriangle(p.corner[k], a, b, c) - p.corner[k]).norm(), k});
+  return farthest;
+}
+
+/// The branch and bound shared by both measures. `probe(q, patch, radius, nearest, reach, face)`
+/// returns the distance at q, how far every point of the patch may be from q before the bound
+/// matters (the patch's radius, less q's depth inside the model) and the surface triangle nearest
+/// to q when there is one, or a negative distance when the whole patch is known to be 0.
 template <class Probe>
 HullExcess branchAndBound(const TriMesh& hull, double limit, double resolution, Probe probe) {
   HullExcess out;
@@ -60,16 +76,20 @@ HullExcess branchAndBound(const TriMesh& hull, double limit, double resolution, 
   for (std::size_t f = 0; f < hull.faces.size(); ++f)
     stack.push_back({{hull.vertices[hull.faces[f][0]], hull.vertices[hull.faces[f][1]], hull.vertices[hull.faces[f][2]]},
                      static_cast<int>(f)});
-  // Faces are visited in their order and split depth first, so the answer does not depend on threads.
+  // Faces are visited in their order and split depth first, so the answer does not depend on
+  // threads; a patch is skipped only when no point of it can exceed the limit, so the first point
+  // beyond the limit is the same whichever bound skipped it.
   while (!stack.empty()) {
     const Patch p = stack.back();
     stack.pop_back();
     const Vec3 centroid = (p.corner[0] + p.corner[1] + p.corner[2]) / 3.0;
     double radius = 0.0;
     for (const Vec3& c : p.corner) radius = std::max(radius, (c - centroid).norm());
-    Vec3 nearest;
+    Vec3 nearest = Vec3::Zero();
     double reach = radius;
-    const double d = probe(centroid, p, radius, nearest, reach);
+    const Triangle* face = nullptr;
+    ++out.probes;
+    const double d = probe(centroid, p, radius, nearest, reach, face);
     if (d < 0) continue;  // zero all over
     if (d > out.distance) {
       out.distance = d;
@@ -81,6 +101,25 @@ HullExcess branchAndBound(const TriMesh& hull, double limit, double resolution, 
       out.exceeds = true;
       out.bound = std::max(out.bound, d + reach);
       return out;
+    }
+    if (face && d + reach > limit) {
+      const auto [farthest, corner] = farthestCornerFrom(*face, p);
+      if (farthest < d + reach) reach = std::max(0.0, farthest - d);
+      if (d + reach <= limit) {
+        // Settled without the points the splits would have probed: the corner farthest from the
+        // triangle stands in for them, so that `distance` stays a close lower bound.
+        Vec3 cornerNearest = Vec3::Zero();
+        double cornerReach = 0.0;
+        const Triangle* cornerFace = nullptr;
+        ++out.probes;
+        const double dc = probe(p.corner[corner], p, 0.0, cornerNearest, cornerReach, cornerFace);
+        if (dc > out.distance) {
+          out.distance = dc;
+          out.hullPoint = p.corner[corner];
+          out.surfacePoint = cornerNearest;
+          out.hullFace = p.face;
+        }
+      }
     }
     if (d + reach <= limit || radius <= resolution) {  // within the limit, or too small to split further
       out.bound = std::max(out.bound, d + reach);
@@ -114,9 +153,11 @@ HullExcess measureHullExcess(const TriMesh& mesh, const TriMesh& hull, double li
   if (triangles.empty() || hull.faces.empty()) return {};
   Tree tree(triangles.begin(), triangles.end());
   tree.accelerate_distance_queries();
-  return branchAndBound(hull, limit, resolution, [&](const Vec3& q, const Patch& p, double, Vec3& nearest, double&) {
+  return branchAndBound(hull, limit, resolution,
+                        [&](const Vec3& q, const Patch& p, double, Vec3& nearest, double&, const Triangle*& face) {
     const auto [point, primitive] = tree.closest_point_and_primitive(toPoint(q));
     nearest = toVec(point);
+    face = &*primitive;
     const double d = (nearest - q).norm();
     // On the surface all over: a patch inside the face it lies on (a hull face over a flat cap, or
     // over a face of a convex part). Without this, flat faces would be split down to the limit.
@@ -142,13 +183,18 @@ ModelExcess::~ModelExcess() = default;
 HullExcess ModelExcess::measure(const TriMesh& hull, double limit, double resolution) const {
   if (impl_->triangles.empty() || hull.faces.empty()) return {};
   return branchAndBound(hull, limit, resolution,
-                        [&](const Vec3& q, const Patch&, double radius, Vec3& nearest, double& reach) {
+                        [&](const Vec3& q, const Patch&, double radius, Vec3& nearest, double& reach,
+                            const Triangle*& face) {
                           const bool inside = impl_->inside.inside(q);
                           // Inside, the patch is within its radius of the model: no distance needed.
                           if (inside && radius <= limit) return -1.0;
-                          nearest = toVec(impl_->tree.closest_point(toPoint(q)));
+                          const auto [point, primitive] = impl_->tree.closest_point_and_primitive(toPoint(q));
+                          nearest = toVec(point);
                           const double d = (nearest - q).norm();
-                          if (!inside) return d;
+                          if (!inside) {
+                            face = &*primitive;
+                            return d;
+                          }
                           // Inside at depth d: the ball of radius d around q is in the model, so
                           // no point of the patch is farther out than radius - d.
                           if (radius <= d) return -1.0;

@@ -18,11 +18,14 @@ struct HullExcess {
   Vec3 surfacePoint = Vec3::Zero();  // its nearest point on the mesh
   int hullFace = -1;                 // the hull face holding hullPoint
   bool exceeds = false;              // distance > limit (the search stops there)
+  int probes = 0;                    // distance queries made: the search's cost
 };
 
-/// Branch and bound over the hull's faces: each face is split in four while the distance at its
-/// centroid plus its radius (distance is 1-Lipschitz) could still exceed `limit` and the face is
-/// wider than `resolution`. Stops at the first point farther than `limit`.
+/// Branch and bound over the hull's faces: each face is split in four while a bound on its points'
+/// distances could still exceed `limit` and the face is wider than `resolution`. The bound is the
+/// smaller of the distance at its centroid plus its radius (distance is 1-Lipschitz) and its
+/// corners' largest distance to the surface triangle nearest to the centroid. Stops at the first
+/// point farther than `limit`.
 HullExcess measureHullExcess(const TriMesh& mesh, const TriMesh& hull, double limit, double resolution);
 
 /// How far a hull sticks out of a closed model (its solid, not its surface): hull points inside the
