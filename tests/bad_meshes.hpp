@@ -142,6 +142,16 @@ inline TriMesh foldedSphere() {
   return m;
 }
 
+/// A point from three draws in x, y, z order (in Vec3(random(), random(), random()) the order is
+/// the compiler's: GCC and clang would build different meshes).
+template <class Draw>
+Vec3 point(Draw& draw) {
+  const double x = draw();
+  const double y = draw();
+  const double z = draw();
+  return Vec3(x, y, z);
+}
+
 /// Scattered, disconnected triangles: what is left of a game asset's decals and cards.
 inline TriMesh triangleSoupCloud(int count = 40) {
   TriMesh m;
@@ -151,9 +161,9 @@ inline TriMesh triangleSoupCloud(int count = 40) {
     return static_cast<double>((state >> 8) & 0xffff) / 65536.0;
   };
   for (int i = 0; i < count; ++i) {
-    const Vec3 c(random(), random(), random());
+    const Vec3 c = point(random);
     const int base = static_cast<int>(m.vertices.size());
-    for (int k = 0; k < 3; ++k) m.vertices.push_back(c + 0.15 * Vec3(random() - 0.5, random() - 0.5, random() - 0.5));
+    for (int k = 0; k < 3; ++k) m.vertices.push_back(c + 0.15 * (point(random) - Vec3(0.5, 0.5, 0.5)));
     m.faces.push_back({base, base + 1, base + 2});
   }
   return m;

@@ -218,13 +218,24 @@ class MeshIndex {
   std::vector<Node> nodes_;
 };
 
+/// A point from three draws taken in x, y, z order. In Vec3(u(rng), u(rng), u(rng)) the order is
+/// the compiler's (GCC evaluates a call's arguments right to left, clang left to right), and the
+/// GCC and clang builds would test different points.
+template <class Draw>
+Vec3 drawPoint(Draw&& draw) {
+  const double x = draw();
+  const double y = draw();
+  const double z = draw();
+  return Vec3(x, y, z);
+}
+
 /// n points uniform in the cube [-1, 1]^3 (or, with `ball`, in the unit ball), from `seed`.
 inline std::vector<Vec3> randomPoints(int n, std::uint64_t seed, bool ball = false) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> uni(-1.0, 1.0);
   std::vector<Vec3> p;
   while (static_cast<int>(p.size()) < n) {
-    const Vec3 q(uni(rng), uni(rng), uni(rng));
+    const Vec3 q = drawPoint([&] { return uni(rng); });
     if (!ball || q.norm() <= 1.0) p.push_back(q);
   }
   return p;

@@ -61,7 +61,7 @@ void expectExactCover(const TriMesh& input, const std::vector<TriMesh>& pieces, 
   std::uniform_real_distribution<double> uni(0.0, 1.0);
   int checked = 0, inside = 0;
   for (int s = 0; s < samples; ++s) {
-    const Vec3 q = box.lo + box.size().cwiseProduct(Vec3(uni(rng), uni(rng), uni(rng)));
+    const Vec3 q = box.lo + box.size().cwiseProduct(acdtest::drawPoint([&] { return uni(rng); }));
     int containing = 0;
     bool onWall = false;
     for (const TriMesh& p : pieces) {

@@ -282,8 +282,8 @@ TEST(Cut, IcosphereByManyRandomPlanes) {
   int split = 0;
   for (int i = 0; i < 200; ++i) {
     SCOPED_TRACE(i);
-    const Vec3 n(gauss(rng), gauss(rng), gauss(rng));
-    const Vec3 p = Vec3(0.3, -0.2, 0.1) + Vec3(uni(rng), uni(rng), uni(rng));
+    const Vec3 n = acdtest::drawPoint([&] { return gauss(rng); });
+    const Vec3 p = Vec3(0.3, -0.2, 0.1) + acdtest::drawPoint([&] { return uni(rng); });
     const Plane plane = Plane::through(p, n);
     const CutResult r = cutByPlane(sphere, plane);
     expectValidCut(sphere, plane, r);
@@ -302,7 +302,8 @@ TEST(Cut, IcospherePlanesThroughItsVertices) {
   std::uniform_int_distribution<int> pick(0, static_cast<int>(sphere.vertices.size()) - 1);
   for (int i = 0; i < 60; ++i) {
     SCOPED_TRACE(i);
-    const Plane plane = Plane::through(sphere.vertices[pick(rng)], Vec3(gauss(rng), gauss(rng), gauss(rng)));
+    const Vec3& at = sphere.vertices[pick(rng)];
+    const Plane plane = Plane::through(at, acdtest::drawPoint([&] { return gauss(rng); }));
     const CutResult r = cutByPlane(sphere, plane);
     expectValidCut(sphere, plane, r);
   }
@@ -333,7 +334,8 @@ TEST(Cut, PiecesContainExactlyTheirHalfOfSampledPoints) {
   std::uniform_real_distribution<double> x(-0.1, 3.1), z(-0.1, 1.1);
   int inside = 0;
   for (int i = 0; i < 4000; ++i) {
-    const Vec3 p(x(rng), x(rng), z(rng));
+    const double px = x(rng), py = x(rng), pz = z(rng);  // drawn in this order
+    const Vec3 p(px, py, pz);
     const bool in = model.inside(p);
     inside += in;
     int nb = 0, na = 0;

@@ -78,8 +78,8 @@ TEST(LookaheadHull, IsTheChildsHullWithTheChildsVertices) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (int trial = 0; trial < 8; ++trial) {
     SCOPED_TRACE(trial);
-    const TriMesh sphere = shapes::icosphere(Vec3(u(rng), u(rng), u(rng)), 1.0, 4);
-    const Vec3 n = Vec3(u(rng), u(rng), u(rng)).normalized();
+    const TriMesh sphere = shapes::icosphere(acdtest::drawPoint([&] { return u(rng); }), 1.0, 4);
+    const Vec3 n = acdtest::drawPoint([&] { return u(rng); }).normalized();
     const Plane p = Plane::through(boundingBox(sphere).center() + 0.4 * u(rng) * n, n);
     const CutResult cut = cutByPlane(sphere, p);
     ASSERT_TRUE(cut.ok);

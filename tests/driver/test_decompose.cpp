@@ -162,7 +162,8 @@ InvariantReport checkInvariants(const TriMesh& input, const Decomposition& d, bo
   int overlaps = 0, holes = 0, outside = 0, inModel = 0;
   std::ostringstream first;
   for (int s = 0; s < samples; ++s) {
-    const Vec3 p(ux(rng), uy(rng), uz(rng));
+    const double x = ux(rng), y = uy(rng), z = uz(rng);  // drawn in this order
+    const Vec3 p(x, y, z);
     const bool in = modelIndex.inside(p);
     inModel += in;
     int count = 0;
@@ -218,7 +219,10 @@ TEST(DecomposeHelpers, InsideTestOnKnownSolids) {
   std::uniform_real_distribution<double> u(-2.6, 2.6), v(-0.6, 0.6);
   int in = 0;
   const int n = 200000;
-  for (int i = 0; i < n; ++i) in += t.inside(Vec3(u(rng), u(rng), v(rng)));
+  for (int i = 0; i < n; ++i) {
+    const double x = u(rng), y = u(rng), z = v(rng);  // drawn in this order
+    in += t.inside(Vec3(x, y, z));
+  }
   const double mc = 5.2 * 5.2 * 1.2 * in / n;
   EXPECT_NEAR(mc, signedVolume(torus), 0.02 * signedVolume(torus));
 }
@@ -286,7 +290,10 @@ TEST(Decompose, ConvexInputsStayOneComponent) {
   std::mt19937_64 rng(200);
   std::uniform_real_distribution<double> uni(-1.0, 1.0);
   std::vector<Vec3> cloud;
-  for (int i = 0; i < 200; ++i) cloud.emplace_back(3 * uni(rng), uni(rng), 2 * uni(rng));
+  for (int i = 0; i < 200; ++i) {
+    const double x = 3 * uni(rng), y = uni(rng), z = 2 * uni(rng);  // drawn in this order
+    cloud.emplace_back(x, y, z);
+  }
   const std::vector<std::pair<const char*, TriMesh>> cases = {
       {"box", shapes::box(Vec3(0, 0, 0), Vec3(2, 1, 3))},
       {"icosphere", shapes::icosphere(Vec3(1, 2, 3), 5.0, 3)},

@@ -60,8 +60,9 @@ void expectInvariant(const TriMesh& mesh, double tau, int motions) {
   std::mt19937_64 rng(2026);
   std::normal_distribution<double> g;
   for (int k = 0; k < motions; ++k) {
-    const Eigen::Matrix3d r = Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng)).normalized().toRotationMatrix();
-    poses.emplace_back("random motion " + std::to_string(k), moved(mesh, r, 3.0 * size * Vec3(g(rng), g(rng), g(rng))));
+    const double w = g(rng), x = g(rng), y = g(rng), z = g(rng);  // drawn in this order
+    const Eigen::Matrix3d r = Eigen::Quaterniond(w, x, y, z).normalized().toRotationMatrix();
+    poses.emplace_back("random motion " + std::to_string(k), moved(mesh, r, 3.0 * size * acdtest::drawPoint([&] { return g(rng); })));
   }
   poses.emplace_back("1e-9 translation", moved(mesh, Eigen::Matrix3d::Identity(), Vec3(1e-9, -1e-9, 1e-9) * size));
   poses.emplace_back("1e-12 translation", moved(mesh, Eigen::Matrix3d::Identity(), Vec3(1e-12, 0, 0) * size));

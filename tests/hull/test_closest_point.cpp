@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "helpers.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -54,9 +56,11 @@ TEST(ClosestPoint, OnTheTriangleAndNoSampledPointIsNearer) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(-2.0, 2.0);
   for (int t = 0; t < 200; ++t) {
-    const Vec3 a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng)), c(u(rng), u(rng), u(rng));
+    const Vec3 a = acdtest::drawPoint([&] { return u(rng); });
+    const Vec3 b = acdtest::drawPoint([&] { return u(rng); });
+    const Vec3 c = acdtest::drawPoint([&] { return u(rng); });
     if ((b - a).cross(c - a).norm() < 1e-2) continue;  // nearly flat: the oracle's areas are unreliable
-    const Vec3 p(2 * u(rng), 2 * u(rng), 2 * u(rng));
+    const Vec3 p = 2 * acdtest::drawPoint([&] { return u(rng); });
     const Vec3 q = closestPointOnTriangle(p, a, b, c);
     const double scale = std::max({(b - a).norm(), (c - a).norm(), (c - b).norm()});
     const Vec3 n = (b - a).cross(c - a).normalized();

@@ -76,8 +76,9 @@ struct CutSphere {
 CutSphere cutSphere(std::mt19937_64& rng, int level, double spread) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   CutSphere c;
-  c.sphere = shapes::icosphere(Vec3(u(rng), u(rng), u(rng)), 1.0 + 0.5 * u(rng), level);
-  c.normal = Vec3(u(rng), u(rng), u(rng)).normalized();
+  const Vec3 centre = acdtest::drawPoint([&] { return u(rng); });
+  c.sphere = shapes::icosphere(centre, 1.0 + 0.5 * u(rng), level);
+  c.normal = acdtest::drawPoint([&] { return u(rng); }).normalized();
   c.offset = c.normal.dot(boundingBox(c.sphere).center()) + spread * u(rng);
   for (const Vec3& v : c.sphere.vertices)
     if (c.normal.dot(v) <= c.offset) c.points.push_back(v);
@@ -98,7 +99,7 @@ std::vector<Vec3> cutSpherePoints(std::uint64_t seed, int level, int inside) {
   const Vec3 centre = boundingBox(c.sphere).center();
   const double r = 0.5 * boundingBox(c.sphere).size().x();
   for (int i = 0; i < inside; ++i) {
-    const Vec3 p = centre + 0.9 * r * Vec3(u(rng), u(rng), u(rng)) / std::sqrt(3.0);
+    const Vec3 p = centre + 0.9 * r * acdtest::drawPoint([&] { return u(rng); }) / std::sqrt(3.0);
     if (c.normal.dot(p) < c.offset) c.points.push_back(p);
   }
   return c.points;
@@ -219,7 +220,7 @@ TEST(Hull, PointsOnASphereAroundManyInsideAreExactlyTheHullVertices) {
   std::mt19937_64 rng(5);
   std::normal_distribution<double> g;
   std::vector<Vec3> points;
-  for (int i = 0; i < 3000; ++i) points.push_back(2.0 * Vec3(g(rng), g(rng), g(rng)).normalized());
+  for (int i = 0; i < 3000; ++i) points.push_back(2.0 * acdtest::drawPoint([&] { return g(rng); }).normalized());
   for (const Vec3& p : randomPoints(30000, 6, true)) points.push_back(1.9 * p);
   const ConvexHull hull = convexHull(points);
   expectConvexHullOf(hull, points);

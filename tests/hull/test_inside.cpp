@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "helpers.hpp"
+
 #include <cmath>
 #include <random>
 
@@ -65,7 +67,7 @@ std::vector<Vec3> randomPoints(const TriMesh& m, int count, unsigned seed) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<Vec3> out;
   for (int i = 0; i < count; ++i)
-    out.push_back(box.lo - pad + (box.size() + 2 * pad).cwiseProduct(Vec3(u(rng), u(rng), u(rng))));
+    out.push_back(box.lo - pad + (box.size() + 2 * pad).cwiseProduct(acdtest::drawPoint([&] { return u(rng); })));
   return out;
 }
 
@@ -77,7 +79,7 @@ TEST(InsideTest, BoxIsItsInequalities) {
   std::mt19937_64 rng(1);
   std::uniform_real_distribution<double> u(-4, 4);
   for (int i = 0; i < 2000; ++i) {
-    const Vec3 q(u(rng), u(rng), u(rng));
+    const Vec3 q = acdtest::drawPoint([&] { return u(rng); });
     const bool expected = std::abs(q.x()) < 1 && std::abs(q.y()) < 2 && std::abs(q.z()) < 3;
     EXPECT_EQ(test.inside(q), expected) << q.transpose();
   }
@@ -96,7 +98,7 @@ TEST(InsideTest, TorusIsItsInequalityAwayFromTheFacets) {
   std::uniform_real_distribution<double> u(-3, 3);
   int checked = 0;
   for (int i = 0; i < 4000; ++i) {
-    const Vec3 q(u(rng), u(rng), u(rng) / 3);
+    const Vec3 q = acdtest::drawPoint([&] { return u(rng); }).cwiseProduct(Vec3(1, 1, 1.0 / 3));
     const double tube = std::hypot(std::hypot(q.x(), q.y()) - R, q.z());
     if (tube > inner && tube < r + sagitta) continue;  // within the sagittas: the facets decide
     ++checked;

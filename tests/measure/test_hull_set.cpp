@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "helpers.hpp"
+
 #include <random>
 #include <vector>
 
@@ -35,7 +37,7 @@ TEST(HullSet, TheGridAnswersAsTestingEveryHull) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<Vec3> points;
   for (int i = 0; i < 20000; ++i)
-    points.push_back(box.lo + box.size().cwiseProduct(Vec3(u(rng), u(rng), u(rng))));
+    points.push_back(box.lo + box.size().cwiseProduct(acdtest::drawPoint([&] { return u(rng); })));
   points.push_back(Vec3(5, 5, 5));  // off the grid: the scan answers
   std::uint64_t direct = 0;
   for (const Vec3& p : points) {

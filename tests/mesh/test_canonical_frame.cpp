@@ -33,7 +33,8 @@ TriMesh asymmetricShape() {
 
 Eigen::Matrix3d randomRotation(std::mt19937_64& rng) {
   std::normal_distribution<double> g;
-  Eigen::Quaterniond q(g(rng), g(rng), g(rng), g(rng));
+  const double w = g(rng), x = g(rng), y = g(rng), z = g(rng);  // drawn in this order
+  Eigen::Quaterniond q(w, x, y, z);
   return q.normalized().toRotationMatrix();
 }
 
@@ -69,7 +70,8 @@ TEST(MinimumSphere, SameRadiusInEveryPoseAndNoPointOutside) {
   std::mt19937_64 rng(0);
   std::normal_distribution<double> g;
   for (int pose = 0; pose < 200; ++pose) {
-    const TriMesh m = moved(shape, randomRotation(rng), Vec3(g(rng), g(rng), g(rng)) * (pose % 2 ? 1.0 : 1e3));
+    const Eigen::Matrix3d rotation = randomRotation(rng);
+    const TriMesh m = moved(shape, rotation, acdtest::drawPoint([&] { return g(rng); }) * (pose % 2 ? 1.0 : 1e3));
     const acd::Normalization n = acd::minimumSphereNormalization(m);
     EXPECT_NEAR(1.0 / n.scale, radius, 1e-12 * (pose % 2 ? 1.0 : 1e3)) << "pose " << pose;
     for (const Vec3& p : m.vertices) EXPECT_LE((p - n.center).norm(), 1.0 / n.scale * (1 + 1e-15)) << "pose " << pose;
@@ -129,7 +131,8 @@ TEST_P(CanonicalFrameMotion, RigidMotionsGiveTheSameCanonicalMesh) {
     SCOPED_TRACE("motion " + std::to_string(trial));
     const double size = trial < 5 ? 1.0 : 1e3;  // also far from the origin
     std::uniform_real_distribution<double> u(-size, size);
-    const TriMesh m = moved(shape, randomRotation(rng), Vec3(u(rng), u(rng), u(rng)));
+    const Eigen::Matrix3d rotation = randomRotation(rng);
+    const TriMesh m = moved(shape, rotation, acdtest::drawPoint([&] { return u(rng); }));
     expectSameMesh(acd::canonicalMesh(m, acd::canonicalFrame({m})).mesh, reference.mesh);
   }
   const TriMesh nudged = moved(shape, Eigen::Matrix3d::Identity(), Vec3(1e-12, -1e-12, 1e-9));

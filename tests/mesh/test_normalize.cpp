@@ -42,7 +42,8 @@ TEST(MinimumSphereNormalization, SegmentEndsWithPointsInside) {
   std::mt19937_64 rng(1);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   while (pts.size() < 60) {
-    const Vec3 p(4 * u(rng), 1 + 2 * u(rng), 1 + 2 * u(rng));
+    const double x = 4 * u(rng), y = 1 + 2 * u(rng), z = 1 + 2 * u(rng);  // drawn in this order
+    const Vec3 p(x, y, z);
     if ((p - Vec3(0, 1, 1)).norm() < 4.9) pts.push_back(p);
   }
   const Normalization n = minimumSphereNormalization(pointsOnly(pts));

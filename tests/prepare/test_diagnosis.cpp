@@ -64,7 +64,10 @@ TriMesh kleinBottle(int n, int m) {
     state = state * 1103515245u + 12345u;
     return static_cast<double>((state >> 8) & 0xffff) / 65536.0;
   };
-  for (int i = 0; i < n * m; ++i) mesh.vertices.emplace_back(random(), random(), random());
+  for (int i = 0; i < n * m; ++i) {
+    const double x = random(), y = random(), z = random();  // drawn in this order
+    mesh.vertices.emplace_back(x, y, z);
+  }
   auto id = [&](int i, int j) {
     if (j == m) {
       j = 0;

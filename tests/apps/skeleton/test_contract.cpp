@@ -113,8 +113,11 @@ TEST(Contract, ChainsRebuildTheInput) {
     const int n = std::uniform_int_distribution<int>(2, 30)(rng);
     Graph g = makeGraph(n, {});
     for (int v = 1; v < n; ++v) g.addEdge(v, std::uniform_int_distribution<int>(0, v - 1)(rng));  // a tree
-    for (int k = 0; k < 3; ++k)
-      g.addEdge(std::uniform_int_distribution<int>(0, n - 1)(rng), std::uniform_int_distribution<int>(0, n - 1)(rng));
+    for (int k = 0; k < 3; ++k) {
+      const int a = std::uniform_int_distribution<int>(0, n - 1)(rng);
+      const int b = std::uniform_int_distribution<int>(0, n - 1)(rng);  // drawn after a
+      g.addEdge(a, b);
+    }
     const Contraction c = contractWithChains(g);
     ASSERT_EQ(c.kept.size(), static_cast<std::size_t>(c.graph.nodeCount()));
     ASSERT_EQ(c.chains.size(), c.graph.edges.size());
