@@ -9,7 +9,7 @@
 #include "bad_meshes.hpp"
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
+  if (argc != 2 || argv[1][0] == '-') {  // --help and the like are not folders
     std::fprintf(stderr, "usage: bad_meshes DIR\n");
     return 1;
   }
