@@ -76,6 +76,13 @@ HullExcess branchAndBound(const TriMesh& hull, double limit, double resolution, 
   for (std::size_t f = 0; f < hull.faces.size(); ++f)
     stack.push_back({{hull.vertices[hull.faces[f][0]], hull.vertices[hull.faces[f][1]], hull.vertices[hull.faces[f][2]]},
                      static_cast<int>(f)});
+  auto record = [&out](double d, const Vec3& hullPoint, const Vec3& surfacePoint, int face) {
+    if (d <= out.distance) return;
+    out.distance = d;
+    out.hullPoint = hullPoint;
+    out.surfacePoint = surfacePoint;
+    out.hullFace = face;
+  };
   // Faces are visited in their order and split depth first, so the answer does not depend on
   // threads; a patch is skipped only when no point of it can exceed the limit, so the first point
   // beyond the limit is the same whichever bound skipped it.
@@ -91,12 +98,7 @@ HullExcess branchAndBound(const TriMesh& hull, double limit, double resolution, 
     ++out.probes;
     const double d = probe(centroid, p, radius, nearest, reach, face);
     if (d < 0) continue;  // zero all over
-    if (d > out.distance) {
-      out.distance = d;
-      out.hullPoint = centroid;
-      out.surfacePoint = nearest;
-      out.hullFace = p.face;
-    }
+    record(d, centroid, nearest, p.face);
     if (d > limit) {
       out.exceeds = true;
       out.bound = std::max(out.bound, d + reach);
@@ -113,12 +115,7 @@ HullExcess branchAndBound(const TriMesh& hull, double limit, double resolution, 
         const Triangle* cornerFace = nullptr;
         ++out.probes;
         const double dc = probe(p.corner[corner], p, 0.0, cornerNearest, cornerReach, cornerFace);
-        if (dc > out.distance) {
-          out.distance = dc;
-          out.hullPoint = p.corner[corner];
-          out.surfacePoint = cornerNearest;
-          out.hullFace = p.face;
-        }
+        record(dc, p.corner[corner], cornerNearest, p.face);
       }
     }
     if (d + reach <= limit || radius <= resolution) {  // within the limit, or too small to split further

@@ -4,6 +4,7 @@
 // double-sided face, which needs the faces around it.
 #include <acd/algo/face_order.hpp>
 #include <acd/algo/union_find.hpp>
+#include <acd/diagnosis.hpp>
 #include <acd/repair.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -17,7 +18,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <climits>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -155,8 +155,8 @@ std::string count(int n, const char* singular, const char* plural) {
 }
 
 /// Whether steps 3 to 6 would give `mesh` back as it is: every edge used once in each direction,
-/// the faces around every vertex one fan, and every face clear of the needle and cap limits by
-/// a wide margin (so no rounding decides).
+/// the faces around every vertex one fan (diagnose's checks), and every face clear of the needle
+/// and cap limits by a wide margin (so no rounding decides).
 bool cleanSolidSurface(const TriMesh& mesh, const RepairOptions& options) {
   if (!isClosedOriented(mesh)) return false;
   const double ratio2 = 0.25 * options.needleRatio * options.needleRatio;  // half the ratio, squared
@@ -173,31 +173,7 @@ bool cleanSolidSurface(const TriMesh& mesh, const RepairOptions& options) {
     }
     if (!(shortest2 > 0.0 && longest2 < ratio2 * shortest2)) return false;
   }
-  // One fan per vertex: around v, the faces (v, b, c) link b to c; closed and oriented, the links
-  // form cycles, and a manifold vertex has exactly one.
-  const int nv = static_cast<int>(mesh.vertices.size());
-  std::vector<int> start(nv + 1, 0);
-  for (const Face& f : mesh.faces)
-    for (int v : f) ++start[v + 1];
-  for (int v = 0; v < nv; ++v) start[v + 1] += start[v];
-  std::vector<std::pair<int, int>> links(start[nv]);
-  std::vector<int> fill(start.begin(), start.end() - 1);
-  for (const Face& f : mesh.faces)
-    for (int k = 0; k < 3; ++k) links[fill[f[k]]++] = {f[(k + 1) % 3], f[(k + 2) % 3]};
-  for (int v = 0; v < nv; ++v) {
-    const auto first = links.begin() + start[v], last = links.begin() + start[v + 1];
-    if (first == last) return false;  // unused vertices are compacted away before
-    std::sort(first, last);
-    int at = first->second, steps = 1;
-    while (at != first->first) {
-      const auto next = std::lower_bound(first, last, std::make_pair(at, INT_MIN));
-      if (next == last || next->first != at) return false;
-      at = next->second;
-      if (++steps > last - first) return false;
-    }
-    if (steps != last - first) return false;
-  }
-  return true;
+  return diagnose(mesh).nonManifoldVertices == 0;
 }
 
 /// Steps 3 to 6, with CGAL's polygon-soup and mesh repairs; `r.mesh` is the result. Should CGAL
