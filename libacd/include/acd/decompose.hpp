@@ -19,7 +19,8 @@ enum class MergeScope {
   Component,
   /// The union's hull within tau of the model, and at most 10 % of the union's volume added outside
   /// the model and the two hulls: a component may be more concave than tau where its pockets are
-  /// filled by other components. Fewer parts for the same hulls-to-model fidelity.
+  /// filled by other components. Pieces apart (boxes within tau) may share one hull too: a
+  /// component may then have several shells. Fewer parts for the same hulls-to-model fidelity.
   Model,
 };
 
@@ -57,7 +58,8 @@ DecomposeOptions resolvedOptions(const DecomposeOptions& options);
 Status validate(const DecomposeOptions& options);
 
 struct Component {
-  TriMesh mesh;            // closed, outward; input coordinates
+  TriMesh mesh;            // closed, outward; input coordinates. With MergeScope::Model it may have
+                           // several shells that do not touch (two toes under one hull)
   TriMesh hull;            // its convex hull; input coordinates
   double volume = 0.0;     // normalised units
   double hullVolume = 0.0; // normalised units

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <tuple>
 #include <unordered_map>
 
 namespace acd {
@@ -50,11 +51,30 @@ bool glueAlongSharedFaces(const TriMesh& a, const TriMesh& b, TriMesh& out) {
                              vertex(m.vertices[m.faces[f][2]])});
   }
   // Only a shared region that is the whole contact makes a valid solid; anything else (a cap
-  // later split on one side only) leaves open or doubled edges and is refused.
+  // later split on one side only) leaves open or doubled edges and is refused. Gluing must join
+  // at least two shells into one (a piece joined apart by the merge pass has several).
   if (!isClosedOriented(out)) return false;
-  if (splitEdgeConnected(out).size() != 1) return false;
+  const std::size_t shells = splitEdgeConnected(out).size();
+  if (shells != 1 && shells + 1 > splitEdgeConnected(a).size() + splitEdgeConnected(b).size()) return false;
   out = compact(out);
   return true;
+}
+
+std::vector<SharedFaces> nearbyPairs(const std::vector<TriMesh>& meshes, double reach) {
+  std::vector<Box3> boxes;
+  for (const TriMesh& m : meshes) boxes.push_back(boundingBox(m));
+  std::vector<int> byLow(meshes.size());
+  for (int i = 0; i < static_cast<int>(meshes.size()); ++i) byLow[i] = i;
+  std::stable_sort(byLow.begin(), byLow.end(), [&](int a, int b) { return boxes[a].lo.x() < boxes[b].lo.x(); });
+  std::vector<SharedFaces> pairs;
+  for (std::size_t s = 0; s < byLow.size(); ++s)
+    for (std::size_t t = s + 1; t < byLow.size() && boxes[byLow[t]].lo.x() <= boxes[byLow[s]].hi.x() + reach; ++t) {
+      const Box3 &p = boxes[byLow[s]], &q = boxes[byLow[t]];
+      const Vec3 gap = (p.lo - q.hi).cwiseMax(q.lo - p.hi).cwiseMax(0.0);
+      if (gap.norm() <= reach) pairs.push_back({std::min(byLow[s], byLow[t]), std::max(byLow[s], byLow[t]), 0.0});
+    }
+  std::sort(pairs.begin(), pairs.end(), [](const SharedFaces& x, const SharedFaces& y) { return std::tie(x.a, x.b) < std::tie(y.a, y.b); });
+  return pairs;
 }
 
 std::vector<SharedFaces> sharedFacePairs(const std::vector<TriMesh>& meshes) {

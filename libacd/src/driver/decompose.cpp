@@ -17,6 +17,7 @@
 #include "rounds.hpp"
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <chrono>
 #include <cstdio>
@@ -26,6 +27,7 @@
 #include <map>
 #include <memory>
 #include <numeric>
+#include <set>
 #include <sstream>
 
 namespace acd {
@@ -189,58 +191,92 @@ constexpr double kModelMergeGrowth = 0.1;
 /// Points per union for that volume: its standard error is below 0.5 % of the hull's volume.
 constexpr int kModelMergeSamples = 4096;
 
-/// One candidate union of the merge pass, measured.
+/// Held to the model, the merge also tries pieces that do not touch, when their boxes are within
+/// this many tau: two fingers or toes may share one hull (docs/ALGORITHM.md section 11).
+constexpr double kModelMergeReach = 1.0;
+
+/// Adds to `pairs` the pairs of `meshes` within `reach` that it does not hold yet.
+void appendNearbyPairs(std::vector<SharedFaces>& pairs, const std::vector<TriMesh>& meshes, double reach) {
+  std::set<std::pair<int, int>> have;
+  for (const SharedFaces& p : pairs) have.insert({p.a, p.b});
+  for (const SharedFaces& p : nearbyPairs(meshes, reach))
+    if (!have.count({p.a, p.b})) pairs.push_back(p);
+}
+
+/// One candidate union of the merge pass: screened by the cheaper test, then confirmed by the
+/// costlier one only when its turn comes (screenUnion, confirmUnion).
 struct MergeCandidate {
-  TriMesh glued;
   TriMesh hull;                // the union's hull (the glued piece's, if it is taken)
-  bool ok = false;             // passes the merge test
+  double volume = 0.0;         // the union's
+  bool screened = false;       // passes the cheaper test
+  bool confirmed = false;      // the costlier test was made
+  bool ok = false;             // passes both
+  TriMesh glued;               // the union, once confirmed
   double cost = 0.0;           // the order in which passing unions are taken (lower first)
   double concavity = 0.0;      // MergeScope::Component: the union's measured concavity
   double hullExcess = 0.0;     // how far its hull stands off the union (Component) or the model (Model)
 };
 
-MergeCandidate measureUnion(const Piece& a, const Piece& b, const TriMesh& hullA, const TriMesh& hullB,
-                            std::uint64_t key, const ModelExcess* model, const DecomposeOptions& o,
-                            const ConcavityOptions& co) {
+/// The cheaper test: what the union's hull adds beyond the two it replaces, outside the model
+/// (Model) or beyond the union (Component).
+MergeCandidate screenUnion(const Piece& a, const Piece& b, const TriMesh& hullA, const TriMesh& hullB,
+                           std::uint64_t key, const ModelExcess* model) {
   MergeCandidate m;
-  if (!glueAlongSharedFaces(a.mesh, b.mesh, m.glued)) return m;
-  m.hull = convexHull(m.glued.vertices).mesh;
-  const TriMesh& hull = m.hull;
-  const double volume = signedVolume(m.glued);
+  // The union's hull is the hull of the two hulls' corners: far fewer points than the union's.
+  std::vector<Vec3> corners = hullA.vertices;
+  corners.insert(corners.end(), hullB.vertices.begin(), hullB.vertices.end());
+  m.hull = convexHull(corners).mesh;
+  m.volume = signedVolume(a.mesh) + signedVolume(b.mesh);
   if (model) {
     // The union's hull only has to stay within tau of the model: where it reaches beyond the union,
-    // it reaches into other components, which are model too. The volume it adds is checked first:
-    // it is the cheaper test, and fails as often (armadillo: 51 of 94 unions, 0.3 s against 1.2 s).
-    m.cost = model->addedVolume(hull, {&hullA, &hullB}, kModelMergeSamples, key);
-    if (m.cost > kModelMergeGrowth * volume) return m;
-    const HullExcess e = model->measure(hull, kExcessLimit * o.tau, kExcessResolution * o.tau);
-    if (e.exceeds) return m;
-    m.hullExcess = e.distance;
-    m.ok = true;
+    // it reaches into other components, which are model too.
+    m.cost = model->addedVolume(m.hull, {&hullA, &hullB}, kModelMergeSamples, key, kModelMergeGrowth * m.volume);
+    m.screened = m.cost <= kModelMergeGrowth * m.volume;
     return m;
   }
   // The union's hull may not swell much beyond the two hulls: a merge must not cost fidelity.
-  const double growth = signedVolume(hull) - volume - (signedVolume(hullA) - signedVolume(a.mesh)) -
+  const double growth = signedVolume(m.hull) - m.volume - (signedVolume(hullA) - signedVolume(a.mesh)) -
                         (signedVolume(hullB) - signedVolume(b.mesh));
-  if (growth > kMergeHullGrowth * volume) return m;
-  SurfaceGraph graph(m.glued);
-  m.concavity = measureConcavity(m.glued, graph, co).concavity;
-  if (m.concavity > o.tau) return m;
-  // A union is held to the same promise as a final piece: its hull within tau of it.
-  const HullExcess e = measureHullExcess(m.glued, hull, kExcessLimit * o.tau, kExcessResolution * o.tau);
-  if (e.exceeds) return m;
-  m.hullExcess = e.distance;
-  m.concavity = std::max(m.concavity, e.distance);
-  m.ok = true;
+  m.screened = growth <= kMergeHullGrowth * m.volume;
   return m;
 }
 
+/// The costlier test, on a screened union: its hull within tau of the model (Model), or its own
+/// concavity and its hull within tau of it (Component).
+void confirmUnion(MergeCandidate& m, const Piece& a, const Piece& b, const ModelExcess* model,
+                  const DecomposeOptions& o, const ConcavityOptions& co) {
+  m.confirmed = true;
+  // Held to the model, pieces that do not glue into one solid (apart, or touching without sharing
+  // whole triangles) may still share one hull: the component keeps them as separate shells.
+  if (!glueAlongSharedFaces(a.mesh, b.mesh, m.glued)) {
+    if (!model) return;
+    m.glued = concatenate({a.mesh, b.mesh});
+  }
+  if (model) {
+    const HullExcess e = model->measure(m.hull, kExcessLimit * o.tau, kExcessResolution * o.tau);
+    m.ok = !e.exceeds;
+    m.hullExcess = e.distance;
+    return;
+  }
+  SurfaceGraph graph(m.glued);
+  m.concavity = measureConcavity(m.glued, graph, co).concavity;
+  if (m.concavity > o.tau) return;
+  // A union is held to the same promise as a final piece: its hull within tau of it.
+  const HullExcess e = measureHullExcess(m.glued, m.hull, kExcessLimit * o.tau, kExcessResolution * o.tau);
+  m.ok = !e.exceeds;
+  m.hullExcess = e.distance;
+  m.concavity = std::max(m.concavity, e.distance);
+}
+
 /// Merge pass: the greedy recursion sometimes cuts where a coarser split would have done. Glue
-/// neighbours back along their shared cut faces while the union passes the test of o.mergeScope
-/// (measureUnion). Every candidate union is measured in parallel; then the passing ones are taken
-/// in order (Component: largest contact first; Model: least volume added outside the model first,
-/// ties by pair order), skipping pairs whose pieces changed in that round; rounds repeat until
-/// nothing merges. The order is fixed, so the result does not depend on the thread count.
+/// neighbours back along their shared cut faces while the union passes the test of o.mergeScope;
+/// held to the model, pieces within kModelMergeReach tau are tried too. Each round screens every
+/// candidate union not screened before, in parallel; then the screened ones are taken in order
+/// (Component: largest contact first; Model: least volume added outside the model first, ties by
+/// pair order), each confirmed when its turn comes, skipping pairs whose pieces changed in that
+/// round; rounds repeat until nothing merges. A union is confirmed together with the next few
+/// that may be taken after it, in parallel; which ones are confirmed early never changes a
+/// decision, so the result does not depend on the thread count.
 void mergePieces(std::vector<Piece>& finals, std::vector<Component>& finalInfo, const TriMesh& input,
                  const DecomposeOptions& o, DecomposeStats& stats) {
   ConcavityOptions co;
@@ -257,29 +293,44 @@ void mergePieces(std::vector<Piece>& finals, std::vector<Component>& finalInfo, 
     std::vector<int> id;
     for (std::size_t i = 0; i < finals.size(); ++i)
       if (alive[i] && !finalInfo[i].unresolved) meshes.push_back(finals[i].mesh), id.push_back(static_cast<int>(i));
-    const std::vector<SharedFaces> pairs = sharedFacePairs(meshes);
-    // A pair whose pieces are unchanged since it was measured keeps its measure.
+    std::vector<SharedFaces> pairs = sharedFacePairs(meshes);
+    if (model) appendNearbyPairs(pairs, meshes, kModelMergeReach * o.tau);
+    // A pair whose pieces are unchanged since it was screened keeps its screening (and confirmation).
     std::vector<std::size_t> fresh;
     for (std::size_t k = 0; k < pairs.size(); ++k)
       if (!measured.count({id[pairs[k].a], id[pairs[k].b]})) fresh.push_back(k);
-    std::vector<MergeCandidate> measuredNow(fresh.size());
+    std::vector<MergeCandidate> screenedNow(fresh.size());
     tbb::parallel_for(std::size_t(0), fresh.size(), [&](std::size_t f) {
       const int i = id[pairs[fresh[f]].a], j = id[pairs[fresh[f]].b];
-      measuredNow[f] = measureUnion(finals[i], finals[j], hulls[i], hulls[j],
-                                    mix64(static_cast<std::uint64_t>(i) << 32 | static_cast<std::uint32_t>(j)), model.get(), o, co);
+      screenedNow[f] = screenUnion(finals[i], finals[j], hulls[i], hulls[j],
+                                   mix64(static_cast<std::uint64_t>(i) << 32 | static_cast<std::uint32_t>(j)), model.get());
     });
     for (std::size_t f = 0; f < fresh.size(); ++f)
-      measured[{id[pairs[fresh[f]].a], id[pairs[fresh[f]].b]}] = std::move(measuredNow[f]);
+      measured[{id[pairs[fresh[f]].a], id[pairs[fresh[f]].b]}] = std::move(screenedNow[f]);
     std::vector<MergeCandidate*> unions(pairs.size());
     for (std::size_t k = 0; k < pairs.size(); ++k) unions[k] = &measured.at({id[pairs[k].a], id[pairs[k].b]});
-    std::vector<std::size_t> order(pairs.size());
-    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::vector<std::size_t> order;
+    for (std::size_t k = 0; k < pairs.size(); ++k)
+      if (unions[k]->screened) order.push_back(k);
     if (model)
       std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return unions[a]->cost < unions[b]->cost; });
     std::vector<char> changed(finals.size(), 0);
-    for (std::size_t k : order) {
+    auto open = [&](std::size_t k) { return !changed[id[pairs[k].a]] && !changed[id[pairs[k].b]]; };
+    const std::size_t batch = 2 * static_cast<std::size_t>(tbb::this_task_arena::max_concurrency());
+    for (std::size_t n = 0; n < order.size(); ++n) {
+      const std::size_t k = order[n];
+      if (!open(k)) continue;
+      if (!unions[k]->confirmed) {
+        std::vector<std::size_t> next;
+        for (std::size_t m = n; m < order.size() && next.size() < batch; ++m)
+          if (open(order[m]) && !unions[order[m]]->confirmed) next.push_back(order[m]);
+        tbb::parallel_for(std::size_t(0), next.size(), [&](std::size_t t) {
+          const std::size_t q = next[t];
+          confirmUnion(*unions[q], finals[id[pairs[q].a]], finals[id[pairs[q].b]], model.get(), o, co);
+        });
+      }
+      if (!unions[k]->ok) continue;
       const int i = id[pairs[k].a], j = id[pairs[k].b];
-      if (!unions[k]->ok || changed[i] || changed[j]) continue;
       finals[i].mesh = std::move(unions[k]->glued);
       hulls[i] = std::move(unions[k]->hull);
       finalInfo[i].concavity = unions[k]->concavity;

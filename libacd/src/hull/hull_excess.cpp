@@ -11,6 +11,7 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <array>
 #include <cmath>
 #include <memory>
@@ -205,28 +206,47 @@ namespace {
 
 /// A closed convex mesh's faces as half-spaces n.x <= d.
 struct HalfSpaces {
-  explicit HalfSpaces(const TriMesh& hull) {
+  explicit HalfSpaces(const TriMesh& hull) : box(boundingBox(hull)) {
     for (const Face& f : hull.faces) {
       const Vec3 &a = hull.vertices[f[0]], &b = hull.vertices[f[1]], &c = hull.vertices[f[2]];
       const Vec3 n = (b - a).cross(c - a);
       if (n.norm() == 0.0) continue;
-      normals.push_back(n.normalized());
-      offsets.push_back(normals.back().dot(a));
+      const Vec3 unit = n.normalized();
+      planes.push_back({unit.x(), unit.y(), unit.z(), unit.dot(a)});
+    }
+    // The faces of a cut cap share one plane: keep it once.
+    std::sort(planes.begin(), planes.end());
+    std::array<double, 4> last{2, 2, 2, 0};
+    for (const auto& p : planes) {
+      if (std::abs(p[0] - last[0]) <= 1e-12 && std::abs(p[1] - last[1]) <= 1e-12 && std::abs(p[2] - last[2]) <= 1e-12 &&
+          std::abs(p[3] - last[3]) <= 1e-12)
+        continue;
+      last = p;
+      nx.push_back(p[0]), ny.push_back(p[1]), nz.push_back(p[2]), offsets.push_back(p[3] + 1e-12);
     }
   }
+  std::vector<std::array<double, 4>> planes;
+  /// Within 1e-12 of every face's plane. Planes are taken in blocks without branches, which the
+  /// compiler turns into vector instructions: a point inside must be tested against all of them.
   bool contains(const Vec3& q) const {
-    for (std::size_t i = 0; i < normals.size(); ++i)
-      if (normals[i].dot(q) > offsets[i] + 1e-12) return false;
+    if ((q.array() < box.lo.array() - 1e-9).any() || (q.array() > box.hi.array() + 1e-9).any()) return false;
+    constexpr std::size_t kBlock = 16;
+    for (std::size_t start = 0; start < offsets.size(); start += kBlock) {
+      const std::size_t end = std::min(offsets.size(), start + kBlock);
+      int outside = 0;
+      for (std::size_t i = start; i < end; ++i) outside |= nx[i] * q.x() + ny[i] * q.y() + nz[i] * q.z() > offsets[i];
+      if (outside) return false;
+    }
     return true;
   }
-  std::vector<Vec3> normals;
-  std::vector<double> offsets;
+  Box3 box;
+  std::vector<double> nx, ny, nz, offsets;
 };
 
 }  // namespace
 
 double ModelExcess::addedVolume(const TriMesh& hull, const std::vector<const TriMesh*>& covered, int samples,
-                                std::uint64_t key) const {
+                                std::uint64_t key, double stopAbove) const {
   if (hull.faces.empty() || samples <= 0) return 0.0;
   // The hull as a fan of tetrahedra from its vertex centroid; a sample picks a tetrahedron by volume.
   Vec3 apex = Vec3::Zero();
@@ -243,7 +263,9 @@ double ModelExcess::addedVolume(const TriMesh& hull, const std::vector<const Tri
   std::vector<HalfSpaces> others;
   for (const TriMesh* h : covered) others.emplace_back(*h);
   int outside = 0;
-  for (int i = 0; i < samples; ++i) {
+  // The samples outside that prove the volume above stopAbove whatever the rest give.
+  const double enough = std::floor(stopAbove / total * samples) + 1;
+  for (int i = 0; i < samples && outside < enough; ++i) {
     const std::uint64_t base = mix64(key ^ mix64(static_cast<std::uint64_t>(i)));
     const double pick = unitInterval(mix64(base + 1)) * total;
     const std::size_t t = std::min<std::size_t>(std::upper_bound(cumulative.begin(), cumulative.end(), pick) -

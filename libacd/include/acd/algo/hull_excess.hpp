@@ -6,6 +6,7 @@
 #include <acd/mesh.hpp>
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -45,8 +46,10 @@ class ModelExcess {
   /// The volume of `hull` outside the model and outside every hull in `covered` (what a merge
   /// that replaces those hulls by `hull` adds to the union of hulls beyond the model), estimated
   /// from `samples` points spread uniformly in `hull` by a counter-based stream keyed by `key`.
+  /// Sampling stops as soon as the estimate must exceed `stopAbove`; the value returned is then
+  /// some value above it.
   double addedVolume(const TriMesh& hull, const std::vector<const TriMesh*>& covered, int samples,
-                     std::uint64_t key) const;
+                     std::uint64_t key, double stopAbove = std::numeric_limits<double>::infinity()) const;
 
  private:
   struct Impl;
