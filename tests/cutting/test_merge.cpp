@@ -66,20 +66,13 @@ TEST(Merge, NeverMoreComponentsThanWithoutAndStillWithinTau) {
   }
 }
 
-TEST(Merge, NearbyPairsAreTheBoxesWithinReach) {
-  // Gaps by hand: A-B 0.3 along x; A-C 0.6 along y; B-C (0.3, 0.6) apart, 0.671.
-  const std::vector<TriMesh> boxes{shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1)), shapes::box(Vec3(1.3, 0, 0), Vec3(2.3, 1, 1)),
-                                   shapes::box(Vec3(0, 1.6, 0), Vec3(1, 2.6, 1))};
-  auto pairsWithin = [&](double reach) {
-    std::vector<std::pair<int, int>> out;
-    for (const SharedFaces& p : nearbyPairs(boxes, reach)) out.emplace_back(p.a, p.b);
-    return out;
-  };
-  using Pairs = std::vector<std::pair<int, int>>;
-  EXPECT_EQ(pairsWithin(0.2), Pairs{});
-  EXPECT_EQ(pairsWithin(0.5), (Pairs{{0, 1}}));
-  EXPECT_EQ(pairsWithin(0.65), (Pairs{{0, 1}, {0, 2}}));
-  EXPECT_EQ(pairsWithin(0.7), (Pairs{{0, 1}, {0, 2}, {1, 2}}));
+TEST(Merge, TouchingPairsShareACorner) {
+  // A and B share a face, C touches A along an edge and B along a face, D is apart.
+  const std::vector<TriMesh> boxes{shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1)), shapes::box(Vec3(1, 0, 0), Vec3(2, 1, 1)),
+                                   shapes::box(Vec3(1, 1, 0), Vec3(2, 2, 1)), shapes::box(Vec3(3, 0, 0), Vec3(4, 1, 1))};
+  std::vector<std::pair<int, int>> pairs;
+  for (const SharedFaces& p : touchingPairs(boxes)) pairs.emplace_back(p.a, p.b);
+  EXPECT_EQ(pairs, (std::vector<std::pair<int, int>>{{0, 1}, {0, 2}, {1, 2}}));
 }
 
 TEST(Merge, GluingOntoAPieceOfTwoShellsKeepsTheOtherShell) {
@@ -94,34 +87,47 @@ TEST(Merge, GluingOntoAPieceOfTwoShellsKeepsTheOtherShell) {
   EXPECT_NEAR(signedVolume(glued), signedVolume(sphere) + 1.0, 1e-12);
 }
 
-// Two unit cubes side by side: held to the model, they share one hull when the gap between them is
-// narrow enough that no point of that hull is farther than tau from a cube (half the gap, in units
-// of the model's radius); never when the merge is held to each component. (Without repair: with
-// it, each shell is decomposed on its own, docs/ALGORITHM.md section 11.)
-TEST(Merge, HeldToTheModelPiecesApartShareAHullWhenTheGapIsWithinTau) {
-  for (double gap : {0.05, 0.15}) {
-    const TriMesh cubes = concatenate({shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1)), shapes::box(Vec3(1 + gap, 0, 0), Vec3(2 + gap, 1, 1))});
-    const double radius = std::sqrt((2 + gap) * (2 + gap) + 2) / 2;  // the smallest sphere around both
-    for (MergeScope scope : {MergeScope::Component, MergeScope::Model}) {
-      SCOPED_TRACE("gap " + std::to_string(gap) + (scope == MergeScope::Model ? ", model" : ", component"));
-      DecomposeOptions o;
-      o.tau = 0.05;
-      o.mergeScope = scope;
-      o.repair = false;
-      const Decomposition d = decompose(cubes, o);
-      ASSERT_TRUE(d.status.ok()) << d.status.message;
-      const bool within = gap / 2 / radius <= 0.96 * o.tau;
-      EXPECT_EQ(d.components.size(), scope == MergeScope::Model && within ? 1u : 2u);
-      double volume = 0;
-      for (const Component& c : d.components) {
-        EXPECT_TRUE(isClosedOriented(c.mesh));
-        volume += c.volume;
-      }
-      EXPECT_NEAR(volume, d.stats.inputVolume, 1e-9);
-      if (d.components.size() == 1) {
-        EXPECT_EQ(splitEdgeConnected(d.components[0].mesh).size(), 2u);
-        EXPECT_NEAR(d.components[0].hullExcess, gap / 2 / radius, 2e-3);  // found to the resolution, tau / 32
-      }
+namespace {
+
+/// The box with its face on the plane x = `x` split into four triangles around its centre: the
+/// same solid, but no triangle of that face matches the plain box's.
+TriMesh boxWithSplitFace(const Vec3& lo, const Vec3& hi, double x) {
+  TriMesh box = shapes::box(lo, hi);
+  const int centre = static_cast<int>(box.vertices.size());
+  box.vertices.push_back(Vec3(x, (lo.y() + hi.y()) / 2, (lo.z() + hi.z()) / 2));
+  std::vector<Face> kept, onFace;
+  for (const Face& f : box.faces)
+    (box.vertices[f[0]].x() == x && box.vertices[f[1]].x() == x && box.vertices[f[2]].x() == x ? onFace : kept).push_back(f);
+  EXPECT_EQ(onFace.size(), 2u);
+  // The quad's boundary edges are the edges that only one of its two triangles has.
+  for (const Face& f : onFace)
+    for (int k = 0; k < 3; ++k) {
+      const int u = f[k], v = f[(k + 1) % 3];
+      const Face& g = &f == &onFace[0] ? onFace[1] : onFace[0];
+      const bool diagonal = std::count(g.begin(), g.end(), u) && std::count(g.begin(), g.end(), v);
+      if (!diagonal) kept.push_back({u, v, centre});
     }
-  }
+  box.faces = kept;
+  return box;
+}
+
+}  // namespace
+
+// Two unit cubes side by side whose common face is triangulated differently on each side: they
+// share no triangle, so they do not glue into one solid; joined, they are two shells.
+TEST(Merge, TouchingPiecesThatDoNotGlueAreJoinedAsTwoShells) {
+  const TriMesh a = shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1)), b = boxWithSplitFace(Vec3(1, 0, 0), Vec3(2, 1, 1), 1.0);
+  ASSERT_TRUE(isClosedOriented(b));
+  TriMesh glued;
+  EXPECT_FALSE(glueAlongSharedFaces(a, b, glued));
+  const TriMesh joined = joinPieces(a, b);
+  EXPECT_TRUE(isClosedOriented(joined));
+  EXPECT_EQ(splitEdgeConnected(joined).size(), 2u);
+  EXPECT_NEAR(signedVolume(joined), 2.0, 1e-12);
+  EXPECT_EQ(touchingPairs({a, b}).size(), 1u);
+  EXPECT_TRUE(sharedFacePairs({a, b}).empty());
+  // Where the two glue, joining is gluing: one shell.
+  const TriMesh c = shapes::box(Vec3(1, 0, 0), Vec3(2, 1, 1));
+  EXPECT_EQ(splitEdgeConnected(joinPieces(a, c)).size(), 1u);
+  EXPECT_NEAR(signedVolume(joinPieces(a, c)), 2.0, 1e-12);
 }

@@ -208,8 +208,8 @@ CLI::App* addDecomposeCommand(CLI::App& app, DecomposeArgs& a) {
                 "rotation, translation or face order; cuts are computed on coordinates rounded to 2.4e-7 of the radius)");
   dec->add_flag("--invariant", a.invariantFlag, "Decompose in the shape's own frame (the default)")->group("");
   dec->add_option("--merge-scope", a.mergeScope,
-                  "What a merge of two pieces must keep: 'model' (the union's hull within tau of the model; pieces apart "
-                  "may share a hull; fewer parts) or 'component' (neighbours only, the union's own concavity within tau, "
+                  "What a merge of two pieces must keep: 'model' (the union's hull within tau of the model; touching pieces "
+                  "that do not glue may share a hull; fewer parts) or 'component' (neighbours only, the union's own concavity within tau, "
                   "the paper's promise for every component)")
       ->check(CLI::IsMember({"model", "component"}))
       ->capture_default_str();

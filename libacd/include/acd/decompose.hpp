@@ -19,8 +19,8 @@ enum class MergeScope {
   Component,
   /// The union's hull within tau of the model, and at most 10 % of the union's volume added outside
   /// the model and the two hulls: a component may be more concave than tau where its pockets are
-  /// filled by other components. Pieces apart (boxes within tau) may share one hull too: a
-  /// component may then have several shells. Fewer parts for the same hulls-to-model fidelity.
+  /// filled by other components. Touching pieces that do not glue into one solid may share one
+  /// hull too: a component may then have several shells. Fewer parts for the same hulls-to-model fidelity.
   Model,
 };
 
@@ -59,7 +59,7 @@ Status validate(const DecomposeOptions& options);
 
 struct Component {
   TriMesh mesh;            // closed, outward; input coordinates. With MergeScope::Model it may have
-                           // several shells that do not touch (two toes under one hull)
+                           // several shells (touching pieces that do not glue into one solid)
   TriMesh hull;            // its convex hull; input coordinates
   double volume = 0.0;     // normalised units
   double hullVolume = 0.0; // normalised units

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <map>
-#include <tuple>
 #include <unordered_map>
 
 namespace acd {
@@ -60,21 +59,29 @@ bool glueAlongSharedFaces(const TriMesh& a, const TriMesh& b, TriMesh& out) {
   return true;
 }
 
-std::vector<SharedFaces> nearbyPairs(const std::vector<TriMesh>& meshes, double reach) {
-  std::vector<Box3> boxes;
-  for (const TriMesh& m : meshes) boxes.push_back(boundingBox(m));
-  std::vector<int> byLow(meshes.size());
-  for (int i = 0; i < static_cast<int>(meshes.size()); ++i) byLow[i] = i;
-  std::stable_sort(byLow.begin(), byLow.end(), [&](int a, int b) { return boxes[a].lo.x() < boxes[b].lo.x(); });
+std::vector<SharedFaces> touchingPairs(const std::vector<TriMesh>& meshes) {
+  std::vector<std::pair<Corner, int>> corners;  // every corner of every mesh, with its mesh
+  for (int i = 0; i < static_cast<int>(meshes.size()); ++i)
+    for (const Vec3& v : meshes[i].vertices) corners.emplace_back(cornerOf(v), i);
+  std::sort(corners.begin(), corners.end());
+  std::vector<std::pair<int, int>> touching;
+  for (std::size_t s = 0, t = 0; s < corners.size(); s = t) {
+    for (t = s; t < corners.size() && corners[t].first == corners[s].first; ++t) {}
+    for (std::size_t x = s; x < t; ++x)
+      for (std::size_t y = x + 1; y < t; ++y)
+        if (corners[x].second != corners[y].second) touching.emplace_back(corners[x].second, corners[y].second);
+  }
+  std::sort(touching.begin(), touching.end());
+  touching.erase(std::unique(touching.begin(), touching.end()), touching.end());
   std::vector<SharedFaces> pairs;
-  for (std::size_t s = 0; s < byLow.size(); ++s)
-    for (std::size_t t = s + 1; t < byLow.size() && boxes[byLow[t]].lo.x() <= boxes[byLow[s]].hi.x() + reach; ++t) {
-      const Box3 &p = boxes[byLow[s]], &q = boxes[byLow[t]];
-      const Vec3 gap = (p.lo - q.hi).cwiseMax(q.lo - p.hi).cwiseMax(0.0);
-      if (gap.norm() <= reach) pairs.push_back({std::min(byLow[s], byLow[t]), std::max(byLow[s], byLow[t]), 0.0});
-    }
-  std::sort(pairs.begin(), pairs.end(), [](const SharedFaces& x, const SharedFaces& y) { return std::tie(x.a, x.b) < std::tie(y.a, y.b); });
+  for (const auto& [i, j] : touching) pairs.push_back({i, j, 0.0});
   return pairs;
+}
+
+TriMesh joinPieces(const TriMesh& a, const TriMesh& b) {
+  TriMesh out;
+  if (!glueAlongSharedFaces(a, b, out)) out = concatenate({a, b});
+  return out;
 }
 
 std::vector<SharedFaces> sharedFacePairs(const std::vector<TriMesh>& meshes) {

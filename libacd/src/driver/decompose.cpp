@@ -191,15 +191,11 @@ constexpr double kModelMergeGrowth = 0.1;
 /// Points per union for that volume: its standard error is below 0.5 % of the hull's volume.
 constexpr int kModelMergeSamples = 4096;
 
-/// Held to the model, the merge also tries pieces that do not touch, when their boxes are within
-/// this many tau: two fingers or toes may share one hull (docs/ALGORITHM.md section 11).
-constexpr double kModelMergeReach = 1.0;
-
-/// Adds to `pairs` the pairs of `meshes` within `reach` that it does not hold yet.
-void appendNearbyPairs(std::vector<SharedFaces>& pairs, const std::vector<TriMesh>& meshes, double reach) {
+/// Adds to `pairs` the pairs of `more` that it does not hold yet.
+void appendNewPairs(std::vector<SharedFaces>& pairs, const std::vector<SharedFaces>& more) {
   std::set<std::pair<int, int>> have;
   for (const SharedFaces& p : pairs) have.insert({p.a, p.b});
-  for (const SharedFaces& p : nearbyPairs(meshes, reach))
+  for (const SharedFaces& p : more)
     if (!have.count({p.a, p.b})) pairs.push_back(p);
 }
 
@@ -246,11 +242,12 @@ MergeCandidate screenUnion(const Piece& a, const Piece& b, const TriMesh& hullA,
 void confirmUnion(MergeCandidate& m, const Piece& a, const Piece& b, const ModelExcess* model,
                   const DecomposeOptions& o, const ConcavityOptions& co) {
   m.confirmed = true;
-  // Held to the model, pieces that do not glue into one solid (apart, or touching without sharing
-  // whole triangles) may still share one hull: the component keeps them as separate shells.
-  if (!glueAlongSharedFaces(a.mesh, b.mesh, m.glued)) {
-    if (!model) return;
-    m.glued = concatenate({a.mesh, b.mesh});
+  // Held to the model, pieces that touch but do not glue into one solid (a cap that a later cut
+  // split on one side only) may still share one hull: the component keeps them as two shells.
+  if (model) {
+    m.glued = joinPieces(a.mesh, b.mesh);
+  } else if (!glueAlongSharedFaces(a.mesh, b.mesh, m.glued)) {
+    return;
   }
   if (model) {
     const HullExcess e = model->measure(m.hull, kExcessLimit * o.tau, kExcessResolution * o.tau);
@@ -270,7 +267,7 @@ void confirmUnion(MergeCandidate& m, const Piece& a, const Piece& b, const Model
 
 /// Merge pass: the greedy recursion sometimes cuts where a coarser split would have done. Glue
 /// neighbours back along their shared cut faces while the union passes the test of o.mergeScope;
-/// held to the model, pieces within kModelMergeReach tau are tried too. Each round screens every
+/// held to the model, every pair of pieces that touch is tried. Each round screens every
 /// candidate union not screened before, in parallel; then the screened ones are taken in order
 /// (Component: largest contact first; Model: least volume added outside the model first, ties by
 /// pair order), each confirmed when its turn comes, skipping pairs whose pieces changed in that
@@ -294,7 +291,7 @@ void mergePieces(std::vector<Piece>& finals, std::vector<Component>& finalInfo, 
     for (std::size_t i = 0; i < finals.size(); ++i)
       if (alive[i] && !finalInfo[i].unresolved) meshes.push_back(finals[i].mesh), id.push_back(static_cast<int>(i));
     std::vector<SharedFaces> pairs = sharedFacePairs(meshes);
-    if (model) appendNearbyPairs(pairs, meshes, kModelMergeReach * o.tau);
+    if (model) appendNewPairs(pairs, touchingPairs(meshes));
     // A pair whose pieces are unchanged since it was screened keeps its screening (and confirmation).
     std::vector<std::size_t> fresh;
     for (std::size_t k = 0; k < pairs.size(); ++k)

@@ -14,6 +14,10 @@ namespace acd {
 /// closed, consistently oriented mesh, or gluing joined no two shells into one.
 bool glueAlongSharedFaces(const TriMesh& a, const TriMesh& b, TriMesh& out);
 
+/// The two closed, outward meshes as one: glued where that makes one solid, else side by side as
+/// separate shells (pieces that touch without sharing their whole contact, or apart).
+TriMesh joinPieces(const TriMesh& a, const TriMesh& b);
+
 /// Pairs (i, j), i < j, of meshes that share at least one triangle, with the shared area,
 /// sorted by decreasing shared area (ties by index).
 struct SharedFaces {
@@ -22,8 +26,8 @@ struct SharedFaces {
 };
 std::vector<SharedFaces> sharedFacePairs(const std::vector<TriMesh>& meshes);
 
-/// Pairs (i, j), i < j, of meshes whose bounding boxes lie within `reach` of each other (touching
-/// or not), sorted by (i, j): the pieces the merge pass held to the model may join under one hull.
-std::vector<SharedFaces> nearbyPairs(const std::vector<TriMesh>& meshes, double reach);
+/// Pairs (i, j), i < j, of meshes that share at least one corner position (touching, whether or not
+/// they share a whole triangle), sorted by (i, j), with no area.
+std::vector<SharedFaces> touchingPairs(const std::vector<TriMesh>& meshes);
 
 }  // namespace acd
