@@ -486,12 +486,12 @@ TEST_P(DecomposeCorpus, Invariants) {
   // merge held to the model fits it in one hull (its hole is narrow; the hull stays within tau of
   // the model, checked above with the tests' own distances).
   EXPECT_GE(rep.components, c.model == "handle" && c.tau == 0.2 ? 1 : 2);
-  // Upper bounds at tau 0.05: 1.5 times the parts of commit 49eba3d (the acd command's options,
+  // Upper bounds at tau 0.05: 1.5 times the parts of commit 8fe3a39 (the acd command's options,
   // without the wrap), so that a change that makes many more parts fails here rather than going
   // unnoticed.
-  const std::map<std::string, int> measured{{"armadillo", 39}, {"bunny00", 27}, {"camel", 34}, {"cow", 25},
-                                            {"dino", 40},      {"eight", 18},   {"elephant", 37}, {"handle", 6},
-                                            {"homer", 23},     {"knot", 36}};
+  const std::map<std::string, int> measured{{"armadillo", 30}, {"bunny00", 15}, {"camel", 26}, {"cow", 20},
+                                            {"dino", 26},      {"eight", 15},   {"elephant", 29}, {"handle", 6},
+                                            {"homer", 12},     {"knot", 30}};
   if (c.tau == 0.05 && measured.count(c.model))
     EXPECT_LE(rep.components, 3 * measured.at(c.model) / 2) << c.model << ": more parts than the bound";
 }
