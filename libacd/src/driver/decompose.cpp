@@ -14,6 +14,7 @@
 #include <acd/hull.hpp>
 #include <acd/robust.hpp>
 
+#include "held_to.hpp"
 #include "rounds.hpp"
 
 #include <tbb/parallel_for.h>
@@ -424,8 +425,12 @@ int countNotches(const TriMesh& mesh, double angle) {
   return notches;
 }
 
-Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options) {
-  if (options.repair) return decomposeRepaired(mesh, options);  // acd/robust.hpp; comes back with repair off
+namespace {
+
+/// The decomposition of a solid with repairs done; the merge pass held to the model measures
+/// against `heldTo` (input coordinates) to `mergeTau` when given, else against the solid itself.
+Decomposition decomposeSolid(const TriMesh& mesh, const TriMesh* heldTo, double mergeTau,
+                             const DecomposeOptions& options) {
   const auto start = Clock::now();
   Decomposition result;
   result.status = validate(options);
@@ -449,7 +454,7 @@ Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options) {
   std::vector<Piece> pending = firstPieces(prepared.components, o.invariant, result, inverse);
   std::vector<TriMesh> firstMeshes;  // the model as decomposed, for the merge pass
   for (const Piece& p : pending) firstMeshes.push_back(p.mesh);
-  const TriMesh model = concatenate(firstMeshes);
+  const TriMesh model = heldTo ? applyNormalization(*heldTo, result.normalization) : concatenate(firstMeshes);
   result.times.prepare = secondsSince(t);
 
   // Every parallel loop below, nested ones included, runs on these workers only.
@@ -474,7 +479,9 @@ Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options) {
     for (Outcome& out : rounds.outcomes) finalInfo.push_back(std::move(out.component));
 
     t = Clock::now();
-    if (o.merge) mergePieces(finals, finalInfo, model, o, result.stats);
+    DecomposeOptions mergeOptions = o;
+    if (heldTo) mergeOptions.tau = mergeTau;
+    if (o.merge) mergePieces(finals, finalInfo, model, mergeOptions, result.stats);
     result.times.merging = secondsSince(t);
 
     t = Clock::now();
@@ -497,6 +504,20 @@ Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options) {
   });
   result.times.total = secondsSince(start);
   return result;
+}
+
+}  // namespace
+
+Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options) {
+  if (options.repair) return decomposeRepaired(mesh, options);  // acd/robust.hpp; comes back with repair off
+  return decomposeSolid(mesh, nullptr, options.tau, options);
+}
+
+Decomposition decomposeHeldTo(const TriMesh& mesh, const TriMesh& wrapped, const DecomposeOptions& options,
+                              double mergeTau) {
+  DecomposeOptions o = options;
+  o.repair = false;
+  return decomposeSolid(mesh, &wrapped, mergeTau, o);
 }
 
 }  // namespace acd

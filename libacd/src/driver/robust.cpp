@@ -6,6 +6,8 @@
 #include <acd/repair.hpp>
 #include <acd/robust.hpp>
 
+#include "held_to.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -171,9 +173,11 @@ PreparedModel prepareModel(const TriMesh& mesh, const DecomposeOptions& options,
 
 namespace {
 
-/// One shell decomposed alone, at tau in the model's units, its figures brought back to them.
+/// One shell decomposed alone, at tau in the model's units, its figures brought back to them. A
+/// wrap of a closed shell is given that shell (`wrapped`) and the user's tau (`wrappedTau`, model
+/// units): its merges are held to them.
 Decomposition decomposeShell(const TriMesh& shell, int index, const DecomposeOptions& o, double modelScale,
-                             int doneBefore) {
+                             int doneBefore, const TriMesh* wrapped = nullptr, double wrappedTau = 0.0) {
   DecomposeOptions inner = o;
   inner.repair = false;
   const double k = std::max(1.0, minimumSphereNormalization(shell).scale / modelScale);  // shell units per model unit
@@ -181,7 +185,8 @@ Decomposition decomposeShell(const TriMesh& shell, int index, const DecomposeOpt
   inner.epsilon = std::min(inner.tau, o.epsilon * k);
   inner.delta = std::min(inner.tau, o.delta * k);
   if (o.progress) inner.progress = [&](int done, int pending) { o.progress(doneBefore + done, pending); };
-  Decomposition d = decompose(shell, inner);
+  Decomposition d = wrapped ? decomposeHeldTo(shell, *wrapped, inner, std::min(2.0, wrappedTau * k))
+                            : decompose(shell, inner);
   if (!d.status.ok()) return d;
   const double k3 = k * k * k;
   for (Component& c : d.components) {
@@ -280,7 +285,7 @@ Decomposition decomposeRepaired(const TriMesh& mesh, const DecomposeOptions& opt
         redo.components.clear();
         for (const TriMesh& s : w.shells) {
           Decomposition part = decomposeShell(s, static_cast<int>(i), optionsForWrap(o, s, prepared.shells[i], scale),
-                                              scale, done);
+                                              scale, done, &prepared.shells[i], o.tau);
           if (!part.status.ok()) {
             redo.status = part.status;
             break;
