@@ -243,19 +243,16 @@ MergeCandidate screenUnion(const Piece& a, const Piece& b, const TriMesh& hullA,
 void confirmUnion(MergeCandidate& m, const Piece& a, const Piece& b, const ModelExcess* model,
                   const DecomposeOptions& o, const ConcavityOptions& co) {
   m.confirmed = true;
-  // Held to the model, pieces that touch but do not glue into one solid (a cap that a later cut
-  // split on one side only) may still share one hull: the component keeps them as two shells.
   if (model) {
-    m.glued = joinPieces(a.mesh, b.mesh);
-  } else if (!glueAlongSharedFaces(a.mesh, b.mesh, m.glued)) {
-    return;
-  }
-  if (model) {
+    // Pieces that touch but do not glue into one solid (a cap that a later cut split on one side
+    // only) may still share one hull: the component keeps them as two shells.
     const HullExcess e = model->measure(m.hull, kExcessLimit * o.tau, kExcessResolution * o.tau);
     m.ok = !e.exceeds;
     m.hullExcess = e.distance;
+    if (m.ok) m.glued = joinPieces(a.mesh, b.mesh);
     return;
   }
+  if (!glueAlongSharedFaces(a.mesh, b.mesh, m.glued)) return;
   SurfaceGraph graph(m.glued);
   m.concavity = measureConcavity(m.glued, graph, co).concavity;
   if (m.concavity > o.tau) return;
@@ -480,7 +477,7 @@ Decomposition decomposeSolid(const TriMesh& mesh, const TriMesh* heldTo, double 
 
     t = Clock::now();
     DecomposeOptions mergeOptions = o;
-    if (heldTo) mergeOptions.tau = mergeTau;
+    mergeOptions.tau = mergeTau;
     if (o.merge) mergePieces(finals, finalInfo, model, mergeOptions, result.stats);
     result.times.merging = secondsSince(t);
 

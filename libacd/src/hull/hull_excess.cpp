@@ -11,7 +11,6 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <array>
 #include <cmath>
 #include <memory>
@@ -207,6 +206,7 @@ namespace {
 /// A closed convex mesh's faces as half-spaces n.x <= d.
 struct HalfSpaces {
   explicit HalfSpaces(const TriMesh& hull) : box(boundingBox(hull)) {
+    std::vector<std::array<double, 4>> planes;  // unit normal, offset
     for (const Face& f : hull.faces) {
       const Vec3 &a = hull.vertices[f[0]], &b = hull.vertices[f[1]], &c = hull.vertices[f[2]];
       const Vec3 n = (b - a).cross(c - a);
@@ -225,7 +225,6 @@ struct HalfSpaces {
       nx.push_back(p[0]), ny.push_back(p[1]), nz.push_back(p[2]), offsets.push_back(p[3] + 1e-12);
     }
   }
-  std::vector<std::array<double, 4>> planes;
   /// Within 1e-12 of every face's plane. Planes are taken in blocks without branches, which the
   /// compiler turns into vector instructions: a point inside must be tested against all of them.
   bool contains(const Vec3& q) const {
