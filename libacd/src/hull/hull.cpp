@@ -1,11 +1,10 @@
-// CGAL's convex_hull_3 (quickhull with exact predicates) into a polygon soup, mapped back to input indices.
+// The convex hull of a point set in canonical form: quickhull (quickhull.cpp), then facets as polygons of their corners, triangulated alike whatever the input order.
 #include <acd/hull.hpp>
 
+#include <acd/algo/quickhull.hpp>
+#include <acd/algo/union_find.hpp>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Mpzf.h>
-#include <CGAL/Random.h>
-#include <CGAL/Surface_mesh.h>
-#include <CGAL/convex_hull_3.h>
 
 #include <algorithm>
 #include <array>
@@ -25,61 +24,13 @@ struct PointHash {
   }
 };
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using HullMesh = CGAL::Surface_mesh<K::Point_3>;
-
-/// Sign of (a - b) . ((q - p) x (r - p)), exactly, for one facet p, q, r and many points. A double
-/// evaluation decides when it is clear of its rounding error (below 10 eps of the terms' absolute
-/// sum; 1e-14 leaves a wide margin); else ring arithmetic on the doubles in CGAL's Mpzf, which is
-/// exact and, unlike the rationals of CGAL's own hull predicate, needs no gcd: pieces' cut faces
-/// make these near-zero cases common.
-class FacetSide {
- public:
-  FacetSide(const K::Point_3& p, const K::Point_3& q, const K::Point_3& r) : p_(p), q_(q), r_(r) {
-    const double ux = q.x() - p.x(), uy = q.y() - p.y(), uz = q.z() - p.z();
-    const double vx = r.x() - p.x(), vy = r.y() - p.y(), vz = r.z() - p.z();
-    n_[0] = uy * vz - uz * vy, n_[1] = uz * vx - ux * vz, n_[2] = ux * vy - uy * vx;
-    m_[0] = std::abs(uy * vz) + std::abs(uz * vy);
-    m_[1] = std::abs(uz * vx) + std::abs(ux * vz);
-    m_[2] = std::abs(ux * vy) + std::abs(uy * vx);
-  }
-  CGAL::Sign operator()(const K::Point_3& a, const K::Point_3& b) const {
-    const double dx = a.x() - b.x(), dy = a.y() - b.y(), dz = a.z() - b.z();
-    const double det = dx * n_[0] + dy * n_[1] + dz * n_[2];
-    const double terms = std::abs(dx) * m_[0] + std::abs(dy) * m_[1] + std::abs(dz) * m_[2];
-    if (det > 1e-14 * terms) return CGAL::POSITIVE;
-    if (det < -1e-14 * terms) return CGAL::NEGATIVE;
-    if (terms == 0) return CGAL::ZERO;
-    using E = CGAL::Mpzf;
-    const E eux = E(q_.x()) - E(p_.x()), euy = E(q_.y()) - E(p_.y()), euz = E(q_.z()) - E(p_.z());
-    const E evx = E(r_.x()) - E(p_.x()), evy = E(r_.y()) - E(p_.y()), evz = E(r_.z()) - E(p_.z());
-    const E edx = E(a.x()) - E(b.x()), edy = E(a.y()) - E(b.y()), edz = E(a.z()) - E(b.z());
-    const E e = edx * (euy * evz - euz * evy) + edy * (euz * evx - eux * evz) + edz * (eux * evy - euy * evx);
-    return e.sign();
-  }
-
- private:
-  const K::Point_3 &p_, &q_, &r_;
-  double n_[3], m_[3];
-};
-
-/// CGAL's hull traits with the two predicates quickhull spends its time in (which side of a facet
-/// a point is on; which of two points is farther) evaluated by FacetSide. Same answers, exactly.
-struct HullTraits : CGAL::Convex_hull_traits_3<K, HullMesh, CGAL::Tag_true> {
-  struct Less_signed_distance_to_plane_3 {
-    using result_type = bool;
-    bool operator()(const Plane_3& h, const Point_3& s, const Point_3& t) const {
-      return FacetSide(h.p(), h.q(), h.r())(s, t) == CGAL::NEGATIVE;
-    }
-  };
-  Less_signed_distance_to_plane_3 less_signed_distance_to_plane_3_object() const { return {}; }
-};
 
 // Akl-Toussaint elimination: the points extreme in 26 directions span a polytope inside the hull,
 // and a point strictly inside it cannot be a hull vertex. The test is a floating-point orientation
 // with a margin above its worst rounding error, so a point is dropped only when it is certainly
 // inside; points on or near a face stay. The hull is the same; quickhull sees a fraction of the
 // points (most of a piece's surface lies inside its hull).
-void dropInteriorPoints(std::vector<K::Point_3>& pts) {
+void dropInteriorPoints(std::vector<Vec3>& pts, std::vector<int>& orig) {
   if (pts.size() < 256) return;
   std::vector<std::size_t> extreme;
   for (int dx = -1; dx <= 1; ++dx)
@@ -97,11 +48,10 @@ void dropInteriorPoints(std::vector<K::Point_3>& pts) {
   std::sort(extreme.begin(), extreme.end());
   extreme.erase(std::unique(extreme.begin(), extreme.end()), extreme.end());
   if (extreme.size() < 4) return;
-  std::vector<K::Point_3> corners;
+  std::vector<Vec3> corners;
   for (std::size_t i : extreme) corners.push_back(pts[i]);
-  CGAL::Surface_mesh<K::Point_3> inner;
-  CGAL::convex_hull_3(corners.begin(), corners.end(), inner);
-  if (inner.number_of_faces() < 4) return;
+  const QuickHull inner = quickHull(corners);
+  if (inner.degenerate || inner.failed) return;
   double lo[3] = {pts[0].x(), pts[0].y(), pts[0].z()}, hi[3] = {lo[0], lo[1], lo[2]};
   for (const auto& p : pts)
     for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
@@ -112,17 +62,12 @@ void dropInteriorPoints(std::vector<K::Point_3>& pts) {
     double a[3], n[3];
   };
   std::vector<Facet> facets;
-  for (auto f : inner.faces()) {
-    auto h = inner.halfedge(f);
-    const auto& a = inner.point(inner.source(h));
-    const auto& b = inner.point(inner.target(h));
-    const auto& c = inner.point(inner.target(inner.next(h)));
-    const double u[3] = {b.x() - a.x(), b.y() - a.y(), b.z() - a.z()};
-    const double v[3] = {c.x() - a.x(), c.y() - a.y(), c.z() - a.z()};
-    facets.push_back({{a.x(), a.y(), a.z()},
-                      {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]}});
+  for (const auto& f : inner.faces) {
+    const Vec3& a = corners[f[0]];
+    const Vec3 n = (corners[f[1]] - a).cross(corners[f[2]] - a);
+    facets.push_back({{a.x(), a.y(), a.z()}, {n.x(), n.y(), n.z()}});
   }
-  // Outward normals (CGAL's orientation), checked: the corners' centroid must be inside every facet.
+  // Outward normals, checked: the corners' centroid must be inside every facet.
   double centre[3] = {0, 0, 0};
   for (const auto& c : corners)
     for (int k = 0; k < 3; ++k) centre[k] += c[k] / static_cast<double>(corners.size());
@@ -139,129 +84,118 @@ void dropInteriorPoints(std::vector<K::Point_3>& pts) {
         break;
       }
     }
-    if (!inside) pts[kept++] = p;
+    if (!inside) orig[kept] = orig[i], pts[kept++] = p;
   }
   pts.resize(kept);
+  orig.resize(kept);
 }
 
 }  // namespace
-}  // namespace acd
-
-namespace CGAL::Convex_hull_3::internal {
-/// Quickhull's side-of-facet test for HullTraits (see FacetSide).
-template <>
-class Is_on_positive_side_of_plane_3<acd::HullTraits, boost::false_type> {
-  const acd::K::Point_3& p;
-  acd::FacetSide side;
-
- public:
-  using Protector = Protect_FPU_rounding<false>;
-  Is_on_positive_side_of_plane_3(const acd::HullTraits&, const acd::K::Point_3& p_, const acd::K::Point_3& q_,
-                                 const acd::K::Point_3& r_)
-      : p(p_), side(p_, q_, r_) {}
-  bool operator()(const acd::K::Point_3& s) const { return side(s, p) == POSITIVE; }
-};
-}  // namespace CGAL::Convex_hull_3::internal
-
-namespace acd {
 
 ConvexHull convexHull(const std::vector<Vec3>& points) {
   ConvexHull out;
-  std::vector<K::Point_3> pts;
+  std::vector<Vec3> pts;
+  std::vector<int> orig;  // pts -> index in points
   pts.reserve(points.size());
+  orig.reserve(points.size());
   std::unordered_map<std::array<double, 3>, int, PointHash> index;
   index.reserve(points.size() * 2);
   for (int i = 0; i < static_cast<int>(points.size()); ++i) {
     const Vec3& p = points[i];
-    // Unique points only: CGAL 5.5's quickhull can erase a list element twice on duplicates (CGAL issue 6543).
-    if (index.emplace(std::array<double, 3>{p.x(), p.y(), p.z()}, i).second) pts.emplace_back(p.x(), p.y(), p.z());
+    if (index.emplace(std::array<double, 3>{p.x(), p.y(), p.z()}, i).second) pts.push_back(p), orig.push_back(i);
   }
   if (pts.size() < 4) {
     out.degenerate = true;
     return out;
   }
-  // Into a Surface_mesh: CGAL 5.5's polygon-soup output of convex_hull_3 is unreliable
-  // (different, wrong face counts from run to run on the same points).
-  CGAL::get_default_random() = CGAL::Random(0);  // per-thread state: keep the result thread-independent
-  dropInteriorPoints(pts);
-  HullMesh sm;
-  CGAL::convex_hull_3(pts.begin(), pts.end(), sm, HullTraits());
-  if (sm.number_of_faces() < 4) {
+  dropInteriorPoints(pts, orig);
+  const QuickHull qh = quickHull(pts);
+  if (qh.degenerate || qh.failed || qh.faces.size() < 4) {
     out.degenerate = true;
     return out;
   }
-  // Canonical output, whatever CGAL's internal order (which follows heap addresses, so it changes
-  // with threads): vertices sorted by input index, each planar facet re-triangulated by clipping
-  // ears from its lowest-index corner, faces sorted.
-  using SM = CGAL::Surface_mesh<K::Point_3>;
-  std::vector<int> src(sm.number_of_vertices() + sm.number_of_removed_vertices(), -1);
-  std::vector<int> sorted;
-  for (auto v : sm.vertices()) {
-    const auto& p = sm.point(v);
-    src[v.idx()] = index.at({p.x(), p.y(), p.z()});
-    sorted.push_back(src[v.idx()]);
+  // Canonical output, whatever order quickhull added the points in: the hull's facets (triangles
+  // joined across exactly coplanar edges) as polygons of their corners only (a point on an edge
+  // or inside a facet is no corner), vertices sorted by input index, each facet triangulated by
+  // clipping ears, faces sorted.
+  const int nf = static_cast<int>(qh.faces.size());
+  UnionFind facet(nf);
+  for (int f = 0; f < nf; ++f) {
+    const auto& v = qh.faces[f];
+    const TriangleSide side(pts[v[0]], pts[v[1]], pts[v[2]]);
+    for (int k = 0; k < 3; ++k) {
+      const int g = qh.across[f][k];
+      if (g < f) continue;
+      const auto& w = qh.faces[g];
+      const int far = w[0] != v[k] && w[0] != v[(k + 1) % 3] ? w[0] : w[1] != v[k] && w[1] != v[(k + 1) % 3] ? w[1] : w[2];
+      if (side.sign(pts[far]) == 0) facet.joinKeepingSmallest(f, g);
+    }
   }
-  std::sort(sorted.begin(), sorted.end());
-  std::unordered_map<int, int> hullIndex;
-  for (int i = 0; i < static_cast<int>(sorted.size()); ++i) {
-    hullIndex[sorted[i]] = i;
-    out.mesh.vertices.push_back(points[sorted[i]]);
-    out.source.push_back(sorted[i]);
+  std::vector<int> members(nf, 0);
+  for (int f = 0; f < nf; ++f) ++members[facet.find(f)];
+  std::vector<std::array<int, 3>> triangles;  // pts indices
+  std::vector<std::array<int, 3>> boundary;    // facet, corner, next corner: edges of facets of several triangles
+  for (int f = 0; f < nf; ++f) {
+    const int g = facet.find(f);
+    if (members[g] == 1) {
+      triangles.push_back(qh.faces[f]);  // a facet of one triangle: its own triangulation
+      continue;
+    }
+    for (int k = 0; k < 3; ++k)
+      if (facet.find(qh.across[f][k]) != g) boundary.push_back({g, qh.faces[f][k], qh.faces[f][(k + 1) % 3]});
   }
-  // Facets: faces joined across exactly coplanar edges.
-  const int nf = static_cast<int>(sm.number_of_faces() + sm.number_of_removed_faces());
-  std::vector<int> group(nf);
-  std::iota(group.begin(), group.end(), 0);
-  auto root = [&](int f) {
-    while (group[f] != f) f = group[f] = group[group[f]];
-    return f;
-  };
-  for (auto h : sm.halfedges()) {
-    const auto o = sm.opposite(h);
-    if (sm.is_border(h) || sm.is_border(o)) continue;
-    const auto& p = sm.point(sm.source(h));
-    const auto& q = sm.point(sm.target(h));
-    const auto& r = sm.point(sm.target(sm.next(h)));
-    const auto& t = sm.point(sm.target(sm.next(o)));
-    if (CGAL::coplanar(p, q, r, t)) group[root(static_cast<int>(sm.face(h)))] = root(static_cast<int>(sm.face(o)));
-  }
-  std::unordered_map<int, std::unordered_map<int, int>> ringNext;  // facet -> (source -> next source)
-  for (auto h : sm.halfedges()) {
-    const auto o = sm.opposite(h);
-    if (sm.is_border(h)) continue;
-    const int g = root(static_cast<int>(sm.face(h)));
-    if (!sm.is_border(o) && root(static_cast<int>(sm.face(o))) == g) continue;
-    ringNext[g][src[sm.source(h).idx()]] = src[sm.target(h).idx()];
-  }
-  for (auto& [g, next] : ringNext) {
-    int first = std::numeric_limits<int>::max();
-    for (const auto& [a, b] : next) first = std::min(first, a);
-    std::vector<int> ring{first};
-    for (int v = next.at(first); v != first && ring.size() <= next.size(); v = next.at(v)) ring.push_back(v);
-    auto pt = [&](int v) { return K::Point_3(points[v].x(), points[v].y(), points[v].z()); };
-    // Ear clipping: on a convex polygon every corner that is not collinear with its neighbours is an
-    // ear. Clip the fattest ear first (largest area, ties to the earlier corner) so that no sliver
-    // triangles with meaningless normals are made.
+  std::sort(boundary.begin(), boundary.end());
+  auto pt = [&](int v) { return K::Point_3(pts[v].x(), pts[v].y(), pts[v].z()); };
+  for (std::size_t begin = 0, end = 0; begin < boundary.size(); begin = end) {
+    while (end < boundary.size() && boundary[end][0] == boundary[begin][0]) ++end;
+    // The facet's outline, from its corner of smallest input index; edges are sorted by corner.
+    auto nextOf = [&](int v) {
+      const auto it = std::lower_bound(boundary.begin() + begin, boundary.begin() + end, std::array<int, 3>{boundary[begin][0], v, -1});
+      return it != boundary.begin() + end && (*it)[1] == v ? (*it)[2] : -1;
+    };
+    int first = boundary[begin][1];
+    for (std::size_t e = begin; e < end; ++e)
+      if (orig[boundary[e][1]] < orig[first]) first = boundary[e][1];
+    std::vector<int> loop{first};
+    for (int v = nextOf(first); v >= 0 && v != first && loop.size() <= end - begin; v = nextOf(v)) loop.push_back(v);
+    std::vector<int> ring;  // the loop's corners: points on the facet's edges are dropped
+    for (std::size_t i = 0; i < loop.size(); ++i)
+      if (!CGAL::collinear(pt(loop[(i + loop.size() - 1) % loop.size()]), pt(loop[i]), pt(loop[(i + 1) % loop.size()])))
+        ring.push_back(loop[i]);
+    // Ear clipping: on a convex polygon every corner is an ear. Clip the fattest ear first
+    // (largest area, ties to the earlier corner) so that no sliver triangles with meaningless
+    // normals are made.
     while (ring.size() > 3) {
       std::size_t ear = ring.size();
       double fattest = -1.0;
       for (std::size_t i = 0; i < ring.size(); ++i) {
         const int a = ring[(i + ring.size() - 1) % ring.size()], b = ring[i], c = ring[(i + 1) % ring.size()];
         if (CGAL::collinear(pt(a), pt(b), pt(c))) continue;
-        const double area = (points[b] - points[a]).cross(points[c] - points[a]).norm();
+        const double area = (pts[b] - pts[a]).cross(pts[c] - pts[a]).norm();
         if (area > fattest) fattest = area, ear = i;
       }
       if (ear == ring.size()) break;  // only collinear points left: nothing with area to add
       const std::size_t prev = (ear + ring.size() - 1) % ring.size(), nextI = (ear + 1) % ring.size();
-      out.mesh.faces.push_back({hullIndex.at(ring[prev]), hullIndex.at(ring[ear]), hullIndex.at(ring[nextI])});
+      triangles.push_back({ring[prev], ring[ear], ring[nextI]});
       ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(ear));
     }
     if (ring.size() == 3 && !CGAL::collinear(pt(ring[0]), pt(ring[1]), pt(ring[2])))
-      out.mesh.faces.push_back({hullIndex.at(ring[0]), hullIndex.at(ring[1]), hullIndex.at(ring[2])});
+      triangles.push_back({ring[0], ring[1], ring[2]});
   }
+  std::vector<int> sorted;  // input indices of the corners
+  for (const auto& t : triangles)
+    for (int v : t) sorted.push_back(orig[v]);
+  std::sort(sorted.begin(), sorted.end());
+  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+  std::unordered_map<int, int> hullIndex;
+  for (int i = 0; i < static_cast<int>(sorted.size()); ++i) {
+    hullIndex[sorted[i]] = i;
+    out.mesh.vertices.push_back(points[sorted[i]]);
+    out.source.push_back(sorted[i]);
+  }
+  for (const auto& t : triangles) out.mesh.faces.push_back({hullIndex.at(orig[t[0]]), hullIndex.at(orig[t[1]]), hullIndex.at(orig[t[2]])});
   for (Face& f : out.mesh.faces) std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
   std::sort(out.mesh.faces.begin(), out.mesh.faces.end());
-  (void)sizeof(SM);
   const double volume = signedVolume(out.mesh);
   const double extent = boundingBox(out.mesh).size().maxCoeff();
   if (std::abs(volume) <= 1e-14 * extent * extent * extent) {  // coplanar input: a flat, two-sided "hull"

@@ -1,0 +1,149 @@
+// quickHull: a closed surface of triangles with consistent neighbours that bounds every point,
+// checked with CGAL's orientation predicate (not the hull's own side test); and convexHull's
+// canonical output on top of it, which must not depend on the order of the input points.
+#include <acd/algo/quickhull.hpp>
+#include <acd/hull.hpp>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <gtest/gtest.h>
+
+#include "helpers.hpp"
+
+#include <algorithm>
+#include <random>
+#include <set>
+#include <string>
+
+using namespace acd;
+using acdtest::randomPoints;
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+K::Point_3 cgal(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
+
+/// Every triangle's neighbour across each edge holds the edge reversed and names it back; no point
+/// lies strictly outside a triangle; every triangle has area.
+void expectHullOf(const QuickHull& qh, const std::vector<Vec3>& points) {
+  ASSERT_FALSE(qh.degenerate);
+  ASSERT_FALSE(qh.failed);
+  ASSERT_EQ(qh.faces.size(), qh.across.size());
+  ASSERT_GE(qh.faces.size(), 4u);
+  EXPECT_EQ(qh.faces.size() % 2, 0u);  // a closed surface of triangles (Euler)
+  for (std::size_t f = 0; f < qh.faces.size(); ++f) {
+    const auto& v = qh.faces[f];
+    EXPECT_FALSE(CGAL::collinear(cgal(points[v[0]]), cgal(points[v[1]]), cgal(points[v[2]]))) << "flat triangle " << f;
+    for (int k = 0; k < 3; ++k) {
+      const int g = qh.across[f][k];
+      ASSERT_GE(g, 0);
+      ASSERT_LT(g, static_cast<int>(qh.faces.size()));
+      const auto& w = qh.faces[g];
+      int back = -1;
+      for (int j = 0; j < 3; ++j)
+        if (w[j] == v[(k + 1) % 3] && w[(j + 1) % 3] == v[k]) back = j;
+      ASSERT_GE(back, 0) << "face " << f << " edge " << k << ": the neighbour lacks the reversed edge";
+      EXPECT_EQ(qh.across[g][back], static_cast<int>(f));
+    }
+    // CGAL's orientation is positive when the fourth point is on the side the triangle's normal
+    // (counter-clockwise seen from there) points to: outside.
+    for (const Vec3& p : points)
+      ASSERT_NE(CGAL::orientation(cgal(points[v[0]]), cgal(points[v[1]]), cgal(points[v[2]]), cgal(p)), CGAL::POSITIVE)
+          << "a point outside face " << f;
+  }
+}
+
+std::vector<Vec3> grid(int nx, int ny, int nz) {
+  std::vector<Vec3> points;
+  for (int i = 0; i < nx; ++i)
+    for (int j = 0; j < ny; ++j)
+      for (int k = 0; k < nz; ++k) points.emplace_back(0.1 * i, 0.3 * j - 1.0, 0.7 * k);
+  return points;
+}
+
+}  // namespace
+
+TEST(QuickHull, RandomCloudsAndGridsAreBoundedByConsistentTriangles) {
+  for (std::uint64_t seed : {1u, 2u, 3u}) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    expectHullOf(quickHull(randomPoints(400, seed)), randomPoints(400, seed));
+  }
+  const std::vector<Vec3> g = grid(6, 5, 4);  // points on every face, edge and inside
+  expectHullOf(quickHull(g), g);
+}
+
+TEST(QuickHull, PointsOnAPlaneOrALineAreDegenerate) {
+  std::vector<Vec3> planar, line;
+  for (int i = 0; i < 20; ++i) planar.emplace_back(0.1 * i, 0.37 * (i % 7), 2.0), line.emplace_back(i, 2.0 * i, -i);
+  EXPECT_TRUE(quickHull(planar).degenerate);
+  EXPECT_TRUE(quickHull(line).degenerate);
+  EXPECT_TRUE(quickHull({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}).degenerate);
+}
+
+TEST(QuickHull, ATetrahedronIsFourTriangles) {
+  const std::vector<Vec3> t{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(0.1, 0.1, 0.1)};
+  const QuickHull qh = quickHull(t);
+  expectHullOf(qh, t);
+  EXPECT_EQ(qh.faces.size(), 4u);
+}
+
+TEST(TriangleSide, SignsBelowTheDoubleRoundingAreExact) {
+  // A point 2^-60 above the plane z = 0.5 of a large triangle: the double evaluation cannot
+  // tell it from the plane, the exact one can.
+  const TriangleSide side(Vec3(0, 0, 0.5), Vec3(1, 0, 0.5), Vec3(0, 1, 0.5));
+  EXPECT_EQ(side.sign(Vec3(0.3, 0.3, 0.5)), 0);
+  EXPECT_EQ(side.sign(Vec3(0.3, 0.3, std::nextafter(0.5, 1.0))), 1);
+  EXPECT_EQ(side.sign(Vec3(0.3, 0.3, std::nextafter(0.5, 0.0))), -1);
+  // A tilted plane through points that are not on a grid: the sign agrees with CGAL's.
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const Vec3 p(0.1, 0.2, 0.3), q(0.9, -0.3, 0.35), r(-0.4, 0.8, 0.31);
+  const TriangleSide tilted(p, q, r);
+  for (int i = 0; i < 2000; ++i) {
+    // Points on the line from p towards q, off by a few ulps: nearly in the plane.
+    const double t = u(rng);
+    Vec3 s = p + t * (q - p);
+    s.z() = std::nextafter(s.z(), i % 3 == 0 ? 1.0 : i % 3 == 1 ? -1.0 : s.z());
+    const CGAL::Orientation o = CGAL::orientation(cgal(p), cgal(q), cgal(r), cgal(s));
+    EXPECT_EQ(tilted.sign(s), o == CGAL::POSITIVE ? 1 : o == CGAL::NEGATIVE ? -1 : 0) << "point " << i;
+  }
+}
+
+TEST(Hull, TheResultDoesNotDependOnTheOrderOfThePoints) {
+  // A grid has points on the hull's edges and inside its facets: whichever order quickhull meets
+  // them in, the hull is its 8 corners. (A rectangle's triangulation starts at its corner of
+  // smallest input index, so it follows the order; a cloud's facets are triangles.)
+  std::vector<std::pair<std::string, std::vector<Vec3>>> cases{{"grid", grid(7, 5, 4)},
+                                                               {"cloud", randomPoints(3000, 11)}};
+  for (auto& [name, points] : cases) {
+    SCOPED_TRACE(name);
+    const ConvexHull reference = convexHull(points);
+    ASSERT_FALSE(reference.degenerate);
+    if (name == "grid") EXPECT_EQ(reference.mesh.vertices.size(), 8u);
+    std::mt19937_64 rng(3);
+    for (int trial = 0; trial < 5; ++trial) {
+      std::vector<int> order(points.size());
+      for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+      std::shuffle(order.begin(), order.end(), rng);
+      std::vector<Vec3> shuffled;
+      for (int i : order) shuffled.push_back(points[i]);
+      const ConvexHull hull = convexHull(shuffled);
+      // The same corners; faces compared as sets of positions.
+      std::set<std::array<double, 9>> a, b;
+      for (const auto* h : {&reference, &hull})
+        for (const Face& f : h->mesh.faces) {
+          std::array<Vec3, 3> c{h->mesh.vertices[f[0]], h->mesh.vertices[f[1]], h->mesh.vertices[f[2]]};
+          // rotate to the lexicographically smallest corner, keeping orientation
+          int lo = 0;
+          for (int k = 1; k < 3; ++k)
+            if (std::lexicographical_compare(c[k].data(), c[k].data() + 3, c[lo].data(), c[lo].data() + 3)) lo = k;
+          std::array<double, 9> key;
+          for (int k = 0; k < 3; ++k)
+            for (int d = 0; d < 3; ++d) key[3 * k + d] = c[(lo + k) % 3][d];
+          (h == &reference ? a : b).insert(key);
+        }
+      EXPECT_EQ(hull.mesh.vertices.size(), reference.mesh.vertices.size()) << "trial " << trial;
+      if (name == "cloud") EXPECT_EQ(a, b) << "trial " << trial;  // no coplanar facets: one triangulation
+    }
+  }
+}
