@@ -154,3 +154,42 @@ TEST(PathFinder, AllowedMaskAndUnreachableTargets) {
   allowed[id(3, n)] = 0;  // close the gap
   EXPECT_TRUE(finder.path(id(0, 0), id(6, 0), {}, &allowed).empty());
 }
+
+// search(): the flood in the finder's own buffers. Interleaved with path() (which shares them),
+// masked, and stopped at targets, its distances and paths must be Dijkstra's written here.
+TEST(PathFinder, SearchesInTheFindersBuffersMatchDijkstra) {
+  const int n = 6;
+  const TriMesh m = grid(n);
+  const SurfaceGraph g(m);
+  PathFinder finder(g);
+  auto id = [n](int x, int y) { return y * (n + 1) + x; };
+  std::vector<char> allowed(m.vertices.size(), 1);
+  for (int y = 0; y < n; ++y) allowed[id(3, y)] = 0;  // a wall with a gap at the top
+  const EdgeWeight euclid = [&](int a, int b, int) { return (m.vertices[a] - m.vertices[b]).norm(); };
+  for (int source : {id(0, 0), id(5, 2), id(1, 6)}) {
+    finder.path(id(6, 6), id(0, 1));  // leaves marks in the shared buffers
+    const std::vector<double> expected = dijkstra(m, source, &allowed);
+    // Stopped once two far targets are settled: theirs are final.
+    const std::vector<int> targets{id(6, 0), id(0, 6)};
+    finder.search({source}, euclid, &allowed, &targets);
+    for (int t : targets) {
+      EXPECT_NEAR(finder.distance(t), expected[t], 1e-12) << source << " to " << t;
+      const std::vector<int> path = finder.pathTo(t);
+      ASSERT_FALSE(path.empty());
+      EXPECT_EQ(path.front(), source);
+      EXPECT_EQ(path.back(), t);
+      EXPECT_NEAR(pathLength(m, path), expected[t], 1e-12);
+      for (int v : path) EXPECT_TRUE(allowed[v]) << v;
+    }
+    // Unstopped: every vertex, the wall's unreachable.
+    finder.search({source}, euclid, &allowed);
+    for (int v = 0; v < static_cast<int>(m.vertices.size()); ++v) {
+      if (!allowed[v]) {
+        EXPECT_EQ(finder.distance(v), std::numeric_limits<double>::infinity()) << v;
+        EXPECT_EQ(finder.pathTo(v), std::vector<int>{v});
+        continue;
+      }
+      EXPECT_NEAR(finder.distance(v), expected[v], 1e-12) << source << " to " << v;
+    }
+  }
+}

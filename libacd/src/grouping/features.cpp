@@ -43,7 +43,7 @@ EdgeWeight pocketCutWeight(const TriMesh& mesh, const SurfaceGraph& graph, const
 
 /// Knots (indices into `knots`) matched to the entry knot nearest `start` on boundary `entry`,
 /// one per other boundary at most. Empty when the entry boundary has no knots of this pocket.
-std::vector<int> matchedPartners(const TriMesh& mesh, const SurfaceGraph& graph, const PathFinder& finder,
+std::vector<int> matchedPartners(const TriMesh& mesh, const SurfaceGraph& graph, PathFinder& finder,
                                  const ConcavityMap& map, const std::vector<double>& curvature,
                                  const std::vector<Knot>& knots, int pocket, int start, int entry) {
   std::vector<int> result;
@@ -62,20 +62,23 @@ std::vector<int> matchedPartners(const TriMesh& mesh, const SurfaceGraph& graph,
   for (int r = 0; r < static_cast<int>(rows.size()); ++r)
     if (std::abs(knots[rows[r]].along - startAlong) < std::abs(knots[rows[entryRow]].along - startAlong)) entryRow = r;
   // Pocket-cut weights from every entry knot (Eq. 4 per edge, inside the pocket).
-  const std::vector<char> allowed = pocketVertices(mesh, map, pocket);
+  std::vector<char> mask = pocketVertices(mesh, map, pocket);
   const Bridge& bridge = map.bridges[pocket];
-  std::vector<std::vector<double>> dist(rows.size());
-  std::vector<int> parent;
+  const EdgeWeight weight = pocketCutWeight(mesh, graph, bridge, curvature);
+  std::vector<std::vector<double>> dist(rows.size());  // entry knot -> distance to each knot
   for (std::size_t r = 0; r < rows.size(); ++r) {
-    std::vector<char> mask = allowed;
-    mask[knots[rows[r]].vertex] = 1;
-    finder.flood({knots[rows[r]].vertex}, pocketCutWeight(mesh, graph, bridge, curvature), &mask, dist[r], parent);
+    const int source = knots[rows[r]].vertex;
+    const char saved = mask[source];
+    mask[source] = 1;
+    finder.search({source}, weight, &mask);
+    mask[source] = saved;
+    for (const Knot& k : knots) dist[r].push_back(finder.distance(k.vertex));
   }
   for (const auto& [p, columns] : byBoundary) {
     if (p == entry) continue;
     std::vector<std::vector<double>> cost(rows.size(), std::vector<double>(columns.size()));
     for (std::size_t r = 0; r < rows.size(); ++r)
-      for (std::size_t c = 0; c < columns.size(); ++c) cost[r][c] = dist[r][knots[columns[c]].vertex];
+      for (std::size_t c = 0; c < columns.size(); ++c) cost[r][c] = dist[r][columns[c]];
     for (const auto& [r, c] : nonCrossingMatching(cost))
       if (r == entryRow) result.push_back(columns[c]);
   }
@@ -92,32 +95,29 @@ struct Leg {
 
 /// Cheapest leg inside `pocket` from `start` to a knot (or, failing that, any vertex) on a
 /// boundary of the pocket other than `excludeProjection`.
-Leg bestLeg(const TriMesh& mesh, const SurfaceGraph& graph, const PathFinder& finder, const ConcavityMap& map,
+Leg bestLeg(const TriMesh& mesh, const SurfaceGraph& graph, PathFinder& finder, const ConcavityMap& map,
             const std::vector<double>& curvature, int pocket, int start, int excludeProjection, double delta,
             bool matchKnots) {
   Leg leg;
-  const std::vector<char> allowed = pocketVertices(mesh, map, pocket);
-  const Bridge& bridge = map.bridges[pocket];
-  std::vector<double> dist;
-  std::vector<int> parent;
-  std::vector<char> mask = allowed;
+  const std::vector<Knot> knots = pocketKnots(mesh, map, pocket, delta);
+  // Entering across a boundary that has knots of this pocket: the leg may only end at a knot
+  // matched (Observation 4.2) to the entry knot nearest the chain's end. (Its searches come first:
+  // the finder holds one search's result at a time.)
+  const std::vector<int> partners =
+      matchKnots ? matchedPartners(mesh, graph, finder, map, curvature, knots, pocket, start, excludeProjection) : std::vector<int>{};
+  std::vector<char> mask = pocketVertices(mesh, map, pocket);
   mask[start] = 1;
-  finder.flood({start}, pocketCutWeight(mesh, graph, bridge, curvature), &mask, dist, parent);
+  finder.search({start}, pocketCutWeight(mesh, graph, map.bridges[pocket], curvature), &mask);
   auto consider = [&](int v, int projection, bool knot) {
-    if (v == start || !std::isfinite(dist[v])) return;
+    if (v == start || !std::isfinite(finder.distance(v))) return;
     // Knots are preferred: a knot-less end costs twice as much.
-    const double cost = dist[v] * (knot ? 1.0 : 2.0);
+    const double cost = finder.distance(v) * (knot ? 1.0 : 2.0);
     if (cost < leg.cost) {
       leg.cost = cost;
       leg.endVertex = v;
       leg.projection = projection;
     }
   };
-  const std::vector<Knot> knots = pocketKnots(mesh, map, pocket, delta);
-  // Entering across a boundary that has knots of this pocket: the leg may only end at a knot
-  // matched (Observation 4.2) to the entry knot nearest the chain's end.
-  const std::vector<int> partners =
-      matchKnots ? matchedPartners(mesh, graph, finder, map, curvature, knots, pocket, start, excludeProjection) : std::vector<int>{};
   for (int k : partners) consider(knots[k].vertex, knots[k].projection, true);
   if (partners.empty())
     for (const Knot& k : knots)
@@ -129,8 +129,7 @@ Leg bestLeg(const TriMesh& mesh, const SurfaceGraph& graph, const PathFinder& fi
       for (std::size_t i = 1; i + 1 < pe.path.size(); ++i) consider(pe.path[i], p, false);
     }
   if (leg.endVertex < 0) return leg;
-  for (int v = leg.endVertex; v != -1; v = parent[v]) leg.path.push_back(v);
-  std::reverse(leg.path.begin(), leg.path.end());
+  leg.path = finder.pathTo(leg.endVertex);
   const auto& pe = map.projections[leg.projection];
   leg.nextPocket = pe.leftBridge == pocket ? pe.rightBridge : pe.leftBridge;
   return leg;

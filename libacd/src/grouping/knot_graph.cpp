@@ -20,7 +20,7 @@ int loopPosition(const ConcavityMap& map, const Knot& k) {
 KnotGraph buildKnotGraph(const TriMesh& mesh, const SurfaceGraph& graph, const ConcavityMap& map, double delta,
                          const std::vector<double>* slotCurvature) {
   KnotGraph kg;
-  const PathFinder finder(graph);
+  PathFinder finder(graph);
   std::vector<double> ownCurvature;
   if (!slotCurvature) ownCurvature = slotCurvatures(mesh, graph);
   const std::vector<double>& curvature = slotCurvature ? *slotCurvature : ownCurvature;
@@ -48,8 +48,8 @@ KnotGraph buildKnotGraph(const TriMesh& mesh, const SurfaceGraph& graph, const C
     const EdgeWeight weight = [&](int a, int b, int slot) {
       return cutEdgeWeight(concavity[a], concavity[b], curvature[slot], graph.length(slot));
     };
-    std::vector<std::vector<double>> dist(knots.size());
-    std::vector<std::vector<int>> parent(knots.size());
+    // Per knot, the distance and path to each knot node of a later boundary.
+    std::vector<std::map<int, std::pair<double, std::vector<int>>>> reach(knots.size());
     std::vector<char>& mask = inPocket[pocket];
     // Pairs are matched from an earlier boundary to a later one, so a knot needs the distances to
     // the knots of later boundaries only; its flood stops once they are settled.
@@ -62,8 +62,9 @@ KnotGraph buildKnotGraph(const TriMesh& mesh, const SurfaceGraph& graph, const C
         const int k = node - base;
         const char saved = mask[knots[k].vertex];
         mask[knots[k].vertex] = 1;
-        finder.flood({knots[k].vertex}, weight, &mask, dist[k], parent[k], &later);
+        finder.search({knots[k].vertex}, weight, &mask, &later);
         mask[knots[k].vertex] = saved;
+        for (int v : later) reach[k].emplace(v, std::pair{finder.distance(v), finder.pathTo(v)});
       }
     }
     for (auto i = byBoundary.begin(); i != byBoundary.end(); ++i)
@@ -72,15 +73,14 @@ KnotGraph buildKnotGraph(const TriMesh& mesh, const SurfaceGraph& graph, const C
         const std::vector<int>& cols = j->second;
         std::vector<std::vector<double>> cost(rows.size(), std::vector<double>(cols.size()));
         for (std::size_t r = 0; r < rows.size(); ++r)
-          for (std::size_t c = 0; c < cols.size(); ++c) cost[r][c] = dist[rows[r] - base][kg.nodes[cols[c]].vertex];
+          for (std::size_t c = 0; c < cols.size(); ++c) cost[r][c] = reach[rows[r] - base].at(kg.nodes[cols[c]].vertex).first;
         for (const auto& [r, c] : nonCrossingMatching(cost)) {
           KnotGraph::Edge e;
           e.a = rows[r];
           e.b = cols[c];
           e.weight = cost[r][c];
           e.pocket = pocket;
-          for (int v = kg.nodes[e.b].vertex; v != -1; v = parent[rows[r] - base][v]) e.path.push_back(v);
-          std::reverse(e.path.begin(), e.path.end());
+          e.path = reach[rows[r] - base].at(kg.nodes[e.b].vertex).second;
           kg.edges.push_back(std::move(e));
         }
       }

@@ -57,17 +57,21 @@ PathFinder::PathFinder(const SurfaceGraph& graph)
       dist_(graph.vertexCount(), std::numeric_limits<double>::infinity()),
       parent_(graph.vertexCount(), -1) {}
 
+void PathFinder::reset() {
+  for (int v : touched_) {
+    dist_[v] = std::numeric_limits<double>::infinity();
+    parent_[v] = -1;
+  }
+  touched_.clear();
+}
+
 std::vector<int> PathFinder::path(int s, int t, const EdgeWeight& weight, const std::vector<char>* allowed) {
   const auto& P = graph_.mesh().vertices;
   const bool astar = !weight;
   auto heuristic = [&](int v) { return astar ? (P[v] - P[t]).norm() : 0.0; };
   using Item = std::pair<double, int>;
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open;
-  for (int v : touched_) {
-    dist_[v] = std::numeric_limits<double>::infinity();
-    parent_[v] = -1;
-  }
-  touched_.clear();
+  reset();
   dist_[s] = 0.0;
   touched_.push_back(s);
   open.emplace(heuristic(s), s);
@@ -137,6 +141,53 @@ void PathFinder::flood(const std::vector<int>& sources, const EdgeWeight& weight
       }
     }
   }
+}
+
+void PathFinder::search(const std::vector<int>& sources, const EdgeWeight& weight, const std::vector<char>* allowed,
+                        const std::vector<int>* targets) {
+  reset();
+  int unsettled = 0;
+  if (targets) {
+    if (pending_.empty()) pending_.assign(graph_.vertexCount(), 0);
+    for (int t : *targets)
+      if (!pending_[t]) pending_[t] = 1, ++unsettled;
+  }
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open;
+  for (int s : sources) {
+    if (dist_[s] == std::numeric_limits<double>::infinity()) touched_.push_back(s);
+    dist_[s] = 0.0;
+    open.emplace(0.0, s);
+  }
+  while (!open.empty()) {
+    const auto [d, v] = open.top();
+    open.pop();
+    if (d > dist_[v]) continue;
+    if (targets && pending_[v]) {
+      pending_[v] = 0;
+      if (--unsettled == 0) break;
+    }
+    for (int slot = graph_.begin(v); slot < graph_.end(v); ++slot) {
+      const int w = graph_.neighbour(slot);
+      if (allowed && !(*allowed)[w]) continue;
+      const double nd = d + (weight ? weight(v, w, slot) : graph_.length(slot));
+      if (nd < dist_[w]) {
+        if (dist_[w] == std::numeric_limits<double>::infinity()) touched_.push_back(w);
+        dist_[w] = nd;
+        parent_[w] = v;
+        open.emplace(nd, w);
+      }
+    }
+  }
+  if (targets)
+    for (int t : *targets) pending_[t] = 0;
+}
+
+std::vector<int> PathFinder::pathTo(int v) const {
+  std::vector<int> path;
+  for (; v != -1; v = parent_[v]) path.push_back(v);
+  std::reverse(path.begin(), path.end());
+  return path;
 }
 
 }  // namespace acd

@@ -62,11 +62,23 @@ class PathFinder {
              std::vector<double>& distance, std::vector<int>& parent,
              const std::vector<int>* targets = nullptr) const;
 
+  /// The same search in the finder's own buffers, which only the vertices it reaches touch: many
+  /// searches inside small pockets of a large piece cost the pockets, not the piece. Its result
+  /// is read through distance() and parent() until the next search.
+  void search(const std::vector<int>& sources, const EdgeWeight& weight, const std::vector<char>* allowed,
+              const std::vector<int>* targets = nullptr);
+  double distance(int v) const { return dist_[v]; }
+  int parent(int v) const { return parent_[v]; }
+  /// The last search's path from its source to v (v alone when v was not reached).
+  std::vector<int> pathTo(int v) const;
+
  private:
+  void reset();
   const SurfaceGraph& graph_;
   std::vector<double> dist_;
   std::vector<int> parent_;
   std::vector<int> touched_;
+  std::vector<char> pending_;
 };
 
 }  // namespace acd
