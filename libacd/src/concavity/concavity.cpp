@@ -3,6 +3,9 @@
 #include <acd/algo/handles.hpp>
 #include <acd/algo/open_surface.hpp>
 
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <limits>
 #include <numeric>
@@ -196,8 +199,22 @@ std::vector<Bridge> bridgesOf(const HullFacets& h, const std::vector<int>& seeds
 /// Step 2: the hull edges between different bridges, projected onto the surface (paths cached
 /// across refinements: a hull edge projects the same whatever its bridges).
 std::vector<ProjectedEdge> projectBridgeEdges(const TriMesh& hull, const HullFacets& h, const std::vector<int>& label,
-                                              const OpenSurfaceProjection& openSurface, PathFinder& finder,
+                                              const OpenSurfaceProjection& openSurface,
+                                              tbb::enumerable_thread_specific<PathFinder>& finders,
                                               std::unordered_map<std::uint64_t, std::vector<int>>& pathCache) {
+  // The paths not projected yet, each on its own (a path search does not depend on the one
+  // before it), in parallel with a finder per thread; then taken in edge order.
+  std::vector<std::pair<int, int>> missing;
+  for (int f = 0; f < static_cast<int>(hull.faces.size()); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int g = h.neighbour[f][k];
+      const int u = hull.faces[f][k], v = hull.faces[f][(k + 1) % 3];
+      if (g >= 0 && label[g] != label[f] && u < v && !pathCache.count(edgeKey(u, v))) missing.emplace_back(u, v);
+    }
+  std::vector<std::vector<int>> paths(missing.size());
+  tbb::parallel_for(std::size_t(0), missing.size(),
+                    [&](std::size_t i) { paths[i] = openSurface.project(finders.local(), missing[i].first, missing[i].second); });
+  for (std::size_t i = 0; i < missing.size(); ++i) pathCache[edgeKey(missing[i].first, missing[i].second)] = std::move(paths[i]);
   std::vector<ProjectedEdge> projections;
   for (int f = 0; f < static_cast<int>(hull.faces.size()); ++f)
     for (int k = 0; k < 3; ++k) {
@@ -208,8 +225,7 @@ std::vector<ProjectedEdge> projectBridgeEdges(const TriMesh& hull, const HullFac
       ProjectedEdge pe;
       pe.leftBridge = label[f];
       pe.rightBridge = label[g];
-      auto& cached = pathCache[edgeKey(u, v)];
-      if (cached.empty()) cached = openSurface.project(finder, u, v);
+      const std::vector<int>& cached = pathCache.at(edgeKey(u, v));
       if (cached.empty()) continue;  // no projection (both ends concave, or unreachable)
       pe.path = cached;
       projections.push_back(std::move(pe));
@@ -402,7 +418,7 @@ ConcavityMap measureConcavity(const TriMesh& mesh, const SurfaceGraph& graph, co
     out.bridgeEstimate = nh;
   }
   std::vector<int> label;
-  PathFinder finder(graph);
+  tbb::enumerable_thread_specific<PathFinder> finders([&] { return PathFinder(graph); });  // one per thread
   // Extension 2: on an open surface a bridge edge with a concave end projects to the opening, or not at all.
   const OpenSurfaceProjection openSurface(mesh, graph, out.hull);
   std::unordered_map<std::uint64_t, std::vector<int>> pathCache;  // hull edge (u<v) -> mesh path u..v
@@ -412,7 +428,7 @@ ConcavityMap measureConcavity(const TriMesh& mesh, const SurfaceGraph& graph, co
   for (int attempt = 0;; ++attempt) {
     clusterBridges(hull, h, eps, options.lloydIterations, seeds, label);
     out.bridges = bridgesOf(h, seeds, label);
-    out.projections = projectBridgeEdges(hull, h, label, openSurface, finder, pathCache);
+    out.projections = projectBridgeEdges(hull, h, label, openSurface, finders, pathCache);
     PocketBorders borders = pocketBorders(graph, nf, out.projections, options.barrierEdges);
     assignPocketsCuttingHandles(mesh, graph, borders, genus, out);
     const std::size_t seedsBefore = seeds.size();

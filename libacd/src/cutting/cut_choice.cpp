@@ -94,29 +94,35 @@ std::vector<Plane> candidatePlanes(const TriMesh& mesh, const SurfaceGraph& grap
     // to take the cheapest knot, with a notch on a boundary taken as an end of the root cut or
     // not. The lookahead keeps whichever plane serves better.
     const std::vector<double> curvature = slotCurvatures(mesh, graph);  // shared by the five searches
-    {
-      const KnotGraph kg = buildKnotGraph(mesh, graph, map, o.delta, &curvature);
-      const GlobalCut cycle = knotGraphCycle(mesh, map, kg);
-      if (cycle.vertices.size() >= 3)
-        candidates.push_back(Plane::through(notch, fitCutPlane(mesh, cycle, bridgeNormal, 0.5 * o.tau).normal));
-    }
-    for (int variant = 0; variant < 4; ++variant) {
+    // The five searches are independent: run in parallel, each into its own slot (search 0 is the
+    // knot graph's cycle, 1-4 the grown cuts), then taken in this order.
+    std::vector<std::vector<Plane>> found(5);
+    tbb::parallel_for(0, 5, [&](int search) {
+      if (search == 0) {
+        const KnotGraph kg = buildKnotGraph(mesh, graph, map, o.delta, &curvature);
+        const GlobalCut cycle = knotGraphCycle(mesh, map, kg);
+        if (cycle.vertices.size() >= 3)
+          found[0].push_back(Plane::through(notch, fitCutPlane(mesh, cycle, bridgeNormal, 0.5 * o.tau).normal));
+        return;
+      }
+      const int variant = search - 1;
       FeatureOptions fo;
       fo.delta = o.delta;
       fo.matchKnots = variant < 2;
       fo.notchAsEnd = variant % 2 == 0;
       fo.slotCurvature = &curvature;
       const GlobalCut cut = findGlobalCut(mesh, graph, map, fo);
-      if (cut.vertices.size() < 2) continue;
+      if (cut.vertices.size() < 2) return;
       const Plane plane = fitCutPlane(mesh, cut, bridgeNormal, 0.5 * o.tau);
       // A plane (nearly) parallel to the bridge only skims the pocket: the cup-shaped case of
       // Figure 13. Split the cup through its deepest point instead, across its longest extent.
       if (variant == 0 && (cut.cupShaped || std::abs(plane.normal.normalized().dot(bridgeNormal)) > 0.9))
-        candidates.push_back(splitCupPlane(mesh, map, map.notch));
+        found[search].push_back(splitCupPlane(mesh, map, map.notch));
       // The plane must resolve the notch it was grown from: it passes through it. (A plane a hair
       // away from the notch would only shave off a sliver and leave the notch as it was.)
-      candidates.push_back(Plane::through(notch, plane.normal));
-    }
+      found[search].push_back(Plane::through(notch, plane.normal));
+    });
+    for (const std::vector<Plane>& planes : found) candidates.insert(candidates.end(), planes.begin(), planes.end());
     groupingSeconds += secondsSince(t);
   }
   if (stalls <= 1) candidates.push_back(bisectorPlane(mesh, graph, site.notch, bridgeNormal));

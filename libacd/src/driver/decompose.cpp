@@ -104,12 +104,15 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
   bool fromExcess = false;
   if (map.concavity <= o.tau || map.notch < 0) {
     t = Clock::now();
-    const TriMesh hull = convexHull(piece.mesh.vertices).mesh;
+    const TriMesh& hull = map.hull.mesh;  // the hull of the piece's vertices
     const HullExcess e = measureHullExcess(piece.mesh, hull, kExcessLimit * o.tau, kExcessResolution * o.tau);
     out.times.concavity += secondsSince(t);
     c.concavity = std::max(c.concavity, e.distance);
     c.hullExcess = e.distance;
-    if (!e.exceeds) return out;
+    if (!e.exceeds) {
+      c.hull = hull;  // normalised units, for the merge pass (decomposeSolid replaces it)
+      return out;
+    }
     fromExcess = true;
     concavity = e.distance;
     bridgeNormal = faceNormal(hull, e.hullFace).normalized();
@@ -281,7 +284,9 @@ void mergePieces(std::vector<Piece>& finals, std::vector<Component>& finalInfo, 
   std::vector<char> alive(finals.size(), 1), mergedInModel(finals.size(), 0);
   std::map<std::pair<int, int>, MergeCandidate> measured;  // by the pieces' indices
   std::vector<TriMesh> hulls(finals.size());                 // each piece's hull, kept through merges
-  tbb::parallel_for(std::size_t(0), finals.size(), [&](std::size_t i) { hulls[i] = convexHull(finals[i].mesh.vertices).mesh; });
+  tbb::parallel_for(std::size_t(0), finals.size(), [&](std::size_t i) {
+    hulls[i] = finalInfo[i].hull.faces.empty() ? convexHull(finals[i].mesh.vertices).mesh : finalInfo[i].hull;
+  });
   for (bool merged = true; merged;) {
     merged = false;
     std::vector<TriMesh> meshes;
