@@ -457,6 +457,45 @@ TEST(Decompose, OutputDoesNotDependOnThreadCount) {
   EXPECT_EQ(one.stats.cuts, two.stats.cuts);
 }
 
+// The recursion stops at maxComponents: the pieces still to cut when the count would pass it
+// are kept as they are and said to be unresolved. A comb of seven teeth needs more than four.
+TEST(Decompose, TheComponentCapHoldsAndDoesNotDependOnThreads) {
+  std::vector<std::array<int, 3>> cells;
+  for (int x = 0; x < 13; ++x) cells.push_back({x, 0, 0});
+  for (int tooth = 0; tooth < 7; ++tooth)
+    for (int y = 1; y <= 3; ++y) cells.push_back({2 * tooth, y, 0});
+  const TriMesh comb = shapes::voxels(cells);
+  DecomposeOptions o = withTau(0.02);
+  o.merge = false;
+  const Decomposition all = decompose(comb, o);
+  ASSERT_TRUE(all.status.ok()) << all.status.message;
+  ASSERT_GT(all.components.size(), 4u);
+  for (const Component& c : all.components) EXPECT_FALSE(c.unresolved);
+  o.maxComponents = 4;
+  std::vector<Decomposition> capped;
+  for (int threads : {1, 2}) {
+    o.threads = threads;
+    capped.push_back(decompose(comb, o));
+    const Decomposition& d = capped.back();
+    ASSERT_TRUE(d.status.ok()) << d.status.message;
+    EXPECT_LE(d.components.size(), 4u);
+    int unresolved = 0;
+    double volume = 0.0;
+    for (const Component& c : d.components) {
+      unresolved += c.unresolved;
+      if (c.unresolved) EXPECT_EQ(c.note, "maximum number of components reached");
+      volume += c.volume;
+    }
+    EXPECT_GE(unresolved, 1);
+    EXPECT_NEAR(volume, d.stats.inputVolume, 1e-9 * d.stats.inputVolume);
+  }
+  ASSERT_EQ(capped[0].components.size(), capped[1].components.size());
+  for (std::size_t i = 0; i < capped[0].components.size(); ++i) {
+    EXPECT_EQ(capped[0].components[i].mesh.vertices, capped[1].components[i].mesh.vertices) << i;
+    EXPECT_EQ(capped[0].components[i].mesh.faces, capped[1].components[i].mesh.faces) << i;
+  }
+}
+
 // ------------------------------------------------------------------ corpus
 
 struct CorpusCase {

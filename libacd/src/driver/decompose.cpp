@@ -464,6 +464,7 @@ Decomposition decomposeSolid(const TriMesh& mesh, const TriMesh* heldTo, double 
   arena.execute([&] {
     FinalPieces<Piece, Outcome> rounds = runRounds(
         std::move(pending), o.maxComponents, [&](const Piece& piece) { return processPiece(piece, o); },
+        [](const Piece&, Outcome& out) { return std::move(out.children); },
         [&](const Outcome& out) {
           accumulate(result.times, out.times);
           accumulate(result.stats, out.stats);
@@ -472,10 +473,7 @@ Decomposition decomposeSolid(const TriMesh& mesh, const TriMesh* heldTo, double 
           out.component.unresolved = true;
           out.component.note = "maximum number of components reached";
         },
-        [](const Piece&, Outcome& out, std::vector<Piece>& next) {
-          for (Piece& child : out.children) next.push_back(std::move(child));
-        },
-        o.progress);
+        [](const Piece&, Outcome&) {}, o.progress);
     std::vector<Piece> finals = std::move(rounds.pieces);
     std::vector<Component> finalInfo;
     for (Outcome& out : rounds.outcomes) finalInfo.push_back(std::move(out.component));

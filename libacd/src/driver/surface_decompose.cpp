@@ -456,19 +456,8 @@ SurfaceDecomposition decomposeSurface(const TriMesh& mesh, const SurfaceDecompos
   arena.execute([&] {
     FinalPieces<Piece, Outcome> rounds = runRounds(
         std::move(pending), o.maxPatches, [&](const Piece& piece) { return processPiece(surface, piece, o); },
-        [&](const Outcome& out) {
-          result.times.concavity += out.concavitySeconds;
-          result.times.splitting += out.splittingSeconds;
-        },
-        [](Outcome& out) {
-          out.unresolved = true;
-          out.note = "maximum number of patches reached";
-        },
-        [&](const Piece& parent, Outcome& out, std::vector<Piece>& next) {
-          ++result.stats.splits;
-          if (out.kind == SplitKind::GlobalCut) ++result.stats.globalCutSplits;
-          if (out.kind == SplitKind::Plane) ++result.stats.planeSplits;
-          if (out.kind == SplitKind::Geodesic) ++result.stats.geodesicSplits;
+        [](const Piece& parent, Outcome& out) {
+          std::vector<Piece> next;
           for (std::size_t c = 0; c < out.children.size(); ++c) {
             Piece child;
             child.faces = std::move(out.children[c]);
@@ -477,6 +466,21 @@ SurfaceDecomposition decomposeSurface(const TriMesh& mesh, const SurfaceDecompos
             child.concavity = c < out.childConcavity.size() ? out.childConcavity[c] : -1.0;
             next.push_back(std::move(child));
           }
+          return next;
+        },
+        [&](const Outcome& out) {
+          result.times.concavity += out.concavitySeconds;
+          result.times.splitting += out.splittingSeconds;
+        },
+        [](Outcome& out) {
+          out.unresolved = true;
+          out.note = "maximum number of patches reached";
+        },
+        [&](const Piece&, const Outcome& out) {
+          ++result.stats.splits;
+          if (out.kind == SplitKind::GlobalCut) ++result.stats.globalCutSplits;
+          if (out.kind == SplitKind::Plane) ++result.stats.planeSplits;
+          if (out.kind == SplitKind::Geodesic) ++result.stats.geodesicSplits;
         },
         o.progress);
     std::vector<Piece> finals = std::move(rounds.pieces);
