@@ -5,10 +5,14 @@
 #include <acd/hull.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/convex_hull_3.h>
 
 #include <gtest/gtest.h>
 
 #include "helpers.hpp"
+
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <random>
@@ -146,4 +150,78 @@ TEST(Hull, TheResultDoesNotDependOnTheOrderOfThePoints) {
       if (name == "cloud") EXPECT_EQ(a, b) << "trial " << trial;  // no coplanar facets: one triangulation
     }
   }
+}
+
+// Many small degenerate clouds: points of a small integer lattice (coplanar and collinear
+// everywhere), the same lattice turned by a rotation that is not exact (coplanar only up to
+// rounding), and lattice points nudged by one ulp. Every hull bounds its points (CGAL's
+// orientation) and has exactly the corners of CGAL's stock hull.
+TEST(QuickHull, DegenerateLatticesAgreeWithCgalsStockHull) {
+  using K2 = CGAL::Exact_predicates_inexact_constructions_kernel;
+  std::mt19937_64 rng(21);
+  std::uniform_int_distribution<int> cell(0, 3);
+  const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  int checked = 0;
+  for (int trial = 0; trial < 150; ++trial) {
+    std::set<std::array<int, 3>> cells;
+    const int n = 6 + trial % 40;
+    while (static_cast<int>(cells.size()) < n) cells.insert({cell(rng), cell(rng), cell(rng)});
+    std::vector<Vec3> points;
+    for (const auto& c : cells) {
+      Vec3 p(c[0], c[1], c[2]);
+      if (trial % 3 == 1) p = turn * p;
+      if (trial % 3 == 2) p.x() = std::nextafter(p.x(), rng() % 2 ? 10.0 : -10.0);
+      points.push_back(p);
+    }
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    const ConvexHull hull = convexHull(points);
+    std::vector<K2::Point_3> pts;
+    for (const Vec3& p : points) pts.push_back(cgal(p));
+    // Three points not on a line, if any: no volume means every point is in their plane.
+    int third = -1;
+    for (int i = 2; i < static_cast<int>(pts.size()) && third < 0; ++i)
+      if (!CGAL::collinear(pts[0], pts[1], pts[i])) third = i;
+    auto inPlane = [&](const std::vector<K2::Point_3>& set) {
+      if (set.size() < 4) return true;
+      int c = -1;
+      for (int i = 2; i < static_cast<int>(set.size()) && c < 0; ++i)
+        if (!CGAL::collinear(set[0], set[1], set[i])) c = i;
+      if (c < 0) return true;
+      for (const auto& q : set)
+        if (!CGAL::coplanar(set[0], set[1], set[c], q)) return false;
+      return true;
+    };
+    ASSERT_EQ(hull.degenerate, third < 0 || inPlane(pts));
+    if (hull.degenerate) continue;
+    ++checked;
+    // Every point inside or on every face.
+    for (const Face& f : hull.mesh.faces)
+      for (const auto& q : pts)
+        ASSERT_NE(CGAL::orientation(cgal(hull.mesh.vertices[f[0]]), cgal(hull.mesh.vertices[f[1]]), cgal(hull.mesh.vertices[f[2]]), q),
+                  CGAL::POSITIVE);
+    // The corners: CGAL's stock hull's vertices that are corners of its facets.
+    CGAL::Surface_mesh<K2::Point_3> sm;
+    CGAL::convex_hull_3(pts.begin(), pts.end(), sm);
+    std::set<std::array<double, 3>> stock, ours;
+    for (auto v : sm.vertices()) {
+      // A corner is not inside the hull of the other points.
+      std::vector<K2::Point_3> others;
+      for (const auto& q : pts)
+        if (q != sm.point(v)) others.push_back(q);
+      bool outside = inPlane(others);  // the rest is flat and v is off it (the whole is not flat)
+      CGAL::Surface_mesh<K2::Point_3> rest;
+      if (!outside) CGAL::convex_hull_3(others.begin(), others.end(), rest);
+      for (auto f : rest.faces()) {
+        auto h = rest.halfedge(f);
+        if (CGAL::orientation(rest.point(rest.source(h)), rest.point(rest.target(h)), rest.point(rest.target(rest.next(h))),
+                              sm.point(v)) == CGAL::POSITIVE)
+          outside = true;
+      }
+      const auto& p = sm.point(v);
+      if (outside) stock.insert({p.x(), p.y(), p.z()});
+    }
+    for (const Vec3& v : hull.mesh.vertices) ours.insert({v.x(), v.y(), v.z()});
+    EXPECT_EQ(ours, stock);
+  }
+  EXPECT_GT(checked, 100);
 }

@@ -74,7 +74,8 @@ struct Component {
 
 struct PhaseTimes {
   double prepare = 0.0, concavity = 0.0, grouping = 0.0, cutting = 0.0, merging = 0.0, hulls = 0.0, total = 0.0;  // seconds
-  // concavity/grouping/cutting are summed over worker threads (CPU seconds); prepare, hulls, total are wall.
+  // concavity/grouping/cutting are summed over the pieces (a piece's parallel parts by their wall
+  // time); prepare, hulls, total are wall.
 };
 
 struct DecomposeStats {

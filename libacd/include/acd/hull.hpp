@@ -13,7 +13,8 @@ struct ConvexHull {
   bool degenerate = false;  // fewer than 4 affinely independent points: no volume
 };
 
-/// Exact-predicate hull (CGAL quickhull). Duplicate input points map to the first occurrence.
+/// Exact-predicate hull (quickhull, acd/algo/quickhull.hpp), in canonical form: corners only, sorted by
+/// input index. Duplicate input points map to the first occurrence.
 ConvexHull convexHull(const std::vector<Vec3>& points);
 
 /// Convenience: hull mesh only.
