@@ -31,7 +31,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
 
 MODELS="armadillo bunny00 camel cow dino eight elephant handle homer knot"
-TAUS="0.2 0.14 0.1 0.07 0.05 0.035 0.025 0.02 0.015 0.01"
+TAUS="0.2 0.14 0.1 0.085 0.07 0.06 0.05 0.042 0.035 0.03 0.025 0.02 0.0175 0.015 0.0125"
 THREADS=2
 JOBS=1
 OUT="out/compare_peers"
