@@ -91,6 +91,16 @@ TEST(QuickHull, ATetrahedronIsFourTriangles) {
   EXPECT_EQ(qh.faces.size(), 4u);
 }
 
+TEST(QuickHull, CoordinatesBeyondTheIntegersOfADoubleAreNoDegeneracy) {
+  // At 1e17 a double's spacing is 16: adding 1 to a coordinate changes nothing, which must not
+  // make three corners of a tetrahedron look collinear.
+  const Vec3 a(1e17, 1e17, 1e17);
+  const std::vector<Vec3> t{a, a + Vec3(1e16, 0, 0), a + Vec3(0, 1e16, 0), a + Vec3(0, 0, 1e16)};
+  const QuickHull qh = quickHull(t);
+  expectHullOf(qh, t);
+  EXPECT_EQ(qh.faces.size(), 4u);
+}
+
 TEST(TriangleSide, SignsBelowTheDoubleRoundingAreExact) {
   // A point 2^-60 above the plane z = 0.5 of a large triangle: the double evaluation cannot
   // tell it from the plane, the exact one can.

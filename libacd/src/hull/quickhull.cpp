@@ -34,13 +34,14 @@ namespace {
 
 /// Exactly collinear: every triangle through the three points has no side.
 bool collinear(const Vec3& a, const Vec3& b, const Vec3& c) {
-  // Collinear iff coplanar with any fourth point off their line; the three lifts to the axes'
-  // directions cannot all lie on that line's planes unless the points are collinear.
+  // The triangle's normal is exactly zero iff the points are collinear. Its side test at a point
+  // moved from a along one axis has the sign of that component of the normal: one of the three
+  // is non-zero unless the normal is zero.
+  const TriangleSide side(a, b, c);
   for (int axis = 0; axis < 3; ++axis) {
-    Vec3 lifted = a;
-    lifted[axis] += 1.0;
-    if (lifted == a) continue;
-    if (TriangleSide(a, b, c).sign(lifted) != 0) return false;
+    Vec3 moved = a;
+    moved[axis] = std::nextafter(a[axis], std::numeric_limits<double>::infinity());
+    if (side.sign(moved) != 0) return false;
   }
   return true;
 }
