@@ -15,6 +15,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <limits>
 #include <random>
 #include <set>
 #include <string>
@@ -108,6 +109,15 @@ TEST(TriangleSide, SignsBelowTheDoubleRoundingAreExact) {
   EXPECT_EQ(side.sign(Vec3(0.3, 0.3, 0.5)), 0);
   EXPECT_EQ(side.sign(Vec3(0.3, 0.3, std::nextafter(0.5, 1.0))), 1);
   EXPECT_EQ(side.sign(Vec3(0.3, 0.3, std::nextafter(0.5, 0.0))), -1);
+  // Products that underflow: a point one subnormal ulp above the plane z = 0, and a triangle of
+  // 1e-170 sides (its normal's components underflow to zero in doubles).
+  const TriangleSide floor(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0));
+  EXPECT_EQ(floor.sign(Vec3(0.5, 0.5, std::numeric_limits<double>::denorm_min())), 1);
+  EXPECT_EQ(floor.sign(Vec3(0.5, 0.5, -std::numeric_limits<double>::denorm_min())), -1);
+  EXPECT_EQ(floor.sign(Vec3(0.5, 0.5, 0.0)), 0);
+  const TriangleSide tiny(Vec3(0, 0, 0), Vec3(1e-170, 0, 0), Vec3(0, 1e-170, 0));
+  EXPECT_EQ(tiny.sign(Vec3(0.3, 0.3, 1.0)), 1);
+  EXPECT_EQ(tiny.sign(Vec3(0.3, 0.3, -1.0)), -1);
   // A tilted plane through points that are not on a grid: the sign agrees with CGAL's.
   std::mt19937_64 rng(9);
   std::uniform_real_distribution<double> u(-1.0, 1.0);

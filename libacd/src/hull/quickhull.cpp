@@ -14,11 +14,19 @@
 namespace acd {
 
 TriangleSide::TriangleSide(const Vec3& p, const Vec3& q, const Vec3& r) : p_(p), q_(q), r_(r) {
-  const Vec3 u = q - p, v = r - p;
+  const Vec3 u = q - p, v = r - p;  // a difference of doubles that is tiny is exact
   n_ = u.cross(v);
   // The terms' absolute values, for the rounding error bound of a double evaluation.
   m_ = Vec3(std::abs(u.y() * v.z()) + std::abs(u.z() * v.y()), std::abs(u.z() * v.x()) + std::abs(u.x() * v.z()),
             std::abs(u.x() * v.y()) + std::abs(u.y() * v.x()));
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    zero_[i] = (u[j] == 0 || v[k] == 0) && (u[k] == 0 || v[j] == 0);
+    for (const auto& [a, b] : {std::pair{u[j], v[k]}, std::pair{u[k], v[j]}}) {
+      const double product = std::abs(a * b);
+      if (a != 0 && b != 0 && !(product > 1e-280 && product < 1e280)) normal_ = false;
+    }
+  }
 }
 
 int TriangleSide::exactSign(const Vec3& s) const {

@@ -21,16 +21,24 @@ class TriangleSide {
     const double terms = d.cwiseAbs().dot(m_);
     // Shewchuk's bound for this evaluation (the differences' rounding included) is 7.8e-16 of the
     // terms' sum (orient3d's errboundA): beyond 1e-15 of it the double result has the exact sign.
-    if (det > 1e-15 * terms) return 1;
-    if (det < -1e-15 * terms) return -1;
-    return terms == 0 ? 0 : exactSign(s);
+    // The bound assumes no product underflowed: near the underflow range the exact test decides.
+    if (terms > kUnderflowMargin && normal_) {
+      if (det > 1e-15 * terms) return 1;
+      if (det < -1e-15 * terms) return -1;
+    } else if ((d.x() == 0 || zero_[0]) && (d.y() == 0 || zero_[1]) && (d.z() == 0 || zero_[2])) {
+      return 0;  // every term has a factor that is exactly zero (a point on a cut cap in its own frame)
+    }
+    return exactSign(s);
   }
   /// (s - p) . n in doubles: how far s is beyond the plane, in units of |n|.
   double height(const Vec3& s) const { return (s - p_).dot(n_); }
 
  private:
+  static constexpr double kUnderflowMargin = 1e-250;
   int exactSign(const Vec3& s) const;
   Vec3 p_, q_, r_, n_, m_;
+  bool zero_[3];       // normal component i is exactly zero: each of its two products has a zero factor
+  bool normal_ = true;  // no product of the normal underflowed or overflowed
 };
 
 struct QuickHull {
