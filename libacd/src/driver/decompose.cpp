@@ -190,9 +190,8 @@ std::vector<Piece> firstPieces(const std::vector<TriMesh>& components, bool inva
 }
 
 /// What a merge may add outside the model and the two hulls it replaces, as a share of the union's
-/// volume (MergeScope::Model; 0.25 against 0.1 on compare_peers' grid: fewer parts at CoACD's
-/// excess and at its IoU alike, docs/BENCHMARKS.md).
-constexpr double kModelMergeGrowth = 0.25;
+/// volume (MergeScope::Model; measured on compare_peers' models, docs/ALGORITHM.md section 11).
+constexpr double kModelMergeGrowth = 0.1;
 /// Points per union for that volume: its standard error is below 0.5 % of the hull's volume.
 constexpr int kModelMergeSamples = 4096;
 
