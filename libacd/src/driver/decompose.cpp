@@ -285,7 +285,7 @@ void mergePieces(std::vector<Piece>& finals, std::vector<Component>& finalInfo, 
   std::map<std::pair<int, int>, MergeCandidate> measured;  // by the pieces' indices
   std::vector<TriMesh> hulls(finals.size());                 // each piece's hull, kept through merges
   tbb::parallel_for(std::size_t(0), finals.size(), [&](std::size_t i) {
-    hulls[i] = finalInfo[i].hull.faces.empty() ? convexHull(finals[i].mesh.vertices).mesh : finalInfo[i].hull;
+    hulls[i] = finalInfo[i].hull.faces.empty() ? convexHull(finals[i].mesh.vertices).mesh : std::move(finalInfo[i].hull);
   });
   for (bool merged = true; merged;) {
     merged = false;

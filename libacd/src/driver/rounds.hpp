@@ -45,6 +45,7 @@ auto runRounds(std::vector<Piece> roots, int maxPieces, const Process& process, 
   // most maxPieces pieces, no replayed round can reach the cap (the pieces counted there head
   // disjoint subtrees, each with a leaf); past it, the tree is dropped and the rounds run as such.
   tbb::concurrent_vector<Node> tree;
+  const std::size_t rootCount = roots.size();
   std::atomic<long> made{static_cast<long>(roots.size())}, finished{0}, finals{0};
   std::atomic<bool> tooMany{static_cast<long>(roots.size()) > maxPieces};
   std::mutex reporting;
@@ -55,7 +56,7 @@ auto runRounds(std::vector<Piece> roots, int maxPieces, const Process& process, 
     node.outcome = process(node.piece);
     if (!node.outcome.final) {
       std::vector<Piece> kids = children(node.piece, node.outcome);
-      node.piece = Piece{};  // a piece that was cut is not needed again (the roots have copies)
+      if (n >= rootCount) node.piece = Piece{};  // not needed again (a root is, should the tree be dropped)
       if ((made += static_cast<long>(kids.size())) > maxPieces) tooMany = true;
       for (Piece& kid : kids) {
         const std::size_t k = tree.push_back(Node{std::move(kid), Outcome{}, {}}) - tree.begin();
@@ -71,7 +72,6 @@ auto runRounds(std::vector<Piece> roots, int maxPieces, const Process& process, 
       progress(static_cast<int>(finals), static_cast<int>(made - finished));
     }
   };
-  std::vector<Piece> copies = roots;  // the rounds' start, should the tree be dropped
   for (Piece& root : roots) {
     const std::size_t k = tree.push_back(Node{std::move(root), Outcome{}, {}}) - tree.begin();
     tasks.run([&run, k] { run(k); });
@@ -82,7 +82,7 @@ auto runRounds(std::vector<Piece> roots, int maxPieces, const Process& process, 
   if (!tooMany) {
     // Replay: round by round, in order.
     std::vector<std::size_t> level;
-    for (std::size_t k = 0; k < copies.size(); ++k) level.push_back(k);
+    for (std::size_t k = 0; k < rootCount; ++k) level.push_back(k);
     while (!level.empty()) {
       std::vector<std::size_t> next;
       for (std::size_t n : level) {
@@ -100,8 +100,9 @@ auto runRounds(std::vector<Piece> roots, int maxPieces, const Process& process, 
     }
     return out;
   }
+  std::vector<Piece> pending;
+  for (std::size_t k = 0; k < rootCount; ++k) pending.push_back(std::move(tree[k].piece));
   tree.clear();
-  std::vector<Piece> pending = std::move(copies);
   while (!pending.empty()) {
     std::vector<Outcome> outcomes(pending.size());
     tbb::parallel_for(std::size_t(0), pending.size(), [&](std::size_t i) { outcomes[i] = process(pending[i]); });

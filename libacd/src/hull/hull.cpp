@@ -4,8 +4,6 @@
 #include <acd/algo/quickhull.hpp>
 #include <acd/algo/union_find.hpp>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-
 #include <algorithm>
 #include <array>
 #include <limits>
@@ -23,7 +21,6 @@ struct PointHash {
     return h;
   }
 };
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 
 // Akl-Toussaint elimination: the points extreme in 26 directions span a polytope inside the hull,
 // and a point strictly inside it cannot be a hull vertex. The test is a floating-point orientation
@@ -145,7 +142,6 @@ ConvexHull convexHull(const std::vector<Vec3>& points) {
       if (facet.find(qh.across[f][k]) != g) boundary.push_back({g, qh.faces[f][k], qh.faces[f][(k + 1) % 3]});
   }
   std::sort(boundary.begin(), boundary.end());
-  auto pt = [&](int v) { return K::Point_3(pts[v].x(), pts[v].y(), pts[v].z()); };
   for (std::size_t begin = 0, end = 0; begin < boundary.size(); begin = end) {
     while (end < boundary.size() && boundary[end][0] == boundary[begin][0]) ++end;
     // The facet's outline, from its corner of smallest input index; edges are sorted by corner.
@@ -160,7 +156,7 @@ ConvexHull convexHull(const std::vector<Vec3>& points) {
     for (int v = nextOf(first); v >= 0 && v != first && loop.size() <= end - begin; v = nextOf(v)) loop.push_back(v);
     std::vector<int> ring;  // the loop's corners: points on the facet's edges are dropped
     for (std::size_t i = 0; i < loop.size(); ++i)
-      if (!CGAL::collinear(pt(loop[(i + loop.size() - 1) % loop.size()]), pt(loop[i]), pt(loop[(i + 1) % loop.size()])))
+      if (!collinear(pts[loop[(i + loop.size() - 1) % loop.size()]], pts[loop[i]], pts[loop[(i + 1) % loop.size()]]))
         ring.push_back(loop[i]);
     // Ear clipping: on a convex polygon every corner is an ear. Clip the fattest ear first
     // (largest area, ties to the earlier corner) so that no sliver triangles with meaningless
@@ -170,7 +166,7 @@ ConvexHull convexHull(const std::vector<Vec3>& points) {
       double fattest = -1.0;
       for (std::size_t i = 0; i < ring.size(); ++i) {
         const int a = ring[(i + ring.size() - 1) % ring.size()], b = ring[i], c = ring[(i + 1) % ring.size()];
-        if (CGAL::collinear(pt(a), pt(b), pt(c))) continue;
+        if (collinear(pts[a], pts[b], pts[c])) continue;
         const double area = (pts[b] - pts[a]).cross(pts[c] - pts[a]).norm();
         if (area > fattest) fattest = area, ear = i;
       }
@@ -179,7 +175,7 @@ ConvexHull convexHull(const std::vector<Vec3>& points) {
       triangles.push_back({ring[prev], ring[ear], ring[nextI]});
       ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(ear));
     }
-    if (ring.size() == 3 && !CGAL::collinear(pt(ring[0]), pt(ring[1]), pt(ring[2])))
+    if (ring.size() == 3 && !collinear(pts[ring[0]], pts[ring[1]], pts[ring[2]]))
       triangles.push_back({ring[0], ring[1], ring[2]});
   }
   std::vector<int> sorted;  // input indices of the corners

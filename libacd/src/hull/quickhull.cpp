@@ -38,9 +38,6 @@ int TriangleSide::exactSign(const Vec3& s) const {
   return e.sign();
 }
 
-namespace {
-
-/// Exactly collinear: every triangle through the three points has no side.
 bool collinear(const Vec3& a, const Vec3& b, const Vec3& c) {
   // The triangle's normal is exactly zero iff the points are collinear. Its side test at a point
   // moved from a along one axis has the sign of that component of the normal: one of the three
@@ -53,6 +50,8 @@ bool collinear(const Vec3& a, const Vec3& b, const Vec3& c) {
   }
   return true;
 }
+
+namespace {
 
 struct Triangle {
   std::array<int, 3> v;

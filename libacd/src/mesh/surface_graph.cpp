@@ -105,42 +105,10 @@ std::vector<int> PathFinder::path(int s, int t, const EdgeWeight& weight, const 
 
 void PathFinder::flood(const std::vector<int>& sources, const EdgeWeight& weight, const std::vector<char>* allowed,
                        std::vector<double>& distance, std::vector<int>& parent, const std::vector<int>* targets) const {
-  const int n = graph_.vertexCount();
-  distance.assign(n, std::numeric_limits<double>::infinity());
-  parent.assign(n, -1);
-  // Targets still to settle: a target is settled when it leaves the queue at its distance.
-  std::vector<char> pending;
-  int unsettled = 0;
-  if (targets) {
-    pending.assign(n, 0);
-    for (int t : *targets)
-      if (!pending[t]) pending[t] = 1, ++unsettled;
-  }
-  using Item = std::pair<double, int>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open;
-  for (int s : sources) {
-    distance[s] = 0.0;
-    open.emplace(0.0, s);
-  }
-  while (!open.empty()) {
-    const auto [d, v] = open.top();
-    open.pop();
-    if (d > distance[v]) continue;
-    if (targets && pending[v]) {
-      pending[v] = 0;
-      if (--unsettled == 0) return;
-    }
-    for (int slot = graph_.begin(v); slot < graph_.end(v); ++slot) {
-      const int w = graph_.neighbour(slot);
-      if (allowed && !(*allowed)[w]) continue;
-      const double nd = d + (weight ? weight(v, w, slot) : graph_.length(slot));
-      if (nd < distance[w]) {
-        distance[w] = nd;
-        parent[w] = v;
-        open.emplace(nd, w);
-      }
-    }
-  }
+  PathFinder own(graph_);  // fresh buffers: a vertex the search does not reach stays at infinity
+  own.search(sources, weight, allowed, targets);
+  distance = std::move(own.dist_);
+  parent = std::move(own.parent_);
 }
 
 void PathFinder::search(const std::vector<int>& sources, const EdgeWeight& weight, const std::vector<char>* allowed,

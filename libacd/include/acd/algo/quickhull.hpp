@@ -41,6 +41,9 @@ class TriangleSide {
   bool normal_ = true;  // no product of the normal underflowed or overflowed
 };
 
+/// Exactly collinear (TriangleSide's exact test: the triangle has no side).
+bool collinear(const Vec3& a, const Vec3& b, const Vec3& c);
+
 struct QuickHull {
   std::vector<std::array<int, 3>> faces;   // point indices, counter-clockwise seen from outside
   std::vector<std::array<int, 3>> across;  // the face across edge k (corners k, k + 1) of each face
