@@ -348,3 +348,49 @@ TEST(Cut, PiecesContainExactlyTheirHalfOfSampledPoints) {
   }
   EXPECT_GT(inside, 1000);
 }
+
+// A comb: a bar [0,3]x[0,1]x[0,1] with prongs [0,1]x[1,2]x[0,1] and [2,3]x[1,2]x[0,1]; y = 1.5
+// crosses both prongs.
+TEST(Cut, NearOneRegionCutsOnlyThatProng) {
+  const TriMesh comb = shapes::voxels({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {2, 1, 0}});
+  const Plane plane{Vec3(0, 1, 0), 1.5};
+  const CutResult all = cutByPlane(comb, plane);
+  expectValidCut(comb, plane, all, 1e-12);
+  EXPECT_EQ(all.below.size() + all.above.size(), 3u);  // the bar, and each prong's tip
+
+  const Vec3 near(0.5, 1.5, 0.2);  // on the first prong's section
+  const CutResult r = cutByPlane(comb, plane, 1e-10, &near);
+  ASSERT_TRUE(r.ok) << r.error;
+  ASSERT_EQ(r.below.size(), 1u);
+  ASSERT_EQ(r.above.size(), 1u);
+  EXPECT_TRUE(isClosedOriented(r.below[0]));
+  EXPECT_TRUE(isClosedOriented(r.above[0]));
+  // Above: the first prong's tip alone. Below: the bar with the second prong whole.
+  EXPECT_NEAR(signedVolume(r.above[0]), 0.5, 1e-14);
+  EXPECT_NEAR(signedVolume(r.below[0]), 4.5, 1e-14);
+  const Box3 a = boundingBox(compact(r.above[0])), b = boundingBox(compact(r.below[0]));
+  EXPECT_EQ(a.lo, Vec3(0, 1.5, 0));
+  EXPECT_EQ(a.hi, Vec3(1, 2, 1));
+  EXPECT_EQ(b.lo, Vec3(0, 0, 0));
+  EXPECT_EQ(b.hi, Vec3(3, 2, 1));
+
+  const Vec3 other(2.6, 1.5, 0.9);  // the second prong's
+  const CutResult s = cutByPlane(comb, plane, 1e-10, &other);
+  ASSERT_TRUE(s.ok) << s.error;
+  ASSERT_EQ(s.above.size(), 1u);
+  EXPECT_EQ(boundingBox(compact(s.above[0])).lo, Vec3(2, 1.5, 0));
+}
+
+// Cutting one of the two sections of a torus through its axis would leave a piece meeting itself
+// across that section: the cut goes through both, as without `near`.
+TEST(Cut, NearARegionOfAHandleCutsEveryRegion) {
+  const TriMesh torus = shapes::torus(2.0, 0.5, 48, 24);
+  const Plane plane{Vec3(1, 0, 0), 0.0};
+  const Vec3 near(0, 2, 0);
+  const CutResult r = cutByPlane(torus, plane, 1e-10, &near);
+  expectValidCut(torus, plane, r);
+  ASSERT_EQ(r.below.size(), 1u);
+  ASSERT_EQ(r.above.size(), 1u);
+  const double v = signedVolume(torus);
+  EXPECT_NEAR(signedVolume(r.below[0]), 0.5 * v, 1e-9 * v);
+}

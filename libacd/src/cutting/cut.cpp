@@ -11,7 +11,10 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <cmath>
+#include <limits>
+#include <algorithm>
 #include <list>
+#include <numeric>
 #include <unordered_map>
 
 namespace acd {
@@ -100,9 +103,110 @@ bool triangulateSection(const std::vector<Vec3>& points, const std::vector<std::
   return true;
 }
 
+
+int findRootOf(std::vector<int>& parent, int x) {
+  while (parent[x] != x) x = parent[x] = parent[parent[x]];
+  return x;
+}
+
+/// The cut through the cap region nearest `near` only: the surface stays whole across every other
+/// region of the section. Fills `result` and returns true when that gives at least two closed
+/// pieces; false (result untouched) when the section has one region, or when some piece would
+/// meet itself across the kept region (a handle), so that the caller cuts everywhere.
+bool cutNear(const std::vector<Vec3>& points, const std::vector<Face>& below, const std::vector<Face>& above,
+             const std::vector<Face>& cap, const Vec3& near, CutResult& result) {
+  // Cap regions: cap faces joined across shared edges.
+  const int nc = static_cast<int>(cap.size());
+  std::vector<int> parent(nc);
+  std::iota(parent.begin(), parent.end(), 0);
+  std::unordered_map<std::uint64_t, int> firstAt;
+  for (int f = 0; f < nc; ++f)
+    for (int k = 0; k < 3; ++k) {
+      auto [it, inserted] = firstAt.emplace(edgeKey(cap[f][k], cap[f][(k + 1) % 3]), f);
+      if (!inserted) parent[findRootOf(parent, f)] = findRootOf(parent, it->second);
+    }
+  int keep = -1, regions = 0;
+  double best = std::numeric_limits<double>::infinity();
+  for (int f = 0; f < nc; ++f) {
+    const int r = findRootOf(parent, f);
+    regions += r == f;
+    for (int v : cap[f]) {
+      const double d = (points[v] - near).squaredNorm();
+      if (d < best || (d == best && r < keep)) best = d, keep = r;
+    }
+  }
+  if (regions < 2) return false;
+  // Faces: lower surface, upper surface, then the kept region's cap on each side.
+  std::vector<Face> faces = below;
+  std::vector<signed char> sideOf(below.size(), -1);
+  faces.insert(faces.end(), above.begin(), above.end());
+  sideOf.resize(faces.size(), 1);
+  std::vector<char> isCap(faces.size(), 0);
+  int lowerCap = -1, upperCap = -1;
+  for (int f = 0; f < nc; ++f) {
+    if (findRootOf(parent, f) != keep) continue;
+    lowerCap = static_cast<int>(faces.size());
+    faces.push_back(cap[f]), sideOf.push_back(-1), isCap.push_back(1);
+    upperCap = static_cast<int>(faces.size());
+    faces.push_back({cap[f][0], cap[f][2], cap[f][1]}), sideOf.push_back(1), isCap.push_back(1);
+  }
+  // Pieces: faces joined across their edges. An edge of the kept region (its outline or inside it)
+  // has four faces, joined side by side; an edge of another region's outline joins the two sides'
+  // surfaces.
+  const int nf = static_cast<int>(faces.size());
+  std::vector<std::pair<std::uint64_t, int>> at;  // (edge, face), sorted: an edge's faces side by side
+  at.reserve(3 * faces.size());
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) at.emplace_back(edgeKey(faces[f][k], faces[f][(k + 1) % 3]), f);
+  std::sort(at.begin(), at.end());
+  std::vector<int> piece(nf);
+  std::iota(piece.begin(), piece.end(), 0);
+  auto join = [&](int a, int b) { piece[findRootOf(piece, a)] = findRootOf(piece, b); };
+  for (std::size_t i = 0, j; i < at.size(); i = j) {
+    for (j = i + 1; j < at.size() && at[j].first == at[i].first;) ++j;
+    if (j - i == 2) {
+      join(at[i].second, at[i + 1].second);
+    } else if (j - i == 4) {
+      int lower[2], upper[2], nl = 0, nu = 0;
+      for (std::size_t k = i; k < j; ++k) {
+        const int f = at[k].second;
+        if (sideOf[f] < 0 && nl < 2) lower[nl++] = f;
+        else if (sideOf[f] > 0 && nu < 2) upper[nu++] = f;
+        else return false;
+      }
+      join(lower[0], lower[1]);
+      join(upper[0], upper[1]);
+    } else {
+      return false;
+    }
+  }
+  if (findRootOf(piece, lowerCap) == findRootOf(piece, upperCap)) return false;  // a handle: cut it all
+  // Pieces in the order of their first face; a piece is "below" when it holds the kept region's
+  // lower cap.
+  std::vector<int> index(nf, -1);
+  std::vector<std::vector<Face>> groups;
+  std::vector<char> lowerSide;
+  for (int f = 0; f < nf; ++f) {
+    int& g = index[findRootOf(piece, f)];
+    if (g < 0) g = static_cast<int>(groups.size()), groups.emplace_back(), lowerSide.push_back(0);
+    groups[g].push_back(faces[f]);
+    if (isCap[f] && sideOf[f] < 0) lowerSide[g] = 1;
+  }
+  if (groups.size() < 2) return false;
+  CutResult out;
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    TriMesh m = compact(TriMesh{points, groups[g]});
+    if (!isClosedOriented(m)) return false;
+    (lowerSide[g] ? out.below : out.above).push_back(std::move(m));
+  }
+  out.ok = true;
+  result = std::move(out);
+  return true;
+}
+
 }  // namespace
 
-CutResult cutByPlane(const TriMesh& mesh, const Plane& plane, double snap) {
+CutResult cutByPlane(const TriMesh& mesh, const Plane& plane, double snap, const Vec3* near) {
   CutResult result;
   const double len = plane.normal.norm();
   if (!(len > 0.0) || !std::isfinite(plane.offset)) {
@@ -191,6 +295,7 @@ CutResult cutByPlane(const TriMesh& mesh, const Plane& plane, double snap) {
     }
   std::vector<Face> cap;
   if (!section.empty() && !triangulateSection(points, section, n, cap, result.error)) return result;
+  if (near && cutNear(points, below, above, cap, *near, result)) return result;
   for (const Face& f : cap) {
     below.push_back(f);
     above.push_back({f[0], f[2], f[1]});

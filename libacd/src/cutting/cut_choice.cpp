@@ -26,7 +26,7 @@ double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(
 constexpr double kCapThickness = 1e-9;
 }  // namespace
 
-bool cutCleanly(const TriMesh& mesh, const Plane& plane, std::vector<TriMesh>& pieces, Plane& used) {
+bool cutCleanly(const TriMesh& mesh, const Plane& plane, std::vector<TriMesh>& pieces, Plane& used, const Vec3* near) {
   // Small shifts get past degenerate sections; the larger ones past local self-intersections of the
   // input (whose sections have crossing loops), at the price of a cut slightly off the notch.
   const double nudges[] = {0.0, 1e-7, -1e-7, 1e-5, -1e-5, 1e-3, -1e-3, 4e-3, -4e-3};
@@ -35,7 +35,7 @@ bool cutCleanly(const TriMesh& mesh, const Plane& plane, std::vector<TriMesh>& p
   for (double nudge : nudges) {
     Plane p = plane;
     p.offset += nudge * p.normal.norm();
-    CutResult cut = cutByPlane(mesh, p);
+    CutResult cut = cutByPlane(mesh, p, 1e-10, near);
     if (!cut.ok || cut.below.empty() || cut.above.empty()) continue;
     std::vector<TriMesh> out;
     bool valid = true;
@@ -223,7 +223,9 @@ CutChoice cutByLookahead(const TriMesh& mesh, const std::vector<Plane>& candidat
         repeatOf[i] = static_cast<int>(j);
   tbb::parallel_for(std::size_t(0), candidates.size(), [&](std::size_t i) {
     if (repeatOf[i] >= 0) return;
-    cutOk[i] = cutCleanly(mesh, candidates[i], children[i], used[i]);
+    // Only the section through the notch is cut: a plane across a hand would otherwise cut
+    // every finger it meets, into tips too small to matter and too far apart to merge again.
+    cutOk[i] = cutCleanly(mesh, candidates[i], children[i], used[i], &mesh.vertices[site.notch]);
     if (!cutOk[i]) return;
     for (const TriMesh& child : children[i]) {
       if (site.stalls > 0) {

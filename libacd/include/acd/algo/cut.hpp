@@ -23,6 +23,10 @@ struct CutResult {
 /// Delaunay, exact predicates) and shared by both sides with opposite
 /// orientations, so the pieces' volumes add up to the input's. Fails cleanly
 /// (ok = false) when the section is not a set of simple, disjoint loops.
-CutResult cutByPlane(const TriMesh& mesh, const Plane& plane, double snap = 1e-10);
+///
+/// With `near`, only the section region nearest that point is cut: the surface stays whole across
+/// the others (a plane through a hand's palm then leaves the fingers on), unless that would make a
+/// piece meet itself across the region (the plane opens a handle), when every region is cut.
+CutResult cutByPlane(const TriMesh& mesh, const Plane& plane, double snap = 1e-10, const Vec3* near = nullptr);
 
 }  // namespace acd
