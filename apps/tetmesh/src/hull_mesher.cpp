@@ -31,6 +31,9 @@ HullMeshResult meshHulls(const acd::TriMesh& model, const HullMeshOptions& optio
   acd::DecomposeOptions dopt;
   dopt.tau = options.tau;
   dopt.merge = options.merge;
+  // The complex needs leaves that lie on one side of every plane that cut their ancestors: their
+  // hulls then meet only on those planes. A cut at the notch only leaves a finger whole across it.
+  dopt.cutAtNotchOnly = false;
   dopt.threads = options.threads;
   r.decomposition = acd::decompose(model, dopt);
   r.times.decompose = since(t0);

@@ -17,7 +17,7 @@ enum class MergeScope {
   /// The union's own concavity within tau (the paper's promise for every component), its hull within
   /// tau of it and at most 3 % of its volume beyond the two hulls it replaces.
   Component,
-  /// The union's hull within tau of the model, and at most 10 % of the union's volume added outside
+  /// The union's hull within tau of the model, and at most 25 % of the union's volume added outside
   /// the model and the two hulls: a component may be more concave than tau where its pockets are
   /// filled by other components. Touching pieces that do not glue into one solid may share one
   /// hull too: a component may then have several shells. Fewer parts for the same hulls-to-model fidelity.
@@ -29,6 +29,9 @@ struct DecomposeOptions {
   double epsilon = -1.0;         // bridge clustering tolerance; < 0 means tau / 2
   double delta = -1.0;           // Douglas-Peucker knot tolerance; < 0 means tau / 20
   bool featureGrouping = true;   // false: bisect the notch's dihedral angle (Section 3.2)
+  /// Cut only the section region at the notch (docs/ALGORITHM.md section 10). false: every region
+  /// the plane meets, so that each piece lies on one side of every plane that cut its ancestors.
+  bool cutAtNotchOnly = true;
   bool merge = true;             // glue neighbours back while their union stays within tau
   MergeScope mergeScope = MergeScope::Component;  // what "within tau" means for a union (above)
   bool fillHoles = true;         // close an open mesh's holes first (false: refuse open meshes)

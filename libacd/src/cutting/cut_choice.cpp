@@ -225,7 +225,7 @@ CutChoice cutByLookahead(const TriMesh& mesh, const std::vector<Plane>& candidat
     if (repeatOf[i] >= 0) return;
     // Only the section through the notch is cut: a plane across a hand would otherwise cut
     // every finger it meets, into tips too small to matter and too far apart to merge again.
-    cutOk[i] = cutCleanly(mesh, candidates[i], children[i], used[i], &mesh.vertices[site.notch]);
+    cutOk[i] = cutCleanly(mesh, candidates[i], children[i], used[i], site.atNotchOnly ? &mesh.vertices[site.notch] : nullptr);
     if (!cutOk[i]) return;
     for (const TriMesh& child : children[i]) {
       if (site.stalls > 0) {

@@ -136,7 +136,7 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
     c.note = "nine cuts in a row left the notch's concavity unchanged";
     return out;
   }
-  const CutSite site{notchIndex, bridgeNormal, stalls, fromExcess};
+  const CutSite site{notchIndex, bridgeNormal, stalls, fromExcess, o.cutAtNotchOnly};
   const std::vector<Plane> candidates = candidatePlanes(piece.mesh, graph, map, o, site, out.times.grouping);
   t = Clock::now();
   const bool firstPlane = (!o.featureGrouping && stalls == 0) || candidates.size() == 1;
@@ -191,7 +191,7 @@ std::vector<Piece> firstPieces(const std::vector<TriMesh>& components, bool inva
 
 /// What a merge may add outside the model and the two hulls it replaces, as a share of the union's
 /// volume (MergeScope::Model; measured on compare_peers' models, docs/ALGORITHM.md section 11).
-constexpr double kModelMergeGrowth = 0.1;
+constexpr double kModelMergeGrowth = 0.25;
 /// Points per union for that volume: its standard error is below 0.5 % of the hull's volume.
 constexpr int kModelMergeSamples = 4096;
 

@@ -61,6 +61,7 @@ json solidReport(const ReportInput& in, const Decomposition& d) {
                      {"epsilon", d.options.epsilon},
                      {"delta", d.options.delta},
                      {"feature_grouping", d.options.featureGrouping},
+                     {"cut_at_notch_only", d.options.cutAtNotchOnly},
                      {"merge", d.options.merge},
                      {"merge_scope", d.options.mergeScope == MergeScope::Model ? "model" : "component"},
                      {"invariant", d.options.invariant},

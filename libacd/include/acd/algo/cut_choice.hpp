@@ -23,6 +23,7 @@ struct CutSite {
   Vec3 bridgeNormal = Vec3::Zero();
   int stalls = 0;                  // consecutive cuts that left this notch as it was
   bool fromExcess = false;         // cut because its hull stands off it, not for a pocket
+  bool atNotchOnly = true;         // cut only the section region at the notch
 };
 
 /// The planes that compete to cut `mesh` at the site: the global cuts of feature grouping
