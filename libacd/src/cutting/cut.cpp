@@ -194,8 +194,20 @@ bool cutNear(const std::vector<Vec3>& points, const std::vector<Face>& below, co
   }
   if (groups.size() < 2) return false;
   CutResult out;
+  std::vector<int> remap(points.size(), -1);
   for (std::size_t g = 0; g < groups.size(); ++g) {
-    TriMesh m = compact(TriMesh{points, groups[g]});
+    // Compacted in place of compact(TriMesh{points, ...}), which would copy every point per piece.
+    std::vector<int> used;
+    for (const Face& f : groups[g])
+      for (int v : f)
+        if (remap[v] < 0) remap[v] = 0, used.push_back(v);
+    std::sort(used.begin(), used.end());
+    TriMesh m;
+    m.vertices.reserve(used.size());
+    for (int v : used) remap[v] = static_cast<int>(m.vertices.size()), m.vertices.push_back(points[v]);
+    m.faces.reserve(groups[g].size());
+    for (const Face& f : groups[g]) m.faces.push_back({remap[f[0]], remap[f[1]], remap[f[2]]});
+    for (int v : used) remap[v] = -1;
     if (!isClosedOriented(m)) return false;
     (lowerSide[g] ? out.below : out.above).push_back(std::move(m));
   }
