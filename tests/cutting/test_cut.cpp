@@ -8,6 +8,7 @@
 #include "helpers.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 
@@ -349,10 +350,10 @@ TEST(Cut, PiecesContainExactlyTheirHalfOfSampledPoints) {
   EXPECT_GT(inside, 1000);
 }
 
-// A comb: a bar [0,3]x[0,1]x[0,1] with prongs [0,1]x[1,2]x[0,1] and [2,3]x[1,2]x[0,1]; y = 1.5
-// crosses both prongs.
+// A comb: a bar [0,6]x[0,1]x[0,1] with prongs [0,1]x[1,2]x[0,1] and [5,6]x[1,2]x[0,1]; y = 1.5
+// crosses both prongs, and each tip is 1/16 of the comb (under cutNear's 10 %).
 TEST(Cut, NearOneRegionCutsOnlyThatProng) {
-  const TriMesh comb = shapes::voxels({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {2, 1, 0}});
+  const TriMesh comb = shapes::voxels({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}, {5, 0, 0}, {0, 1, 0}, {5, 1, 0}});
   const Plane plane{Vec3(0, 1, 0), 1.5};
   const CutResult all = cutByPlane(comb, plane);
   expectValidCut(comb, plane, all, 1e-12);
@@ -367,18 +368,33 @@ TEST(Cut, NearOneRegionCutsOnlyThatProng) {
   EXPECT_TRUE(isClosedOriented(r.above[0]));
   // Above: the first prong's tip alone. Below: the bar with the second prong whole.
   EXPECT_NEAR(signedVolume(r.above[0]), 0.5, 1e-14);
-  EXPECT_NEAR(signedVolume(r.below[0]), 4.5, 1e-14);
+  EXPECT_NEAR(signedVolume(r.below[0]), 7.5, 1e-14);
   const Box3 a = boundingBox(compact(r.above[0])), b = boundingBox(compact(r.below[0]));
   EXPECT_EQ(a.lo, Vec3(0, 1.5, 0));
   EXPECT_EQ(a.hi, Vec3(1, 2, 1));
   EXPECT_EQ(b.lo, Vec3(0, 0, 0));
-  EXPECT_EQ(b.hi, Vec3(3, 2, 1));
+  EXPECT_EQ(b.hi, Vec3(6, 2, 1));
 
-  const Vec3 other(2.6, 1.5, 0.9);  // the second prong's
+  const Vec3 other(5.6, 1.5, 0.9);  // the second prong's
   const CutResult s = cutByPlane(comb, plane, 1e-10, &other);
   ASSERT_TRUE(s.ok) << s.error;
   ASSERT_EQ(s.above.size(), 1u);
-  EXPECT_EQ(boundingBox(compact(s.above[0])).lo, Vec3(2, 1.5, 0));
+  EXPECT_EQ(boundingBox(compact(s.above[0])).lo, Vec3(5, 1.5, 0));
+}
+
+// Two towers [0,1]x[1,5] and [2,3]x[1,5] on a bar [0,3]x[0,1]: y = 3 leaves 2/11 of the model
+// on each side of each tower's section, so the other tower is cut too, as without `near`.
+TEST(Cut, NearAlsoCutsARegionWithLargePiecesOnBothSides) {
+  std::vector<std::array<int, 3>> cells{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}};
+  for (int y = 1; y < 5; ++y) cells.push_back({0, y, 0}), cells.push_back({2, y, 0});
+  const TriMesh towers = shapes::voxels(cells);
+  const Plane plane{Vec3(0, 1, 0), 3.0};
+  const Vec3 near(0.5, 3.0, 0.5);
+  const CutResult r = cutByPlane(towers, plane, 1e-10, &near);
+  expectValidCut(towers, plane, r, 1e-12);
+  ASSERT_EQ(r.below.size(), 1u);
+  ASSERT_EQ(r.above.size(), 2u);
+  for (const TriMesh& top : r.above) EXPECT_NEAR(signedVolume(top), 2.0, 1e-14);
 }
 
 // Cutting one of the two sections of a torus through its axis would leave a piece meeting itself

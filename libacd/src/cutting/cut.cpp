@@ -109,10 +109,15 @@ int findRootOf(std::vector<int>& parent, int x) {
   return x;
 }
 
-/// The cut through the cap region nearest `near` only: the surface stays whole across every other
-/// region of the section. Fills `result` and returns true when that gives at least two closed
-/// pieces; false (result untouched) when the section has one region, or when some piece would
-/// meet itself across the kept region (a handle), so that the caller cuts everywhere.
+/// A section region away from the notch is cut too when both its sides are at least this share of
+/// the mesh's volume (measured with compare_peers: docs/ALGORITHM.md section 10).
+constexpr double kLargePiece = 0.1;
+
+/// The cut through the cap region nearest `near`, and through the other regions between large
+/// pieces: the surface stays whole across the rest. Fills `result` and returns true when that
+/// gives at least two closed pieces and not every region is cut; false (result untouched) when
+/// the section has one region, or when some piece would meet itself across a cut region (a
+/// handle), so that the caller cuts everywhere.
 bool cutNear(const std::vector<Vec3>& points, const std::vector<Face>& below, const std::vector<Face>& above,
              const std::vector<Face>& cap, const Vec3& near, CutResult& result) {
   // Cap regions: cap faces joined across shared edges.
@@ -136,61 +141,97 @@ bool cutNear(const std::vector<Vec3>& points, const std::vector<Face>& below, co
     }
   }
   if (regions < 2) return false;
-  // Faces: lower surface, upper surface, then the kept region's cap on each side.
+  // Faces: lower surface, upper surface, then every region's cap on each side.
   std::vector<Face> faces = below;
   std::vector<signed char> sideOf(below.size(), -1);
   faces.insert(faces.end(), above.begin(), above.end());
   sideOf.resize(faces.size(), 1);
-  std::vector<char> isCap(faces.size(), 0);
-  int lowerCap = -1, upperCap = -1;
+  std::vector<int> regionOf(faces.size(), -1);
   for (int f = 0; f < nc; ++f) {
-    if (findRootOf(parent, f) != keep) continue;
-    lowerCap = static_cast<int>(faces.size());
-    faces.push_back(cap[f]), sideOf.push_back(-1), isCap.push_back(1);
-    upperCap = static_cast<int>(faces.size());
-    faces.push_back({cap[f][0], cap[f][2], cap[f][1]}), sideOf.push_back(1), isCap.push_back(1);
+    const int r = findRootOf(parent, f);
+    faces.push_back(cap[f]), sideOf.push_back(-1), regionOf.push_back(r);
+    faces.push_back({cap[f][0], cap[f][2], cap[f][1]}), sideOf.push_back(1), regionOf.push_back(r);
   }
-  // Pieces: faces joined across their edges. An edge of the kept region (its outline or inside it)
-  // has four faces, joined side by side; an edge of another region's outline joins the two sides'
-  // surfaces.
   const int nf = static_cast<int>(faces.size());
   std::vector<std::pair<std::uint64_t, int>> at;  // (edge, face), sorted: an edge's faces side by side
   at.reserve(3 * faces.size());
   for (int f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k) at.emplace_back(edgeKey(faces[f][k], faces[f][(k + 1) % 3]), f);
   std::sort(at.begin(), at.end());
+  // Pieces of the faces `in`, joined across their edges: an edge with two faces joins them; an
+  // edge of a cut region (its outline or inside it) has four, joined side by side.
   std::vector<int> piece(nf);
-  std::iota(piece.begin(), piece.end(), 0);
-  auto join = [&](int a, int b) { piece[findRootOf(piece, a)] = findRootOf(piece, b); };
-  for (std::size_t i = 0, j; i < at.size(); i = j) {
-    for (j = i + 1; j < at.size() && at[j].first == at[i].first;) ++j;
-    if (j - i == 2) {
-      join(at[i].second, at[i + 1].second);
-    } else if (j - i == 4) {
-      int lower[2], upper[2], nl = 0, nu = 0;
-      for (std::size_t k = i; k < j; ++k) {
-        const int f = at[k].second;
-        if (sideOf[f] < 0 && nl < 2) lower[nl++] = f;
-        else if (sideOf[f] > 0 && nu < 2) upper[nu++] = f;
-        else return false;
+  auto pieces = [&](const std::vector<char>& in) {
+    std::iota(piece.begin(), piece.end(), 0);
+    auto join = [&](int a, int b) { piece[findRootOf(piece, a)] = findRootOf(piece, b); };
+    int list[4];
+    for (std::size_t i = 0, j; i < at.size(); i = j) {
+      int n = 0;
+      for (j = i; j < at.size() && at[j].first == at[i].first; ++j)
+        if (in[at[j].second]) {
+          if (n == 4) return false;
+          list[n++] = at[j].second;
+        }
+      if (n == 2) {
+        join(list[0], list[1]);
+      } else if (n == 4) {
+        int lower[2], upper[2], nl = 0, nu = 0;
+        for (int f : list) {
+          if (sideOf[f] < 0 && nl < 2) lower[nl++] = f;
+          else if (sideOf[f] > 0 && nu < 2) upper[nu++] = f;
+          else return false;
+        }
+        join(lower[0], lower[1]);
+        join(upper[0], upper[1]);
+      } else if (n != 0) {
+        return false;
       }
-      join(lower[0], lower[1]);
-      join(upper[0], upper[1]);
-    } else {
-      return false;
     }
+    return true;
+  };
+  // Which regions are cut: the one at the notch, and any other whose two sides would both be
+  // pieces of at least kLargePiece of the whole when every region is cut (a plane across a body
+  // and its legs: the legs would need their own cuts; a fingertip would not).
+  std::vector<char> cutRegion(nc, 0);
+  cutRegion[keep] = 1;
+  {
+    if (!pieces(std::vector<char>(nf, 1))) return false;
+    std::vector<double> volume(nf, 0.0);
+    double total = 0.0;
+    for (int f = 0; f < nf; ++f) {
+      const double v = points[faces[f][0]].dot(points[faces[f][1]].cross(points[faces[f][2]])) / 6.0;
+      volume[findRootOf(piece, f)] += v;
+      if (regionOf[f] < 0) total += v;
+    }
+    std::vector<int> lowerPiece(nc, -1), upperPiece(nc, -1);
+    for (int f = static_cast<int>(below.size() + above.size()); f < nf; ++f)
+      (sideOf[f] < 0 ? lowerPiece : upperPiece)[regionOf[f]] = findRootOf(piece, f);
+    bool all = true;
+    for (int r = 0; r < nc; ++r) {
+      if (lowerPiece[r] < 0 || r == keep) continue;
+      cutRegion[r] = std::min(volume[lowerPiece[r]], volume[upperPiece[r]]) >= kLargePiece * total;
+      all &= cutRegion[r] != 0;
+    }
+    if (all) return false;  // the plain cut
   }
-  if (findRootOf(piece, lowerCap) == findRootOf(piece, upperCap)) return false;  // a handle: cut it all
+  std::vector<char> in(nf, 1);
+  for (int f = 0; f < nf; ++f)
+    if (regionOf[f] >= 0 && !cutRegion[regionOf[f]]) in[f] = 0;
+  if (!pieces(in)) return false;
+  // A handle: some piece would meet itself across a cut region; cut them all.
+  for (int f = static_cast<int>(below.size() + above.size()); f < nf; f += 2)
+    if (in[f] && findRootOf(piece, f) == findRootOf(piece, f + 1)) return false;
   // Pieces in the order of their first face; a piece is "below" when it holds the kept region's
   // lower cap.
   std::vector<int> index(nf, -1);
   std::vector<std::vector<Face>> groups;
   std::vector<char> lowerSide;
   for (int f = 0; f < nf; ++f) {
+    if (!in[f]) continue;
     int& g = index[findRootOf(piece, f)];
     if (g < 0) g = static_cast<int>(groups.size()), groups.emplace_back(), lowerSide.push_back(0);
     groups[g].push_back(faces[f]);
-    if (isCap[f] && sideOf[f] < 0) lowerSide[g] = 1;
+    if (regionOf[f] == keep && sideOf[f] < 0) lowerSide[g] = 1;
   }
   if (groups.size() < 2) return false;
   CutResult out;

@@ -24,9 +24,10 @@ struct CutResult {
 /// orientations, so the pieces' volumes add up to the input's. Fails cleanly
 /// (ok = false) when the section is not a set of simple, disjoint loops.
 ///
-/// With `near`, only the section region nearest that point is cut: the surface stays whole across
-/// the others (a plane through a hand's palm then leaves the fingers on), unless that would make a
-/// piece meet itself across the region (the plane opens a handle), when every region is cut.
+/// With `near`, the section region nearest that point is cut, and any other region with at least
+/// a tenth of the mesh's volume on each side; across the rest the surface stays whole (a plane
+/// through a hand's palm then leaves the fingertips on). When that would make a piece meet itself
+/// across a cut region (the plane opens a handle), every region is cut.
 CutResult cutByPlane(const TriMesh& mesh, const Plane& plane, double snap = 1e-10, const Vec3* near = nullptr);
 
 }  // namespace acd
