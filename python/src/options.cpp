@@ -85,6 +85,7 @@ void bindOptions(py::module_& m) {
   tauDerived(solid, "epsilon", [](SolidOptions& o) -> double& { return o.decompose.epsilon; });  // None: tau / 2
   tauDerived(solid, "delta", [](SolidOptions& o) -> double& { return o.decompose.delta; });      // None: tau / 20
   negated(solid, "no_grouping", [](SolidOptions& o) -> bool& { return o.decompose.featureGrouping; });
+  negated(solid, "cut_every_region", [](SolidOptions& o) -> bool& { return o.decompose.cutAtNotchOnly; });
   negated(solid, "no_merge", [](SolidOptions& o) -> bool& { return o.decompose.merge; });
   negated(solid, "no_fill_holes", [](SolidOptions& o) -> bool& { return o.decompose.fillHoles; });
   negated(solid, "no_wrap", [](SolidOptions& o) -> bool& { return o.decompose.wrap; });

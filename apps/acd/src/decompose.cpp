@@ -179,6 +179,7 @@ int runPerMesh(DecomposeArgs& a) {
 
 int runSolidDecompose(DecomposeArgs& a) {
   a.options.featureGrouping = !a.noGrouping;
+  a.options.cutAtNotchOnly = !a.cutEveryRegion;
   a.options.merge = !a.noMerge;
   a.options.invariant = !a.noInvariant;
   a.options.mergeScope = a.mergeScope == "component" ? acd::MergeScope::Component : acd::MergeScope::Model;
@@ -202,6 +203,9 @@ CLI::App* addDecomposeCommand(CLI::App& app, DecomposeArgs& a) {
   dec->add_option("--delta", a.options.delta, "Douglas-Peucker knot tolerance (default tau/20)");
   dec->add_flag("--no-grouping", a.noGrouping,
                 "Resolve the most concave notch with a plane bisecting its dihedral angle (no feature grouping)");
+  dec->add_flag("--cut-every-region", a.cutEveryRegion,
+                "Cut every region of the section a plane meets (by default only the one at the notch, and those with "
+                "large pieces on both sides: a plane across a hand leaves the fingertips on)");
   dec->add_flag("--no-invariant", a.noInvariant,
                 "Decompose in the model's own coordinates: the parts may change with the model's pose and order of faces, "
                 "and every cut face is exactly planar (by default the shape's own frame is used: the same parts for any "

@@ -17,6 +17,7 @@ struct DecomposeArgs {
   std::string out = "acd-out";
   acd::DecomposeOptions options = acd::recommendedOptions();
   bool noGrouping = false;
+  bool cutEveryRegion = false;       // --cut-every-region
   bool noMerge = false;
   bool noInvariant = false;          // --no-invariant
   bool invariantFlag = false;        // --invariant: the default since 2026-11-25, still accepted

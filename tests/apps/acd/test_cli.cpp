@@ -185,6 +185,19 @@ TEST_F(Cli, NoGroupingIsRecordedInTheReport) {
   EXPECT_GE(report["totals"].at("components").get<int>(), 3);
 }
 
+TEST_F(Cli, CutEveryRegionIsRecordedInTheReport) {
+  const std::string model = writeModel("U.obj", shapes::uShape());
+  for (const bool every : {false, true}) {
+    const std::string out = path(every ? "every" : "default");
+    const acdtest::ToolRun r =
+        acd("decompose " + quote(model) + " -t 0.05 --threads 1 -q -o " + quote(out) + (every ? " --cut-every-region" : ""));
+    ASSERT_EQ(r.code, 0) << r.err;
+    const json report = json::parse(slurp(out + "/report.json"));
+    EXPECT_EQ(report["parameters"].at("cut_at_notch_only").get<bool>(), !every);
+    EXPECT_LT(report["totals"].at("volume_relative_error").get<double>(), 1e-9);
+  }
+}
+
 // ------------------------------------------------------------------ bad input: exit 2, stderr names the problem
 
 TEST_F(Cli, MissingFile) { expectRefused(quote(path("nowhere.off")), 2, {"nowhere.off", "cannot open"}); }
