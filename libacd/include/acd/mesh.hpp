@@ -56,6 +56,14 @@ TriMesh concatenate(const std::vector<TriMesh>& meshes);
 /// Drops vertices no face uses and renumbers the rest (order kept).
 TriMesh compact(const TriMesh& mesh);
 
+/// The faces with the vertices they use, renumbered in the order of their original indices (so
+/// that output is stable), without copying `vertices`. `remap` is all -1 on entry and on return,
+/// sized for `vertices`.
+TriMesh compactFaces(const std::vector<Vec3>& vertices, const std::vector<Face>& faces, std::vector<int>& remap);
+
+/// Union-find: the root of x's set, halving the path on the way.
+int findRoot(std::vector<int>& parent, int x);
+
 /// True when every edge has exactly two faces that use it in opposite directions.
 bool isClosedOriented(const TriMesh& mesh);
 

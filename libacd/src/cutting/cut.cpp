@@ -10,9 +10,9 @@
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
-#include <algorithm>
 #include <list>
 #include <numeric>
 #include <unordered_map>
@@ -103,12 +103,6 @@ bool triangulateSection(const std::vector<Vec3>& points, const std::vector<std::
   return true;
 }
 
-
-int findRootOf(std::vector<int>& parent, int x) {
-  while (parent[x] != x) x = parent[x] = parent[parent[x]];
-  return x;
-}
-
 /// A section region away from the notch is cut too when both its sides are at least this share of
 /// the mesh's volume (measured with compare_peers: docs/ALGORITHM.md section 10).
 constexpr double kLargePiece = 0.1;
@@ -128,12 +122,12 @@ bool cutNear(const std::vector<Vec3>& points, const std::vector<Face>& below, co
   for (int f = 0; f < nc; ++f)
     for (int k = 0; k < 3; ++k) {
       auto [it, inserted] = firstAt.emplace(edgeKey(cap[f][k], cap[f][(k + 1) % 3]), f);
-      if (!inserted) parent[findRootOf(parent, f)] = findRootOf(parent, it->second);
+      if (!inserted) parent[findRoot(parent, f)] = findRoot(parent, it->second);
     }
   int keep = -1, regions = 0;
   double best = std::numeric_limits<double>::infinity();
   for (int f = 0; f < nc; ++f) {
-    const int r = findRootOf(parent, f);
+    const int r = findRoot(parent, f);
     regions += r == f;
     for (int v : cap[f]) {
       const double d = (points[v] - near).squaredNorm();
@@ -148,7 +142,7 @@ bool cutNear(const std::vector<Vec3>& points, const std::vector<Face>& below, co
   sideOf.resize(faces.size(), 1);
   std::vector<int> regionOf(faces.size(), -1);
   for (int f = 0; f < nc; ++f) {
-    const int r = findRootOf(parent, f);
+    const int r = findRoot(parent, f);
     faces.push_back(cap[f]), sideOf.push_back(-1), regionOf.push_back(r);
     faces.push_back({cap[f][0], cap[f][2], cap[f][1]}), sideOf.push_back(1), regionOf.push_back(r);
   }
@@ -163,7 +157,7 @@ bool cutNear(const std::vector<Vec3>& points, const std::vector<Face>& below, co
   std::vector<int> piece(nf);
   auto pieces = [&](const std::vector<char>& in) {
     std::iota(piece.begin(), piece.end(), 0);
-    auto join = [&](int a, int b) { piece[findRootOf(piece, a)] = findRootOf(piece, b); };
+    auto join = [&](int a, int b) { piece[findRoot(piece, a)] = findRoot(piece, b); };
     int list[4];
     for (std::size_t i = 0, j; i < at.size(); i = j) {
       int n = 0;
@@ -194,33 +188,31 @@ bool cutNear(const std::vector<Vec3>& points, const std::vector<Face>& below, co
   // and its legs: the legs would need their own cuts; a fingertip would not).
   std::vector<char> cutRegion(nc, 0);
   cutRegion[keep] = 1;
-  {
-    if (!pieces(std::vector<char>(nf, 1))) return false;
-    std::vector<double> volume(nf, 0.0);
-    double total = 0.0;
-    for (int f = 0; f < nf; ++f) {
-      const double v = points[faces[f][0]].dot(points[faces[f][1]].cross(points[faces[f][2]])) / 6.0;
-      volume[findRootOf(piece, f)] += v;
-      if (regionOf[f] < 0) total += v;
-    }
-    std::vector<int> lowerPiece(nc, -1), upperPiece(nc, -1);
-    for (int f = static_cast<int>(below.size() + above.size()); f < nf; ++f)
-      (sideOf[f] < 0 ? lowerPiece : upperPiece)[regionOf[f]] = findRootOf(piece, f);
-    bool all = true;
-    for (int r = 0; r < nc; ++r) {
-      if (lowerPiece[r] < 0 || r == keep) continue;
-      cutRegion[r] = std::min(volume[lowerPiece[r]], volume[upperPiece[r]]) >= kLargePiece * total;
-      all &= cutRegion[r] != 0;
-    }
-    if (all) return false;  // the plain cut
+  if (!pieces(std::vector<char>(nf, 1))) return false;
+  std::vector<double> volume(nf, 0.0);
+  double total = 0.0;
+  for (int f = 0; f < nf; ++f) {
+    const double v = points[faces[f][0]].dot(points[faces[f][1]].cross(points[faces[f][2]])) / 6.0;
+    volume[findRoot(piece, f)] += v;
+    if (regionOf[f] < 0) total += v;
   }
+  std::vector<int> lowerPiece(nc, -1), upperPiece(nc, -1);
+  for (int f = static_cast<int>(below.size() + above.size()); f < nf; ++f)
+    (sideOf[f] < 0 ? lowerPiece : upperPiece)[regionOf[f]] = findRoot(piece, f);
+  bool all = true;
+  for (int r = 0; r < nc; ++r) {
+    if (lowerPiece[r] < 0 || r == keep) continue;
+    cutRegion[r] = std::min(volume[lowerPiece[r]], volume[upperPiece[r]]) >= kLargePiece * total;
+    all &= cutRegion[r] != 0;
+  }
+  if (all) return false;  // the plain cut
   std::vector<char> in(nf, 1);
   for (int f = 0; f < nf; ++f)
     if (regionOf[f] >= 0 && !cutRegion[regionOf[f]]) in[f] = 0;
   if (!pieces(in)) return false;
   // A handle: some piece would meet itself across a cut region; cut them all.
   for (int f = static_cast<int>(below.size() + above.size()); f < nf; f += 2)
-    if (in[f] && findRootOf(piece, f) == findRootOf(piece, f + 1)) return false;
+    if (in[f] && findRoot(piece, f) == findRoot(piece, f + 1)) return false;
   // Pieces in the order of their first face; a piece is "below" when it holds the kept region's
   // lower cap.
   std::vector<int> index(nf, -1);
@@ -228,7 +220,7 @@ bool cutNear(const std::vector<Vec3>& points, const std::vector<Face>& below, co
   std::vector<char> lowerSide;
   for (int f = 0; f < nf; ++f) {
     if (!in[f]) continue;
-    int& g = index[findRootOf(piece, f)];
+    int& g = index[findRoot(piece, f)];
     if (g < 0) g = static_cast<int>(groups.size()), groups.emplace_back(), lowerSide.push_back(0);
     groups[g].push_back(faces[f]);
     if (regionOf[f] == keep && sideOf[f] < 0) lowerSide[g] = 1;
@@ -237,18 +229,7 @@ bool cutNear(const std::vector<Vec3>& points, const std::vector<Face>& below, co
   CutResult out;
   std::vector<int> remap(points.size(), -1);
   for (std::size_t g = 0; g < groups.size(); ++g) {
-    // Compacted in place of compact(TriMesh{points, ...}), which would copy every point per piece.
-    std::vector<int> used;
-    for (const Face& f : groups[g])
-      for (int v : f)
-        if (remap[v] < 0) remap[v] = 0, used.push_back(v);
-    std::sort(used.begin(), used.end());
-    TriMesh m;
-    m.vertices.reserve(used.size());
-    for (int v : used) remap[v] = static_cast<int>(m.vertices.size()), m.vertices.push_back(points[v]);
-    m.faces.reserve(groups[g].size());
-    for (const Face& f : groups[g]) m.faces.push_back({remap[f[0]], remap[f[1]], remap[f[2]]});
-    for (int v : used) remap[v] = -1;
+    TriMesh m = compactFaces(points, groups[g], remap);
     if (!isClosedOriented(m)) return false;
     (lowerSide[g] ? out.below : out.above).push_back(std::move(m));
   }

@@ -49,9 +49,6 @@ TriMesh concatenate(const std::vector<TriMesh>& meshes) {
   return all;
 }
 
-namespace {
-/// The faces with the vertices they use, renumbered in the order of their original indices (so
-/// that output is stable). `remap` is all -1 on entry and on return, sized for `vertices`.
 TriMesh compactFaces(const std::vector<Vec3>& vertices, const std::vector<Face>& faces, std::vector<int>& remap) {
   std::vector<int> used;
   for (const Face& f : faces)
@@ -69,19 +66,16 @@ TriMesh compactFaces(const std::vector<Vec3>& vertices, const std::vector<Face>&
   for (int v : used) remap[v] = -1;
   return out;
 }
-}  // namespace
 
 TriMesh compact(const TriMesh& mesh) {
   std::vector<int> remap(mesh.vertices.size(), -1);
   return compactFaces(mesh.vertices, mesh.faces, remap);
 }
 
-namespace {
 int findRoot(std::vector<int>& parent, int x) {
   while (parent[x] != x) x = parent[x] = parent[parent[x]];
   return x;
 }
-}  // namespace
 
 std::vector<TriMesh> splitEdgeConnected(const TriMesh& mesh) {
   const int nf = static_cast<int>(mesh.faces.size());

@@ -38,7 +38,7 @@ Plane splitCupPlane(const TriMesh& mesh, const ConcavityMap& map, int notch);
 
 /// Cuts `mesh` by `plane`, nudged along its normal if the section is degenerate, into pieces on
 /// both sides, each with more than 1e-7 of the mesh's volume. `used` is the plane that cut. With
-/// `near`, only the section region nearest that point is cut (cutByPlane).
+/// `near`, the section region nearest that point is cut and most others are not (cutByPlane).
 bool cutCleanly(const TriMesh& mesh, const Plane& plane, std::vector<TriMesh>& pieces, Plane& used,
                 const Vec3* near = nullptr);
 
@@ -53,8 +53,8 @@ struct CutChoice {
 /// The paper's baseline: the first candidate that cuts cleanly.
 CutChoice cutByFirstPlane(const TriMesh& mesh, const std::vector<Plane>& candidates);
 
-/// One step of lookahead: cut with every candidate (in parallel; only the section region through
-/// the notch, so that a plane does not also sever what it meets elsewhere) and keep the one whose children
+/// One step of lookahead: cut with every candidate (in parallel; with site.atNotchOnly at the
+/// notch's section region, cutByPlane) and keep the one whose children
 /// are best approximated by their hulls (least hull volume beyond the children's own volume); after
 /// a stall, the one whose children are least concave; for a site from hull excess, first the one
 /// that leaves fewest children whose hull stands more than the limit off them. Ties go to the
