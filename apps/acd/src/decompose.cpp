@@ -92,14 +92,15 @@ int decomposeMesh(DecomposeArgs& a, const acd::TriMesh& mesh) {
                  "to the input %.4g, wrap to input %.4g; normalised units)\n", a.model.c_str(), d.wrap.wrappedPieces,
                  d.wrap.alpha, d.wrap.offset, d.wrap.hausdorff, d.wrap.wrapToInput);
   // A self-intersecting solid is decomposed anyway: every cut that succeeds yields closed pieces;
-  // where a section crosses itself no clean cut exists, and such a shell is decomposed through its
-  // wrap (or, with --no-wrap, its components are flagged, never hidden).
+  // where a section crosses itself no clean cut exists, and such a shell is repaired around its
+  // crossings or decomposed through its wrap (or, with --no-wrap, its components are flagged,
+  // never hidden).
   acd::ReportInput input = acd::describeInput(a.model, mesh);
   input.mesh = a.mesh;
   const int selfIntersections = input.selfIntersections;
   if (selfIntersections > 0)
     std::fprintf(stderr, "acd: warning: %s intersects itself (%d face pairs); %s\n", a.model.c_str(), selfIntersections,
-                 a.options.wrap ? "a shell left above tau there is decomposed through its wrap"
+                 a.options.wrap ? "a shell left above tau there is repaired around the crossings, or decomposed through its wrap"
                                 : "pieces whose sections cross themselves may stay above tau and are marked unresolved");
 
   std::error_code ec;

@@ -40,6 +40,11 @@ struct SurfaceDistance {
 };
 SurfaceDistance surfaceDistance(const TriMesh& a, const TriMesh& b, int samples = 20000);
 
+/// How far the surface of `a` reaches outside the closed surface `solid`: the largest distance to
+/// `solid`'s surface of the points sampled as surfaceDistance does that lie outside it (0 when
+/// none does). Parts of `a` inside `solid` do not count: a solid's hulls cover them.
+double distanceOutside(const TriMesh& a, const TriMesh& solid, int samples = 20000);
+
 /// Two-sided Hausdorff distance: surfaceDistance(a, b).hausdorff().
 double hausdorffDistance(const TriMesh& a, const TriMesh& b, int samples = 20000);
 

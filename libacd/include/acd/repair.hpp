@@ -57,4 +57,16 @@ struct MeshRepair {
 /// self-intersections are left as they are. Never throws.
 MeshRepair repairMesh(const TriMesh& mesh, const RepairOptions& options = {});
 
+/// A closed surface that passes through itself, with the faces around each crossing replaced by a
+/// patch that does not cross (CGAL's experimental remove_self_intersections: the faces near the
+/// crossing are removed and the hole is filled from its rim). Local, unlike the wrap: the rest of
+/// the surface is kept exactly. The patch may cut off a fold of the input; the caller measures
+/// how far the input lies from the result.
+struct Untangled {
+  Status status;          // not ok when crossings remain or the result is not a closed surface
+  TriMesh mesh;           // closed, oriented, without self-intersections
+  int facesReplaced = 0;  // input faces not in the result
+};
+Untangled removeSelfIntersections(const TriMesh& shell);
+
 }  // namespace acd

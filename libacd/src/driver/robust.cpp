@@ -213,6 +213,21 @@ DecomposeOptions optionsForWrap(const DecomposeOptions& o, const TriMesh& wrap, 
   return w;
 }
 
+/// removeSelfIntersections, in the shell's canonical frame when `invariant`: which faces it
+/// removes and how it fills the hole would follow the pose and the order of faces otherwise.
+Untangled untangleShell(const TriMesh& shell, bool invariant) {
+  if (!invariant) return removeSelfIntersections(shell);
+  const Normalization frame = canonicalFrame({shell});
+  Untangled u = removeSelfIntersections(canonicalMesh(shell, frame).mesh);
+  if (u.status.ok()) u.mesh = undoNormalization(u.mesh, frame);
+  return u;
+}
+
+/// How far the input may lie from its repaired surface, as a share of tau: the hulls cover the
+/// repaired surface, so a fold the repair cut off is left uncovered by up to that much. Within
+/// tau, as the hulls may stand out of the model by tau; beyond, the wrap (which covers all).
+constexpr double kUntangledCutOff = 1.0;
+
 void accumulateShell(Decomposition& into, Decomposition&& d) {
   for (Component& c : d.components) into.components.push_back(std::move(c));
   DecomposeStats& s = into.stats;
@@ -275,17 +290,49 @@ Decomposition decomposeRepaired(const TriMesh& mesh, const DecomposeOptions& opt
         std::count_if(d.components.begin(), d.components.end(), [](const Component& c) { return c.unresolved; }));
     bool redone = false;
     if (unresolved > 0 && o.wrap && !prepared.isWrap[i]) {
-      const bool crosses = countSelfIntersections(prepared.shells[i], 1) > 0;
+      const TriMesh& shell = prepared.shells[i];
+      const bool crosses = countSelfIntersections(shell, 1) > 0;
       const std::string reason = plural(unresolved, "component", "components") + " of shell " + std::to_string(i) +
                                  " stayed above tau" + (crosses ? " (the surface passes through itself)" : "");
-      WrapShells w = wrapPieces({prepared.shells[i]}, o.tau, scale, o.invariant);
-      if (w.status.ok()) {
+      // The first attempt's statistics are kept (work done), its components replaced. The volume
+      // decomposed is the repaired or wrapped surface's now: the components add up to it.
+      auto replace = [&d](Decomposition&& redo) {
+        d.components = std::move(redo.components);
+        d.stats.inputVolume = redo.stats.inputVolume;
+        d.stats.cuts += redo.stats.cuts;
+        d.times.concavity += redo.times.concavity;
+        d.times.cutting += redo.times.cutting;
+        d.times.grouping += redo.times.grouping;
+      };
+      // First the local repair: only the faces around the crossings change, so the rest keeps its
+      // exact surface and the user's tau (a wrap stands off everywhere and costs parts).
+      bool untangled = false;
+      if (crosses) {
+        const Untangled u = untangleShell(shell, o.invariant);
+        const double cutOff = u.status.ok() ? distanceOutside(shell, u.mesh) * scale : 0.0;
+        if (u.status.ok() && cutOff <= kUntangledCutOff * o.tau) {
+          Decomposition redo = decomposeShell(u.mesh, static_cast<int>(i), optionsForWrap(o, u.mesh, shell, scale),
+                                              scale, done, &shell, o.tau);
+          if (redo.status.ok() && std::none_of(redo.components.begin(), redo.components.end(),
+                                               [](const Component& c) { return c.unresolved; })) {
+            result.repairs.push_back(reason + ": removed its self-intersections instead (" +
+                                     plural(u.facesReplaced, "face", "faces") +
+                                     " replaced; the input reaches " + number(cutOff) +
+                                     " normalised units outside the repaired surface) and decomposed it again");
+            replace(std::move(redo));
+            untangled = true;
+          }
+        }
+      }
+      WrapShells w;
+      if (!untangled) w = wrapPieces({shell}, o.tau, scale, o.invariant);
+      if (!untangled && w.status.ok()) {
         Decomposition redo;
         redo.status = Status::success();
         redo.components.clear();
         for (const TriMesh& s : w.shells) {
-          Decomposition part = decomposeShell(s, static_cast<int>(i), optionsForWrap(o, s, prepared.shells[i], scale),
-                                              scale, done, &prepared.shells[i], o.tau);
+          Decomposition part = decomposeShell(s, static_cast<int>(i), optionsForWrap(o, s, shell, scale), scale, done,
+                                              &shell, o.tau);
           if (!part.status.ok()) {
             redo.status = part.status;
             break;
@@ -297,17 +344,9 @@ Decomposition decomposeRepaired(const TriMesh& mesh, const DecomposeOptions& opt
           result.repairs.push_back(reason + ": decomposed its wrap instead (alpha " + number(w.parameters.alpha) +
                                    ", offset " + number(w.parameters.offset) + " normalised units, " +
                                    plural(w.faces, "face", "faces") + ")");
-          wrapInputs.push_back(prepared.shells[i]);
+          wrapInputs.push_back(shell);
           for (const TriMesh& s : w.shells) wraps.push_back(s);
-          // The first attempt's statistics are kept (work done), its components replaced. The
-          // volume decomposed is the wrap's now, as for a shell wrapped up front: the components
-          // add up to it, not to the shell's.
-          d.components = std::move(redo.components);
-          d.stats.inputVolume = redo.stats.inputVolume;
-          d.stats.cuts += redo.stats.cuts;
-          d.times.concavity += redo.times.concavity;
-          d.times.cutting += redo.times.cutting;
-          d.times.grouping += redo.times.grouping;
+          replace(std::move(redo));
           redone = true;
         }
       }

@@ -1,5 +1,6 @@
 // Alpha wrapping and the surface distance that measures it (acd/alpha_wrap.hpp).
 #include <acd/alpha_wrap.hpp>
+#include <acd/inside.hpp>
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -131,6 +132,18 @@ SurfaceDistance surfaceDistance(const TriMesh& a, const TriMesh& b, int samples)
   d.aToB = oneSided(surfacePoints(a, samples), treeB);
   d.bToA = oneSided(surfacePoints(b, samples), treeA);
   return d;
+}
+
+double distanceOutside(const TriMesh& a, const TriMesh& solid, int samples) {
+  const std::vector<Triangle> t = nonDegenerateTriangles(solid);
+  if (t.empty()) return std::numeric_limits<double>::infinity();
+  Tree tree(t.begin(), t.end());
+  tree.accelerate_distance_queries();
+  const InsideTest inside(solid);
+  std::vector<Vec3> outside;
+  for (const Vec3& p : surfacePoints(a, samples))
+    if (!inside.inside(p)) outside.push_back(p);
+  return oneSided(outside, tree);
 }
 
 double hausdorffDistance(const TriMesh& a, const TriMesh& b, int samples) {
