@@ -228,6 +228,32 @@ Untangled untangleShell(const TriMesh& shell, bool invariant) {
 /// tau, as the hulls may stand out of the model by tau; beyond, the wrap (which covers all).
 constexpr double kUntangledCutOff = 1.0;
 
+/// The shell repaired around its crossings and decomposed again, its merges held to the shell at
+/// the user's tau; `line` says what was done. A failed status when the repair fails, cuts off more
+/// than kUntangledCutOff * tau, or leaves a component above tau.
+Decomposition decomposeUntangled(const TriMesh& shell, int index, const DecomposeOptions& o, double scale, int done,
+                                 std::string& line) {
+  Decomposition d;
+  const Untangled u = untangleShell(shell, o.invariant);
+  if (!u.status.ok()) {
+    d.status = u.status;
+    return d;
+  }
+  const double cutOff = distanceOutside(shell, u.mesh) * scale;
+  if (cutOff > kUntangledCutOff * o.tau) {
+    d.status = Status::error(StatusCode::InvalidParameter, "the repair cuts off more than tau");
+    return d;
+  }
+  d = decomposeShell(u.mesh, index, optionsForWrap(o, u.mesh, shell, scale), scale, done, &shell, o.tau);
+  if (d.status.ok() &&
+      std::any_of(d.components.begin(), d.components.end(), [](const Component& c) { return c.unresolved; }))
+    d.status = Status::error(StatusCode::InternalError, "a component stays above tau");
+  line = "removed its self-intersections instead (" + plural(u.facesReplaced, "face", "faces") +
+         " replaced; the input reaches " + number(cutOff) +
+         " normalised units outside the repaired surface) and decomposed it again";
+  return d;
+}
+
 void accumulateShell(Decomposition& into, Decomposition&& d) {
   for (Component& c : d.components) into.components.push_back(std::move(c));
   DecomposeStats& s = into.stats;
@@ -308,20 +334,12 @@ Decomposition decomposeRepaired(const TriMesh& mesh, const DecomposeOptions& opt
       // exact surface and the user's tau (a wrap stands off everywhere and costs parts).
       bool untangled = false;
       if (crosses) {
-        const Untangled u = untangleShell(shell, o.invariant);
-        const double cutOff = u.status.ok() ? distanceOutside(shell, u.mesh) * scale : 0.0;
-        if (u.status.ok() && cutOff <= kUntangledCutOff * o.tau) {
-          Decomposition redo = decomposeShell(u.mesh, static_cast<int>(i), optionsForWrap(o, u.mesh, shell, scale),
-                                              scale, done, &shell, o.tau);
-          if (redo.status.ok() && std::none_of(redo.components.begin(), redo.components.end(),
-                                               [](const Component& c) { return c.unresolved; })) {
-            result.repairs.push_back(reason + ": removed its self-intersections instead (" +
-                                     plural(u.facesReplaced, "face", "faces") +
-                                     " replaced; the input reaches " + number(cutOff) +
-                                     " normalised units outside the repaired surface) and decomposed it again");
-            replace(std::move(redo));
-            untangled = true;
-          }
+        std::string line;
+        Decomposition redo = decomposeUntangled(shell, static_cast<int>(i), o, scale, done, line);
+        if (redo.status.ok()) {
+          result.repairs.push_back(reason + ": " + line);
+          replace(std::move(redo));
+          untangled = true;
         }
       }
       WrapShells w;
