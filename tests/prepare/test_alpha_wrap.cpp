@@ -50,3 +50,15 @@ TEST(Wrap, IsClosedOutsideTheInputAtTheOffset) {
   EXPECT_NEAR(h, brute, 0.002);
 }
 
+
+// distanceOutside counts only the part of the first surface outside the solid: a box reaching out
+// of the unit box by one unit along each axis reaches sqrt(3) out (its far corner, a sampled
+// vertex, to the unit box's corner), and a box inside the unit box reaches nothing.
+TEST(SurfaceDistance, OutsideCountsOnlyWhatLiesOutsideTheSolid) {
+  const TriMesh unit = shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1));
+  const TriMesh reaching = shapes::box(Vec3(0.5, 0.5, 0.5), Vec3(2, 2, 2));
+  EXPECT_NEAR(distanceOutside(reaching, unit), std::sqrt(3.0), 1e-12);
+  EXPECT_EQ(distanceOutside(shapes::box(Vec3(0.2, 0.2, 0.2), Vec3(0.8, 0.8, 0.8)), unit), 0.0);
+  // The two-sided measure sees the inner box's distance to the unit box's surface instead.
+  EXPECT_NEAR(surfaceDistance(shapes::box(Vec3(0.2, 0.2, 0.2), Vec3(0.8, 0.8, 0.8)), unit).aToB, 0.2, 1e-9);
+}
