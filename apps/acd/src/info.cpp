@@ -52,8 +52,8 @@ int diagnoseModel(const std::string& path) {
   const acd::PreparedModel p = acd::prepareModel(r.mesh, acd::DecomposeOptions{}, false);
   for (const auto& line : p.repairs) std::printf("  repair                %s\n", line.c_str());
   if (pairs > 0)
-    std::printf("  repair                the surface passes through itself: a shell left above tau is decomposed "
-                "through its wrap\n");
+    std::printf("  repair                the surface passes through itself: a shell left above tau is repaired "
+                "around the crossings, or decomposed through its wrap\n");
   if (!p.status.ok())
     std::printf("  solid decomposition   refused: %s\n", p.status.message.c_str());
   else if (!p.wrapReason.empty())
