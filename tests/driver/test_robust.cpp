@@ -11,6 +11,7 @@
 #include <acd/normalize.hpp>
 #include <acd/repair.hpp>
 #include <acd/robust.hpp>
+#include <acd/shapes.hpp>
 
 #include <gtest/gtest.h>
 
@@ -191,3 +192,27 @@ TEST(BadMeshes, SelfIntersectingCowIsRepairedAroundItsCrossings) {
     EXPECT_NEAR(d.stats.inputVolume, signedVolume(r.mesh) * scale * scale * scale, 0.01 * d.stats.inputVolume);
   }
 }
+
+// A surface that crosses itself everywhere (a sphere of 1740 faces with every vertex moved at
+// random by up to 0.25 of its radius: thousands of crossing pairs) is not repaired locally: the
+// repair's time grows with the crossings (35 s and a failure on a larger one), so beyond 2000
+// pairs the shell goes straight to its wrap.
+TEST(BadMeshes, ASurfaceCrossingItselfEverywhereGoesToItsWrap) {
+  TriMesh crumpled = shapes::revolve([](double z) { return std::sqrt(std::max(0.0, 1.0 - z * z)); }, -1.0, 1.0, 30, 30);
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> jitter(-0.25, 0.25);
+  for (Vec3& p : crumpled.vertices) {
+    const double x = jitter(rng), y = jitter(rng), z = jitter(rng);
+    p += Vec3(x, y, z);
+  }
+  ASSERT_GT(countSelfIntersections(crumpled, 2001), 2000);
+  const Decomposition d = decompose(crumpled, atTau(0.2));
+  ASSERT_TRUE(d.status.ok()) << d.status.message;
+  EXPECT_TRUE(d.wrap.used);
+  for (const std::string& line : d.repairs) EXPECT_EQ(line.find("removed its self-intersections"), std::string::npos) << line;
+  EXPECT_TRUE(std::any_of(d.repairs.begin(), d.repairs.end(), [](const std::string& line) {
+    return line.find("too many for a local repair") != std::string::npos;
+  }));
+  for (const Component& c : d.components) EXPECT_FALSE(c.unresolved) << c.note;
+}
+
