@@ -2,6 +2,8 @@
 #include <acd/alpha_wrap.hpp>
 #include <acd/inside.hpp>
 
+#include <acd/algo/surface_mesh_copy.hpp>
+
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
@@ -99,15 +101,7 @@ Wrap alphaWrap(const TriMesh& soup, double alpha, double offset) {
     CGAL::Surface_mesh<Point> wrap;
     CGAL::alpha_wrap_3(points, faces, alpha, offset, wrap);
     wrap.collect_garbage();
-    for (auto v : wrap.vertices()) {
-      const Point& p = wrap.point(v);
-      w.mesh.vertices.emplace_back(p.x(), p.y(), p.z());
-    }
-    for (auto f : wrap.faces()) {
-      const auto h = wrap.halfedge(f);
-      w.mesh.faces.push_back({static_cast<int>(wrap.source(h)), static_cast<int>(wrap.target(h)),
-                              static_cast<int>(wrap.target(wrap.next(h)))});
-    }
+    w.mesh = copyFromSurfaceMesh(wrap);
   } catch (const std::exception& e) {
     w.mesh = TriMesh{};
     w.status = Status::error(StatusCode::InternalError, std::string("alpha wrap failed: ") + e.what());

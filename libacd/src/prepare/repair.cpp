@@ -3,6 +3,7 @@
 // vertices (CGAL 5.5 merges exact copies only) and the choice between the two sides of a
 // double-sided face, which needs the faces around it.
 #include <acd/algo/face_order.hpp>
+#include <acd/algo/surface_mesh_copy.hpp>
 #include <acd/algo/union_find.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/repair.hpp>
@@ -234,16 +235,7 @@ void repairWithCgal(const TriMesh& merged, const RepairOptions& options, double 
   }
 
   if (failure.empty()) {
-    r.mesh.vertices.reserve(sm.number_of_vertices());
-    for (auto v : sm.vertices()) {
-      const Point& p = sm.point(v);
-      r.mesh.vertices.emplace_back(p.x(), p.y(), p.z());
-    }
-    for (auto f : sm.faces()) {
-      const auto h = sm.halfedge(f);
-      r.mesh.faces.push_back({static_cast<int>(sm.source(h)), static_cast<int>(sm.target(h)),
-                              static_cast<int>(sm.target(sm.next(h)))});
-    }
+    r.mesh = copyFromSurfaceMesh(sm);
   } else {
     // CGAL gave up (it should not): keep what the steps before it did; the checks that follow
     // (prepareSolid) refuse or send the mesh to the wrap.

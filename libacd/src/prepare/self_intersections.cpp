@@ -74,16 +74,8 @@ Untangled removeSelfIntersections(const TriMesh& shell) {
     return out;
   }
   sm.collect_garbage();
-  for (auto v : sm.vertices()) {
-    const K::Point_3& p = sm.point(v);
-    out.mesh.vertices.emplace_back(p.x(), p.y(), p.z());
-  }
-  for (auto f : sm.faces()) {
-    const auto h = sm.halfedge(f);
-    out.mesh.faces.push_back({static_cast<int>(sm.source(h)), static_cast<int>(sm.target(h)),
-                              static_cast<int>(sm.target(sm.next(h)))});
-  }
-  // Faces kept from the input, by their corners' positions (the repair moves no vertex).
+  out.mesh = copyFromSurfaceMesh(sm);
+  // Faces kept from the input, by their corners' positions (a face whose corner moved counts as replaced).
   using Corners = std::array<double, 9>;
   auto key = [](const TriMesh& m, const Face& f) {
     const int first = static_cast<int>(std::min_element(f.begin(), f.end(), [&](int a, int b) {

@@ -1,5 +1,6 @@
-// A TriMesh copied into a CGAL::Surface_mesh of any kernel: the one place where mesh vertices and
-// faces become CGAL's. A template on the target type, so that this header needs no CGAL include.
+// A TriMesh copied into a CGAL::Surface_mesh of any kernel and back: the one place where mesh
+// vertices and faces become CGAL's and return. Templates on the CGAL type, so that this header
+// needs no CGAL include.
 #pragma once
 
 #include <acd/mesh.hpp>
@@ -31,6 +32,25 @@ long copyToSurfaceMesh(const TriMesh& mesh, SurfaceMesh& out, RefusedFace onRefu
     if (onRefused == RefusedFace::Stop) break;
   }
   return refused;
+}
+
+/// The surface as a TriMesh: vertex i is the i-th vertex, each face from its halfedge's source.
+/// `in` must have no garbage (call collect_garbage() after removing elements).
+template <class SurfaceMesh>
+TriMesh copyFromSurfaceMesh(const SurfaceMesh& in) {
+  TriMesh out;
+  out.vertices.reserve(in.number_of_vertices());
+  for (auto v : in.vertices()) {
+    const auto& p = in.point(v);
+    out.vertices.emplace_back(p.x(), p.y(), p.z());  // a kernel with double coordinates
+  }
+  out.faces.reserve(in.number_of_faces());
+  for (auto f : in.faces()) {
+    const auto h = in.halfedge(f);
+    out.faces.push_back({static_cast<int>(in.source(h)), static_cast<int>(in.target(h)),
+                         static_cast<int>(in.target(in.next(h)))});
+  }
+  return out;
 }
 
 }  // namespace acd
