@@ -57,6 +57,27 @@ TEST(CutByLookahead, EqualScoresGoToTheEarlierCandidate) {
   EXPECT_EQ(lookahead(l, {y, x}).index, 0u);
 }
 
+// The plane across a pocket's floor (its normal the bridge's) wins only by a clear margin: on a tie
+// it gives way even when listed first (where every plane lies in a wall of a straight pocket, it
+// would cut the pocket into rings); clearly better, it wins.
+TEST(CutByLookahead, TheFloorPlaneWinsOnlyByAClearMargin) {
+  const TriMesh l = shapes::lShape();
+  const ConcavityOptions co;
+  // With the bridge along z, z = 0.5 halves the L into two L's (hull excess 0.25 each): a tie
+  // with x = 0.5, which leaves the notch's triangle prism (0.5).
+  const Plane floorZ = plane(Vec3::UnitZ(), 0.5), acrossX = plane(Vec3::UnitX(), 0.5);
+  const CutSite alongZ{0, Vec3::UnitZ(), 0, false};
+  EXPECT_EQ(cutByLookahead(l, {floorZ, acrossX}, alongZ, co, 0.05).index, 1u);
+  EXPECT_EQ(cutByLookahead(l, {acrossX, floorZ}, alongZ, co, 0.05).index, 0u);
+  // Alone, it is taken.
+  EXPECT_TRUE(cutByLookahead(l, {floorZ}, alongZ, co, 0.05).ok);
+  // With the bridge along x, x = 1 leaves two boxes (0) against x = 0.5's 0.5: it wins, listed last.
+  const CutSite alongX{0, Vec3::UnitX(), 0, false};
+  EXPECT_EQ(cutByLookahead(l, {acrossX, plane(Vec3::UnitX(), 1.0)}, alongX, co, 0.05).index, 1u);
+  // An ordinary plane with the same tie goes to the earlier candidate (the rule above).
+  EXPECT_EQ(cutByLookahead(l, {floorZ, acrossX}, CutSite{0, Vec3::UnitY(), 0, false}, co, 0.05).index, 0u);
+}
+
 TEST(CutByLookahead, RepeatsAndPlanesThatMissCountAsBefore) {
   const TriMesh l = shapes::lShape();
   const Plane good = plane(Vec3::UnitX(), 1.0), poor = plane(Vec3::UnitX(), 0.5), miss = plane(Vec3::UnitX(), 5.0);
@@ -139,7 +160,13 @@ TEST(CandidatePlanes, AllPassThroughTheNotch) {
     double seconds = 0;
     const std::vector<Plane> candidates = candidatePlanes(l, graph, map, o, site, seconds);
     ASSERT_GE(candidates.size(), 2u);
-    EXPECT_LE(candidates.size(), 9u);  // global cuts (5, or 6 with a cup) + bisector + fan of 2, or a fan of 8 + the bridge plane
+    EXPECT_LE(candidates.size(), 10u);  // global cuts (5, or 6 with a cup) + bisector + bridge plane + fan of 2, or a fan of 8 + the bridge plane
     for (const Plane& c : candidates) EXPECT_NEAR(c.signedDistance(l.vertices[map.notch]), 0.0, 1e-12);
+    // The plane parallel to the bridge (across the pocket's floor) competes before any stall and
+    // after two; after one, the bisector and the turned fan do.
+    const int parallel = static_cast<int>(std::count_if(candidates.begin(), candidates.end(), [&](const Plane& c) {
+      return c.normal == site.bridgeNormal;
+    }));
+    EXPECT_EQ(parallel, stalls == 1 ? 0 : 1);
   }
 }

@@ -335,6 +335,27 @@ TEST(Decompose, UShapeGivesThreeComponents) {
   EXPECT_EQ(d.components.size(), 3u);
 }
 
+// A block of 10 x 5 x 5 cells with a straight square bore (3 x 3 cells, 4 deep): five boxes, the
+// block under the bore's floor and its four walls. Every candidate plane lies in a wall or in the
+// floor, so they tie; the plane across the floor must not win the ties (it cut the bore into rings,
+// and through a wrap to 11 parts, before it had to win by a margin).
+TEST(Decompose, AStraightBoreGivesItsFloorAndFourWalls) {
+  std::vector<std::array<int, 3>> cells;
+  for (int x = 0; x < 10; ++x)
+    for (int y = 0; y < 5; ++y)
+      for (int z = 0; z < 5; ++z)
+        if (!(x < 4 && y >= 1 && y <= 3 && z >= 1 && z <= 3)) cells.push_back({x, y, z});
+  const TriMesh block = shapes::voxels(cells);
+  for (double tau : {0.05, 0.02}) {
+    SCOPED_TRACE(tau);
+    DecomposeOptions o = recommendedOptions();  // as the acd command decomposes
+    o.tau = tau;
+    const Decomposition d = decompose(block, o);
+    checkInvariants(block, d);
+    EXPECT_EQ(d.components.size(), 5u);
+  }
+}
+
 TEST(Decompose, DumbbellOnBothSidesOfItsConcavity) {
   const TriMesh db = shapes::dumbbell();
   // Its concavity (bar radius 0.15 under balls of radius 1, scaled by 1/3) is about 0.28: tau = 0.05

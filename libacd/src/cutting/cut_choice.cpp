@@ -24,6 +24,12 @@ double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(
 
 /// Vertices this close to a cut plane are on its cap (cut vertices lie on it up to rounding).
 constexpr double kCapThickness = 1e-9;
+
+/// The plane across a pocket's floor ties with every other candidate where each plane only
+/// shortens or narrows a straight pocket (a bore or slot with flat walls: every candidate lies in
+/// a wall), and then it would cut the pocket into rings. It wins only when its lookahead score is
+/// below the best other candidate's by this share.
+constexpr double kFloorPlaneMargin = 0.05;
 }  // namespace
 
 bool cutCleanly(const TriMesh& mesh, const Plane& plane, std::vector<TriMesh>& pieces, Plane& used, const Vec3* near) {
@@ -131,9 +137,13 @@ std::vector<Plane> candidatePlanes(const TriMesh& mesh, const SurfaceGraph& grap
   // (unitOrthogonal follows the frame's axes: the canonical frame's, so the fan is the shape's.)
   const Vec3 u = bridgeNormal.unitOrthogonal(), w = bridgeNormal.cross(u);
   const double pi = std::acos(-1.0);
-  // After repeated stalls, a wider fan (and the plane parallel to the bridge) compete by lookahead.
+  // After repeated stalls, a wider fan competes by lookahead.
   const int fan = stalls >= 2 || site.fromExcess ? 8 : 2;
-  if (stalls >= 2) candidates.push_back(Plane::through(notch, bridgeNormal));
+  // The plane through the notch parallel to the bridge: level with a pocket's floor, it cuts the
+  // solid beside the pocket away from the part around it. A blind bore in a waisted block (the
+  // handle) is best cut there first, and its axis makes the fitted planes of the grown cuts
+  // arbitrary (they tilt with tau). Not for a hull standing off its piece (no pocket floor).
+  if (stalls >= 2 || (stalls == 0 && !site.fromExcess)) candidates.push_back(Plane::through(notch, bridgeNormal));
   for (int k = 0; k < fan; ++k) {
     const double angle = pi * k / fan + 0.25 * pi * (stalls % 2);  // a different set on each stall
     candidates.push_back(Plane::through(notch, std::cos(angle) * u + std::sin(angle) * w));
@@ -245,6 +255,9 @@ CutChoice cutByLookahead(const TriMesh& mesh, const std::vector<Plane>& candidat
   // The lowest score wins, ties to the earlier candidate. (Treating scores within 1e-9 of the
   // piece's volume as ties was tried: the same on the corpus, but on a symmetric torus, where
   // rounding alone tells candidates apart, it took 56-59 parts instead of 45: docs/ALGORITHM.md.)
+  // The plane across the pocket's floor (candidatePlanes) only wins by a clear margin, decided
+  // after the others.
+  const auto acrossFloor = [&](std::size_t i) { return site.stalls == 0 && candidates[i].normal == site.bridgeNormal; };
   CutChoice choice;
   double bestScore = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < candidates.size(); ++i) {
@@ -252,6 +265,7 @@ CutChoice cutByLookahead(const TriMesh& mesh, const std::vector<Plane>& candidat
       ++choice.failed;
       continue;
     }
+    if (acrossFloor(i)) continue;
     if (!choice.ok || exceeding[i] < exceeding[choice.index] ||
         (exceeding[i] == exceeding[choice.index] && score[i] < bestScore)) {
       bestScore = score[i];
@@ -259,6 +273,12 @@ CutChoice cutByLookahead(const TriMesh& mesh, const std::vector<Plane>& candidat
       choice.ok = true;
     }
   }
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    if (cutOk[i] && acrossFloor(i) && (!choice.ok || score[i] < (1.0 - kFloorPlaneMargin) * bestScore)) {
+      bestScore = score[i];
+      choice.index = i;
+      choice.ok = true;
+    }
   if (choice.ok) {
     choice.pieces = std::move(children[choice.index]);
     choice.plane = used[choice.index];
