@@ -78,7 +78,10 @@ Vec3 mostAlignedInPlane(const std::vector<WeightedNormal>& normals, const Vec3& 
 void alignDegenerateAxes(const std::vector<TriMesh>& pieces, const std::vector<std::vector<Vec3>>& points,
                          const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& eig, Vec3& e1, Vec3& e2) {
   const Vec3 values = eig.eigenvalues();  // ascending
-  const double tolerance = 1e-8 * std::abs(values[2]);
+  // Eigenvectors of eigenvalues a relative gap g apart turn by about (rounding / g) when the
+  // input is moved: with g = 2e-6 (knot's largest two) enough to move a few coordinates across a
+  // step of the canonical grid, and the parts then change. Below 1e-3 the normals decide.
+  const double tolerance = 1e-3 * std::abs(values[2]);
   const bool topTwo = values[2] - values[1] <= tolerance, bottomTwo = values[1] - values[0] <= tolerance;
   if (!topTwo && !bottomTwo) return;
   std::vector<WeightedNormal> normals;
