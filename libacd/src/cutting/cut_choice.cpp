@@ -232,8 +232,11 @@ CutChoice cutByLookahead(const TriMesh& mesh, const std::vector<Plane>& candidat
     for (std::size_t j = 0; j < i && repeatOf[i] < 0; ++j)
       if (candidates[i].normal == candidates[j].normal && candidates[i].offset == candidates[j].offset)
         repeatOf[i] = static_cast<int>(j);
-  tbb::parallel_for(std::size_t(0), candidates.size(), [&](std::size_t i) {
-    if (repeatOf[i] >= 0) return;
+  // The plane across the pocket's floor (candidatePlanes) only wins by a clear margin over the
+  // others: it is decided after them, and cut only when it still can win.
+  const double pieceVolume = signedVolume(mesh);
+  const auto acrossFloor = [&](std::size_t i) { return site.stalls == 0 && candidates[i].normal == site.bridgeNormal; };
+  const auto evaluate = [&](std::size_t i) {
     // Only the section through the notch is cut: a plane across a hand would otherwise cut
     // every finger it meets, into tips too small to matter and too far apart to merge again.
     cutOk[i] = cutCleanly(mesh, candidates[i], children[i], used[i], site.atNotchOnly ? &mesh.vertices[site.notch] : nullptr);
@@ -250,24 +253,27 @@ CutChoice cutByLookahead(const TriMesh& mesh, const std::vector<Plane>& candidat
           exceeding[i] += measureHullExcess(child, hull, kExcessLimit * tau, kExcessResolution * tau).exceeds;
       }
     }
-  });
+  };
+  const auto evaluateAll = [&](const std::vector<std::size_t>& which) {
+    tbb::parallel_for(std::size_t(0), which.size(), [&](std::size_t k) { evaluate(which[k]); });
+    for (std::size_t i = 0; i < candidates.size(); ++i)
+      if (repeatOf[i] >= 0) cutOk[i] = cutOk[repeatOf[i]], score[i] = score[repeatOf[i]], exceeding[i] = exceeding[repeatOf[i]];
+  };
+  std::vector<std::size_t> others, floors;
   for (std::size_t i = 0; i < candidates.size(); ++i)
-    if (repeatOf[i] >= 0) cutOk[i] = cutOk[repeatOf[i]], score[i] = score[repeatOf[i]], exceeding[i] = exceeding[repeatOf[i]];
+    if (repeatOf[i] < 0) (acrossFloor(i) ? floors : others).push_back(i);
+  evaluateAll(others);
   // The lowest score wins, ties to the earlier candidate. (Treating scores within 1e-9 of the
   // piece's volume as ties was tried: the same on the corpus, but on a symmetric torus, where
   // rounding alone tells candidates apart, it took 56-59 parts instead of 45: docs/ALGORITHM.md.)
-  // The plane across the pocket's floor (candidatePlanes) only wins by a clear margin, decided
-  // after the others.
-  const double pieceVolume = signedVolume(mesh);
-  const auto acrossFloor = [&](std::size_t i) { return site.stalls == 0 && candidates[i].normal == site.bridgeNormal; };
   CutChoice choice;
   double bestScore = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (acrossFloor(i)) continue;
     if (!cutOk[i]) {
       ++choice.failed;
       continue;
     }
-    if (acrossFloor(i)) continue;
     if (!choice.ok || exceeding[i] < exceeding[choice.index] ||
         (exceeding[i] == exceeding[choice.index] && score[i] < bestScore)) {
       bestScore = score[i];
@@ -275,12 +281,22 @@ CutChoice cutByLookahead(const TriMesh& mesh, const std::vector<Plane>& candidat
       choice.ok = true;
     }
   }
-  for (std::size_t i = 0; i < candidates.size(); ++i)
-    if (cutOk[i] && acrossFloor(i) && (!choice.ok || score[i] < bestScore - kFloorPlaneMargin * pieceVolume)) {
+  // A score is a volume, at least 0: when the best is within the margin, nothing can beat it by
+  // the margin, and the floor plane is not cut at all.
+  const bool floorCanWin = !floors.empty() && (!choice.ok || bestScore > kFloorPlaneMargin * pieceVolume);
+  if (floorCanWin) evaluateAll(floors);
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (!acrossFloor(i) || (!floorCanWin && repeatOf[i] < 0)) continue;
+    if (!cutOk[i]) {
+      ++choice.failed;
+      continue;
+    }
+    if (!choice.ok || score[i] < bestScore - kFloorPlaneMargin * pieceVolume) {
       bestScore = score[i];
       choice.index = i;
       choice.ok = true;
     }
+  }
   if (choice.ok) {
     choice.pieces = std::move(children[choice.index]);
     choice.plane = used[choice.index];
