@@ -286,7 +286,8 @@ CutChoice cutByLookahead(const TriMesh& mesh, const std::vector<Plane>& candidat
   const bool floorCanWin = !floors.empty() && (!choice.ok || bestScore > kFloorPlaneMargin * pieceVolume);
   if (floorCanWin) evaluateAll(floors);
   for (std::size_t i = 0; i < candidates.size(); ++i) {
-    if (!acrossFloor(i) || (!floorCanWin && repeatOf[i] < 0)) continue;
+    const bool evaluated = floorCanWin || repeatOf[i] >= 0;  // a repeat has its original's values
+    if (!acrossFloor(i) || !evaluated) continue;
     if (!cutOk[i]) {
       ++choice.failed;
       continue;

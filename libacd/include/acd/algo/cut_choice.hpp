@@ -28,7 +28,8 @@ struct CutSite {
 
 /// The planes that compete to cut `mesh` at the site: the global cuts of feature grouping
 /// (Section 4.2) first, then the bisector, the plane through the notch parallel to the bridge and a
-/// fan of planes through the notch that contain the bridge normal. After stalls the fan widens. Adds the time spent grouping to `groupingSeconds`.
+/// fan of planes through the notch that contain the bridge normal. After stalls the fan widens.
+/// Adds the time spent grouping to `groupingSeconds`.
 std::vector<Plane> candidatePlanes(const TriMesh& mesh, const SurfaceGraph& graph, const ConcavityMap& map,
                                    const DecomposeOptions& o, const CutSite& site, double& groupingSeconds);
 
