@@ -2,8 +2,12 @@
 # One-shot, idempotent project setup on Debian 12:
 #   1. install missing Debian packages (apt-get, non-interactive),
 #   2. extract the mesh corpus into data/meshes/ (scripts/fetch_corpus.sh),
-#   3. configure and build in Release into build/.
+#   3. configure and build in Release into build/: the given targets, or everything.
+#      scripts/run_main.sh builds only acd_cli (the command) so that a newcomer's first
+#      decomposition does not wait for the applications, the Python module and the packaging.
+#   scripts/setup.sh [TARGET...]
 set -euo pipefail
+TARGETS=("$@")
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
@@ -99,8 +103,10 @@ if ! cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >"$LOG" 2>&1; then
     exit 1
 fi
 
-echo "[setup] building with $(nproc) jobs"
-if ! cmake --build build -j"$(nproc)" >"$LOG" 2>&1; then
+target_args=()
+for t in "${TARGETS[@]}"; do target_args+=(--target "$t"); done
+echo "[setup] building ${TARGETS[*]:-everything} with $(nproc) jobs"
+if ! cmake --build build -j"$(nproc)" "${target_args[@]}" >"$LOG" 2>&1; then
     tail -n 60 "$LOG" >&2
     echo "[setup] ERROR: build failed" >&2
     exit 1

@@ -21,6 +21,7 @@ using appcli::kUnresolved;
 using appcli::kUsage;
 constexpr int kUnfinished = appcli::kUnresolved;  // --exact: a time or memory cap stopped the exact decomposition
 constexpr int kBatchFailures = 7;  // batch: some meshes failed (crash, cap, refused input); see OUT/batch.jsonl
+constexpr int kTauNotKept = 8;     // decompose: some hull stands off the model by more than tau (the promise)
 
 /// "acd: ..." on stderr.
 inline const appcli::Console& console() {
