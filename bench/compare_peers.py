@@ -1,205 +1,378 @@
 #!/usr/bin/python3
-"""Table half of bench/compare_peers.sh: acd's parts at the fidelity of each peer setting.
+"""acd against CoACD and V-HACD, built from source and run side by side on the same inputs
+(bench/compare_peers.sh is the command; docs/BENCHMARKS.md states the rules, bench/fidelity.py
+holds them).
 
-  compare_peers.py extend RESULTS PEERS MODELS...  -> "MODEL TAU" lines still to run
-  compare_peers.py table  RESULTS PEERS MODELS...  -> Markdown table on stdout, RESULTS/runs.tsv
+  compare_peers.py run   [--set corpus|heldout|all] [--models A,B] [--only acd|peers|all]
+  compare_peers.py table [--set ...] [--models ...]           -> Markdown on stdout
 
-RESULTS/MODEL/tTAU/ holds one decompose run: report.json, eval.json (acd evaluate --json),
-rc (decompose's exit code) and commit (what was measured).
-
-Interpolation (the rule docs/BENCHMARKS.md states): per model and figure (excess, lower is
-better; IoU, higher is better) the runs are reduced to their envelope -- sorted by parts, a run
-is kept only when its figure is strictly better than that of every run with fewer parts (ties
-in parts keep the best). The target is bracketed by the envelope run with the fewest parts
-that meets it and the envelope run just before it, which misses it; acd's parts there are
-interpolated linearly in log(parts) against the figure. A non-monotone figure in tau thus
-never lowers the count: a finer tau whose figure happens to be worse is simply not used.
+Every run lands in a cache outside the repository ($ACD_BENCH_CACHE, default
+~/.cache/acd-bench), keyed by the SHA-256 of its input, its binary and its flags: a re-run after
+an acd change runs only acd, and a cold run may be stopped and resumed at any point. The peers'
+own files (hulls, log) and both evaluators' scores are copied beside each other into OUT
+(default out/compare_peers)/MODEL/TOOL-SETTING/.
 """
+import argparse
+import glob
+import hashlib
 import json
-import math
 import os
+import shutil
+import subprocess
 import sys
+import time
 
-EXTEND_FACTOR = 0.7        # next tau below the finest / above the coarsest run
-TAU_MIN, TAU_MAX = 0.004, 1.0
-FIGURES = ("excess", "iou")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import fidelity  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+CORPUS = ["armadillo", "bunny00", "camel", "cow", "dino", "eight", "elephant", "handle", "homer", "knot"]
+# acd's one series, fixed before looking at any result: factors of about 0.7 from 0.2 down.
+ACD_TAUS = [0.2, 0.14, 0.1, 0.07, 0.05, 0.035, 0.025, 0.0175, 0.0125, 0.00875]
+COACD_T = [0.1, 0.05, 0.02]
+COACD_SEEDS = [0, 1, 2]
+VHACD_SETTINGS = [("default", []), ("h128", ["-h", "128"])]
+SAMPLES = 1_000_000
+PEER_TIMEOUT = 1800  # s: a peer run beyond it is recorded as failed
 
 
-def read_peers(path):
-    rows = []
-    lines = [l.rstrip("\n") for l in open(path) if not l.startswith("#") and l.strip()]
-    head = lines[0].split("\t")
-    for line in lines[1:]:
-        r = dict(zip(head, line.split("\t")))
-        if r["iou"] == "n/a":
-            r["open"] = True
+def say(msg):
+    print("[compare_peers %s] %s" % (time.strftime("%H:%M:%S"), msg), file=sys.stderr, flush=True)
+
+
+def sha256(path):
+    h = hashlib.sha256()
+    with open(path, "rb") as f:
+        for block in iter(lambda: f.read(1 << 20), b""):
+            h.update(block)
+    return h.hexdigest()
+
+
+def key_of(*parts):
+    return hashlib.sha256("\n".join(parts).encode()).hexdigest()[:24]
+
+
+class Paths:
+    def __init__(self, out):
+        self.cache = os.environ.get("ACD_BENCH_CACHE", os.path.expanduser("~/.cache/acd-bench"))
+        self.out = out
+        self.acd = os.path.join(ROOT, "build/bin/acd")
+        self.score = os.path.join(ROOT, "build/bin/acd-score")
+        self.peers_bin = os.path.join(self.cache, "peers-build/bin")
+        self.peers_src = os.environ.get("ACD_PEERS_SRC", os.path.join(os.path.dirname(ROOT), "shared/peers"))
+        self.wide = os.environ.get("ACD_WIDE_DATA", os.path.join(os.path.dirname(ROOT), "shared/datasets/wide"))
+
+    def peer(self, tool):
+        return os.path.join(self.peers_bin, tool)
+
+
+def models_of(paths, which, only):
+    """[(name, path, set)] in a fixed order."""
+    out = []
+    if which in ("corpus", "all"):
+        out += [(m, os.path.join(ROOT, "data/meshes/%s.off" % m), "corpus") for m in CORPUS]
+    if which in ("heldout", "all"):
+        for p in sorted(glob.glob(os.path.join(paths.wide, "compare/*"))):
+            out.append((os.path.splitext(os.path.basename(p))[0], p, "heldout"))
+    if only:
+        out = [m for m in out if m[0] in only]
+    return out
+
+
+def timed(cmd, cwd, log_path, timeout):
+    """Runs cmd; returns (exit code, wall seconds, peak resident MB) with stdout+stderr in log_path."""
+    start = time.monotonic()
+    with open(log_path, "w") as log:
+        p = subprocess.Popen(cmd, cwd=cwd, stdout=log, stderr=subprocess.STDOUT)
+        deadline = start + timeout
+        while True:
+            pid, status, usage = os.wait4(p.pid, os.WNOHANG)
+            if pid:
+                break
+            if time.monotonic() > deadline:
+                p.kill()
+                pid, status, usage = os.wait4(p.pid, 0)
+                return -9, time.monotonic() - start, usage.ru_maxrss / 1024
+            time.sleep(0.05)
+    rc = os.waitstatus_to_exitcode(status)
+    return rc, time.monotonic() - start, usage.ru_maxrss / 1024
+
+
+def cached(paths, key, make):
+    """The cache folder for key, made by make(dir) once (a folder without `done` is re-made)."""
+    d = os.path.join(paths.cache, "runs", key)
+    if os.path.exists(os.path.join(d, "done")):
+        return d
+    shutil.rmtree(d, ignore_errors=True)
+    os.makedirs(d)
+    make(d)
+    open(os.path.join(d, "done"), "w").write("")
+    return d
+
+
+def ensure_peers(paths):
+    if all(os.access(paths.peer(t), os.X_OK) for t in ("coacd", "vhacd")):
+        return
+    script = os.path.join(paths.peers_src, "build.sh")
+    if not os.path.exists(script):
+        sys.exit("compare_peers: the peers are not built in %s and no source at %s (set ACD_PEERS_SRC to the folder "
+                 "holding CoACD's and V-HACD's archives and build.sh)" % (paths.peers_bin, paths.peers_src))
+    say("building CoACD and V-HACD from %s into %s (once; about 15 min)" % (paths.peers_src, paths.cache))
+    subprocess.run([script, os.path.join(paths.cache, "peers-build")], check=True)
+
+
+def peer_input(paths, name, model):
+    """The model as an OBJ written by acd's own writer (acd convert), cached by the model's hash."""
+    src_hash = sha256(model)
+    d = cached(paths, key_of("input", src_hash, sha256(paths.acd)),
+               lambda d: subprocess.run([paths.acd, "convert", model, os.path.join(d, "model.obj")], check=True))
+    return os.path.join(d, "model.obj")
+
+
+def peer_runs():
+    """[(label, tool, flags)] in the order they are run (cheap first, CoACD by threshold)."""
+    runs = [("vhacd-%s" % s, "vhacd", f) for s, f in VHACD_SETTINGS]
+    for t in [0.05, 0.1, 0.02]:
+        runs += [("coacd-t%g-s%d" % (t, s), "coacd", ["-t", str(t), "-s", str(s)]) for s in COACD_SEEDS]
+    return runs
+
+
+def run_peer(paths, obj, tool, flags):
+    binary = os.path.realpath(paths.peer(tool))
+
+    def make(d):
+        shutil.copy(obj, os.path.join(d, "model.obj"))
+        if tool == "coacd":
+            cmd = [binary, "-i", os.path.join(d, "model.obj"), "-o", os.path.join(d, "hulls.obj")] + flags
         else:
-            r["open"] = False
-            for k in ("parts", "iou", "excess"):
-                r[k] = float(r[k])
-        rows.append(r)
-    return rows
+            cmd = [binary, "model.obj"] + flags
+        rc, sec, mb = timed(cmd, d, os.path.join(d, "log.txt"), PEER_TIMEOUT)
+        if tool == "vhacd" and os.path.exists(os.path.join(d, "decomp.obj")):
+            os.rename(os.path.join(d, "decomp.obj"), os.path.join(d, "hulls.obj"))
+        for extra in glob.glob(os.path.join(d, "decomp.*")) + glob.glob(os.path.join(d, "*.wrl")) + [os.path.join(d, "model.obj")]:
+            os.remove(extra)
+        json.dump({"command": " ".join([tool, "model.obj"] + (["-o", "hulls.obj"] if tool == "coacd" else []) + flags),
+                   "rc": rc, "seconds": sec, "peak_mb": mb}, open(os.path.join(d, "run.json"), "w"))
+
+    return cached(paths, key_of("peer", tool, sha256(binary), sha256(obj), *flags), make)
 
 
-def read_runs(results, model):
-    runs = []
-    base = os.path.join(results, model)
-    if not os.path.isdir(base):
-        return runs
-    for d in os.listdir(base):
-        p = os.path.join(base, d)
-        try:
-            rep = json.load(open(os.path.join(p, "report.json")))
-            ev = json.load(open(os.path.join(p, "eval.json")))
-            rc = int(open(os.path.join(p, "rc")).read())
-        except (OSError, ValueError):
-            continue   # incomplete or failed run
-        if rc not in (0, 4):
-            continue
-        commit = open(os.path.join(p, "commit")).read().strip() if os.path.exists(os.path.join(p, "commit")) else "?"
-        runs.append({"tau": rep["parameters"]["tau"], "parts": len(rep["components"]),
-                     "excess": max(ev["hull_outside_max"], ev["model_to_hulls_max"]),
-                     "iou": ev["iou"], "seconds": rep["timing"]["total_seconds"],
-                     "unresolved": rep["totals"].get("unresolved", 0), "rc": rc, "commit": commit})
-    return sorted(runs, key=lambda r: -r["tau"])
+def run_acd(paths, model, tau):
+    def make(d):
+        cmd = [paths.acd, "decompose", model, "-t", str(tau), "-o", d, "-q", "--threads", "2"]
+        rc, sec, mb = timed(cmd, d, os.path.join(d, "log.txt"), PEER_TIMEOUT)
+        for c in glob.glob(os.path.join(d, "component_*.off")):
+            os.remove(c)
+        json.dump({"command": "acd decompose MODEL -t %g --threads 2" % tau, "rc": rc, "seconds": sec, "peak_mb": mb},
+                  open(os.path.join(d, "run.json"), "w"))
+
+    return cached(paths, key_of("acd", sha256(paths.acd), sha256(model), "%g" % tau), make)
 
 
-def better(figure, a, b):
-    """True when value a is strictly better than b for this figure."""
-    return a < b if figure == "excess" else a > b
+def evaluate(paths, model, hulls):
+    """Both evaluators' figures for a hull file, cached by model, hulls and evaluator binaries."""
+    def make(d):
+        for name, cmd in (("eval.json", [paths.acd, "evaluate", model, hulls, "--json", "--samples", str(SAMPLES),
+                                         "--threads", "2"]),
+                          ("score.json", [paths.score, model, hulls, "--samples", str(SAMPLES)])):
+            p = subprocess.run(cmd, capture_output=True, text=True)
+            open(os.path.join(d, name), "w").write(p.stdout if p.returncode == 0 else
+                                                   json.dumps({"error": p.stderr.strip()[-300:]}))
+
+    return cached(paths, key_of("eval", sha256(model), sha256(hulls), sha256(paths.acd), sha256(paths.score),
+                                str(SAMPLES)), make)
 
 
-def meets(figure, value, target):
-    return value <= target if figure == "excess" else value >= target
+def publish(src, dst, names):
+    os.makedirs(dst, exist_ok=True)
+    for n in names:
+        if os.path.exists(os.path.join(src, n)):
+            shutil.copy(os.path.join(src, n), os.path.join(dst, n))
 
 
-def envelope(runs, figure):
-    front = []
-    for r in sorted(runs, key=lambda r: (r["parts"], r[figure] if figure == "excess" else -r[figure])):
-        if not front or better(figure, r[figure], front[-1][figure]):
-            front.append(r)   # (a tie in parts comes after its best run, so is never kept)
-    return front
+def run(args, paths):
+    for tool in ("acd", "score"):
+        if not os.access(getattr(paths, tool), os.X_OK):
+            sys.exit("compare_peers: %s not found: build it (cmake --build build --target acd_cli acd_score)"
+                     % getattr(paths, tool))
+    models = models_of(paths, args.set, args.models)
+    if args.only in ("acd", "all"):
+        for name, model, _ in models:
+            for tau in ACD_TAUS:
+                say("acd %s tau %g" % (name, tau))
+                d = run_acd(paths, model, tau)
+                dst = os.path.join(paths.out, name, "acd-t%g" % tau)
+                publish(d, dst, ["hulls.obj", "report.json", "log.txt", "run.json"])
+                if os.path.exists(os.path.join(d, "hulls.obj")):
+                    publish(evaluate(paths, model, os.path.join(d, "hulls.obj")), dst, ["eval.json", "score.json"])
+    if args.only in ("peers", "all"):
+        ensure_peers(paths)
+        for label, tool, flags in peer_runs():
+            for name, model, _ in models:
+                say("%s %s" % (label, name))
+                d = run_peer(paths, peer_input(paths, name, model), tool, flags)
+                dst = os.path.join(paths.out, name, label)
+                publish(d, dst, ["hulls.obj", "log.txt", "run.json"])
+                if os.path.exists(os.path.join(d, "hulls.obj")):
+                    publish(evaluate(paths, model, os.path.join(d, "hulls.obj")), dst, ["eval.json", "score.json"])
 
 
-def parts_at(runs, figure, target):
-    """(parts, note, bracketing runs): parts interpolated at the target; note '<=' or '>' when
-    the runs do not bracket it (parts is then the bound)."""
-    front = envelope(runs, figure)
-    if not front:
-        return None, "no runs", []
-    i = next((k for k, r in enumerate(front) if meets(figure, r[figure], target)), None)
-    if i is None:
-        return front[-1]["parts"], ">", [front[-1]]
-    if i == 0:
-        return front[0]["parts"], "<=", [front[0]]
-    lo, hi = front[i - 1], front[i]
-    w = (target - lo[figure]) / (hi[figure] - lo[figure])
-    return math.exp(math.log(lo["parts"]) + w * (math.log(hi["parts"]) - math.log(lo["parts"]))), "", [lo, hi]
+# ---- the tables -------------------------------------------------------------------------------
+
+def figures(d, evaluator):
+    """{parts, iou, excess, seconds, rc} of one published run, by one evaluator; None if absent."""
+    try:
+        runinfo = json.load(open(os.path.join(d, "run.json")))
+        ev = json.load(open(os.path.join(d, "eval.json" if evaluator == "acd" else "score.json")))
+    except (OSError, ValueError):
+        return None
+    if "error" in ev:
+        return {"parts": ev.get("hulls"), "iou": None, "excess": None, "seconds": runinfo["seconds"],
+                "rc": runinfo["rc"], "peak_mb": runinfo["peak_mb"], "error": ev["error"]}
+    return {"parts": ev["hulls"], "iou": ev["iou"], "excess": max(ev["hull_outside_max"], ev["model_to_hulls_max"]),
+            "seconds": runinfo["seconds"], "rc": runinfo["rc"], "peak_mb": runinfo["peak_mb"]}
 
 
-def closed_peers(peers, models):
-    return [p for p in peers if p["model"] in models and not p["open"]]
-
-
-def extend(results, peers, models):
-    """Taus to add so that every peer figure is bracketed (each call: one step per model)."""
-    for m in models:
-        runs = read_runs(results, m)
-        if not runs:
-            continue
-        taus = [r["tau"] for r in runs]
-        want = set()
-        for p in closed_peers(peers, [m]):
-            for f in FIGURES:
-                _, note, _ = parts_at(runs, f, p[f])
-                if note == ">" and min(taus) * EXTEND_FACTOR >= TAU_MIN:
-                    want.add(min(taus) * EXTEND_FACTOR)
-                elif note == "<=" and min(r["parts"] for r in runs) > 1 and max(taus) / EXTEND_FACTOR <= TAU_MAX:
-                    want.add(max(taus) / EXTEND_FACTOR)
-        for t in sorted(want):
-            print(m, "%.3g" % t)
-
-
-def fmt_parts(v, note, brackets):
-    if v is None:
-        return "–"
-    s = ("%s %d" % (note, v)) if note else "%.1f" % v
-    if any(r["rc"] == 4 for r in brackets):
-        s += " †"
+def series_of(out, name, evaluator):
+    s = []
+    for tau in ACD_TAUS:
+        f = figures(os.path.join(out, name, "acd-t%g" % tau), evaluator)
+        if f and f["iou"] is not None:
+            s.append(dict(f, tau=tau))
     return s
 
 
-def geomean(xs):
-    return "%.2f" % math.exp(sum(math.log(x) for x in xs) / len(xs)) if xs else "–"
+PEER_GROUPS = [("CoACD t=0.1", ["coacd-t0.1-s%d" % s for s in COACD_SEEDS]),
+               ("CoACD t=0.05", ["coacd-t0.05-s%d" % s for s in COACD_SEEDS]),
+               ("CoACD t=0.02", ["coacd-t0.02-s%d" % s for s in COACD_SEEDS]),
+               ("V-HACD default", ["vhacd-default"]), ("V-HACD -h 128", ["vhacd-h128"])]
 
 
-def table(results, peers, models):
-    out = []
-    rows_tsv = ["model\ttau\tparts\texcess\tiou\tseconds\tunresolved\trc\tcommit"]
-    ratios = {}       # (tool, setting, figure) -> [ratio]
-    default_verdict = []
-    commits = set()
-    out.append("| model | peer | peer parts | peer excess | peer IoU | acd parts at excess | ratio | acd parts at IoU | ratio |")
-    out.append("|---|---|---:|---:|---:|---:|---:|---:|---:|")
-    for m in models:
-        runs = read_runs(results, m)
-        for r in sorted(runs, key=lambda r: -r["tau"]):
-            commits.add(r["commit"])
-            rows_tsv.append("%s\t%g\t%d\t%.4f\t%.4f\t%.2f\t%d\t%d\t%s" % (
-                m, r["tau"], r["parts"], r["excess"], r["iou"], r["seconds"], r["unresolved"], r["rc"], r["commit"]))
-        for p in closed_peers(peers, [m]):
-            cells, rs = [], {}
-            for f in FIGURES:
-                v, note, br = parts_at(runs, f, p[f])
-                ratio = v / p["parts"] if v is not None else None
-                if ratio is not None and not note:
-                    ratios.setdefault((p["tool"], p["setting"], f), []).append(ratio)
-                    rs[f] = ratio
-                cells += [fmt_parts(v, note, br), "%.2f" % ratio if ratio is not None and not note else "–"]
-            out.append("| %s | %s %s | %d | %.3f | %.3f | %s |" % (
-                m, p["tool"], p["setting"], p["parts"], p["excess"], p["iou"], " | ".join(cells)))
-            if p["tool"] == "CoACD" and p["setting"] == "t=0.05":
-                worse = [f for f in FIGURES if rs.get(f, 0) > 1]
-                default_verdict.append((m, rs, worse))
-    skipped = sorted({p["model"] for p in peers if p["open"] and p["model"] in models})
-    out.append("")
-    out.append("Geometric means of acd parts / peer parts (pairs bracketed by acd runs; n = pairs):")
-    out.append("")
-    out.append("| peer | at excess | acd fewer | at IoU | acd fewer |")
-    out.append("|---|---:|---:|---:|---:|")
-    keys = [k for k in dict.fromkeys((p["tool"], p["setting"]) for p in peers) if any(k + (f,) in ratios for f in FIGURES)]
-    for group in [[k for k in keys if k[0] == "CoACD"], [k for k in keys if k[0] != "CoACD"]]:
-        for t, s in group:
-            cell = []
-            for f in FIGURES:
-                xs = ratios.get((t, s, f), [])
-                cell += ["%s (n = %d)" % (geomean(xs), len(xs)), "%d of %d" % (sum(x < 1 for x in xs), len(xs))]
-            out.append("| %s %s | %s |" % (t, s, " | ".join(cell)))
-        if group and group[0][0] == "CoACD":
-            allx = {f: [x for (t, s, g), xs in ratios.items() if t == "CoACD" and g == f for x in xs] for f in FIGURES}
-            cell = []
-            for f in FIGURES:
-                cell += ["**%s** (n = %d)" % (geomean(allx[f]), len(allx[f])),
-                         "**%d of %d**" % (sum(x < 1 for x in allx[f]), len(allx[f]))]
-            out.append("| **CoACD, all settings** | %s |" % " | ".join(cell))
-    out.append("")
-    out.append("Against CoACD's default (t = 0.05), per model (ratio > 1: acd needs more parts):")
-    out.append("")
-    for m, rs, worse in default_verdict:
-        r = ", ".join("%s %s" % (f, "%.2f" % rs[f] if f in rs else "not bracketed") for f in FIGURES)
-        out.append("- %s: %s (%s)" % (m, ("**worse** at " + " and ".join(worse)) if worse else "not worse", r))
-    out.append("")
-    notes = ["† a bracketing run left some component unresolved (decompose exit 4).",
-             "`<= N`: even acd's coarsest run meets the figure; `> N`: even its finest misses it (not in the means)."]
-    if skipped:
-        notes.append("Open models skipped (no inside, so no IoU or excess): " + ", ".join(skipped) + ".")
-    notes.append("acd commit(s) measured: " + ", ".join(sorted(commits)) + ".")
-    out += notes
-    open(os.path.join(results, "runs.tsv"), "w").write("\n".join(rows_tsv) + "\n")
-    print("\n".join(out))
+def compare(out, name, evaluator, figure, labels):
+    """Per seed run of one peer setting: (peer parts, peer figure, ratio, kind); None where missing."""
+    series = series_of(out, name, evaluator)
+    rows = []
+    for label in labels:
+        f = figures(os.path.join(out, name, label), evaluator)
+        if not f or f["iou"] is None or not series:
+            continue
+        r, kind = fidelity.ratio(series, figure, f["parts"], f[figure])
+        rows.append((f["parts"], f[figure], r, kind))
+    return rows
+
+
+def fmt_ratio(r, kind):
+    return {"": "%.2f", "<=": "≤ %.2f", "loss": "> %.2f ✗"}[kind] % r
+
+
+def comparison_table(out, models, evaluator):
+    lines = ["| model | peer | peer parts (median, range) | peer IoU | acd / peer at IoU | peer excess | acd / peer at excess |",
+             "|---|---|---:|---:|---:|---:|---:|"]
+    summary = {}
+    for name in models:
+        for group, labels in PEER_GROUPS:
+            iou = compare(out, name, evaluator, "iou", labels)
+            exc = compare(out, name, evaluator, "excess", labels)
+            if not iou:
+                continue
+            parts = [r[0] for r in iou]
+            cells = []
+            for rows, fig in ((iou, "iou"), (exc, "excess")):
+                ratios = [r[2] for r in rows]
+                med = fidelity.median(ratios)
+                mid = sorted(rows, key=lambda r: r[2])[len(rows) // 2]   # the median run
+                spread = " [%.2f–%.2f]" % (min(ratios), max(ratios)) if len(rows) > 1 else ""
+                cells += ["%.3f" % mid[1], fmt_ratio(med, mid[3]) + spread]
+                summary.setdefault((group, fig), []).append(med)
+            prange = " (%d–%d)" % (min(parts), max(parts)) if len(parts) > 1 else ""
+            lines.append("| %s | %s | %g%s | %s | %s | %s | %s |" % (name, group, fidelity.median(parts), prange, *cells))
+    lines += ["", "| peer | n | acd / peer at IoU (geometric mean) | acd fewer at IoU | at excess | acd fewer at excess |",
+              "|---|---:|---:|---:|---:|---:|"]
+    allr = {"iou": [], "excess": []}
+    for group, _ in PEER_GROUPS:
+        cells = []
+        for fig in ("iou", "excess"):
+            xs = summary.get((group, fig), [])
+            if group.startswith("CoACD"):
+                allr[fig] += xs
+            cells += ["%.2f" % fidelity.geomean(xs) if xs else "–", "%d of %d" % (sum(x < 1 for x in xs), len(xs))]
+        n = len(summary.get((group, "iou"), []))
+        lines.append("| %s | %d | %s |" % (group, n, " | ".join(cells)))
+    cells = []
+    for fig in ("iou", "excess"):
+        xs = allr[fig]
+        cells += ["**%.2f**" % fidelity.geomean(xs) if xs else "–", "**%d of %d**" % (sum(x < 1 for x in xs), len(xs))]
+    lines.append("| **CoACD, all settings** | %d | %s |" % (len(allr["iou"]), " | ".join(cells)))
+    return "\n".join(lines)
+
+
+def evaluators_table(out, models):
+    """Where the two evaluators differ by more than their sampling error."""
+    lines = ["| run | IoU: acd evaluate | acd-score | difference / error | excess: acd evaluate | acd-score |",
+             "|---|---:|---:|---:|---:|---:|"]
+    diffs = []
+    for name in models:
+        for d in sorted(glob.glob(os.path.join(out, name, "*"))):
+            a, b = figures(d, "acd"), figures(d, "score")
+            if not a or not b or a["iou"] is None or b["iou"] is None:
+                continue
+            ea = json.load(open(os.path.join(d, "eval.json")))["iou_stderr"]
+            eb = json.load(open(os.path.join(d, "score.json")))["iou_stderr"]
+            z = abs(a["iou"] - b["iou"]) / max(1e-12, (ea * ea + eb * eb) ** 0.5)
+            diffs.append((z, "%s/%s" % (name, os.path.basename(d)), a, b))
+    diffs.sort(key=lambda x: -x[0])
+    for z, label, a, b in diffs[:12]:
+        lines.append("| %s | %.4f | %.4f | %.1f | %.4f | %.4f |" % (label, a["iou"], b["iou"], z, a["excess"], b["excess"]))
+    within = sum(z <= 3 for z, *_ in diffs)
+    lines.append("")
+    lines.append("%d of %d runs agree on IoU within 3 standard errors; the table lists the largest differences."
+                 % (within, len(diffs)))
+    return "\n".join(lines)
+
+
+def time_table(out, models):
+    lines = ["| model | acd τ 0.05 (s) | CoACD t 0.05 (s, median of seeds) | V-HACD default (s) | acd peak MB | CoACD peak MB | V-HACD peak MB |",
+             "|---|---:|---:|---:|---:|---:|---:|"]
+    for name in models:
+        def get(label):
+            try:
+                return json.load(open(os.path.join(out, name, label, "run.json")))
+            except (OSError, ValueError):
+                return None
+        a, v = get("acd-t0.05"), get("vhacd-default")
+        cs = [c for c in (get("coacd-t0.05-s%d" % s) for s in COACD_SEEDS) if c]
+        if not a:
+            continue
+        lines.append("| %s | %.2f | %s | %s | %.0f | %s | %s |" % (
+            name, a["seconds"], "%.1f" % fidelity.median([c["seconds"] for c in cs]) if cs else "–",
+            "%.1f" % v["seconds"] if v else "–", a["peak_mb"],
+            "%.0f" % fidelity.median([c["peak_mb"] for c in cs]) if cs else "–", "%.0f" % v["peak_mb"] if v else "–"))
+    return "\n".join(lines)
+
+
+def table(args, paths):
+    models = [m[0] for m in models_of(paths, args.set, args.models)]
+    print("#### At equal fidelity, scored by `acd evaluate`\n")
+    print(comparison_table(paths.out, models, "acd"))
+    print("\n#### The same, scored by `acd-score` (CGAL only, no libacd code)\n")
+    print(comparison_table(paths.out, models, "score"))
+    print("\n#### The two evaluators side by side\n")
+    print(evaluators_table(paths.out, models))
+    print("\n#### Time and peak memory (one run at a time, 2 cores)\n")
+    print(time_table(paths.out, models))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("mode", choices=["run", "table"])
+    ap.add_argument("--set", choices=["corpus", "heldout", "all"], default="all")
+    ap.add_argument("--models", type=lambda s: s.split(","), default=None)
+    ap.add_argument("--only", choices=["acd", "peers", "all"], default="all")
+    ap.add_argument("--out", default=os.path.join(ROOT, "out/compare_peers"))
+    args = ap.parse_args()
+    paths = Paths(args.out)
+    (run if args.mode == "run" else table)(args, paths)
 
 
 if __name__ == "__main__":
-    mode, results, peers_path, models = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4:]
-    peers = read_peers(peers_path)
-    {"extend": extend, "table": table}[mode](results, peers, models)
+    main()

@@ -16,40 +16,70 @@ def load(name):
     return mod
 
 
-cp = load("compare_peers")
+fid = load("fidelity")
 inv = load("invariance")
 
 
-def run(parts, excess, iou=0.9, tau=0.05, rc=0):
-    return {"parts": parts, "excess": excess, "iou": iou, "tau": tau, "rc": rc}
+def run(tau, parts, excess=0.05, iou=0.9):
+    return {"tau": tau, "parts": parts, "excess": excess, "iou": iou}
 
 
-class Interpolation(unittest.TestCase):
-    def test_log_linear_between_bracketing_runs(self):
+class Fidelity(unittest.TestCase):
+    """The comparison's rules (bench/fidelity.py, docs/BENCHMARKS.md): adjacent tau of one series,
+    figures and parts from the same runs, an unbracketed pair a loss."""
+
+    def test_log_linear_between_adjacent_tau(self):
         # parts = 100 * exp(-20 * excess) exactly: the interpolation must give it back.
-        runs = [run(100 * math.exp(-20 * e), e) for e in (0.02, 0.05, 0.1)]
-        v, note, br = cp.parts_at(runs, "excess", 0.07)
-        self.assertEqual(note, "")
+        series = [run(t, 100 * math.exp(-20 * e), e) for t, e in ((0.1, 0.1), (0.05, 0.05), (0.02, 0.02))]
+        v, kind, used = fid.parts_at(series, "excess", 0.07)
+        self.assertEqual(kind, fid.BRACKETED)
         self.assertAlmostEqual(v, 100 * math.exp(-1.4), places=9)
-        self.assertEqual([r["excess"] for r in br], [0.1, 0.05])
+        self.assertEqual([r["tau"] for r in used], [0.1, 0.05])
 
-    def test_run_worse_than_a_coarser_one_is_ignored(self):
-        # 30 parts sticks out further than 20 parts: the bracket is 20 -> 40, not 30 -> 40.
-        runs = [run(10, 0.10), run(20, 0.06), run(30, 0.08), run(40, 0.03)]
-        v, note, br = cp.parts_at(runs, "excess", 0.05)
-        self.assertEqual([r["parts"] for r in br], [20, 40])
-        self.assertAlmostEqual(v, math.exp(math.log(20) + (1 / 3) * math.log(2)), places=9)
+    def test_no_envelope_across_runs(self):
+        # tau 0.07 sticks out further than tau 0.1 with more parts. The old envelope skipped it and
+        # bracketed 20 -> 40 (about 25 parts at 0.05); by the rule the pair is the adjacent
+        # 0.07 (misses) -> 0.05 (meets, and every finer run meets): between 30 and 40 parts.
+        series = [run(0.14, 10, 0.10), run(0.1, 20, 0.06), run(0.07, 30, 0.08), run(0.05, 40, 0.03), run(0.035, 50, 0.02)]
+        v, kind, used = fid.parts_at(series, "excess", 0.05)
+        self.assertEqual([r["tau"] for r in used], [0.07, 0.05])
+        self.assertGreater(v, 30)
+        self.assertLessEqual(v, 40)
 
-    def test_iou_higher_is_better(self):
-        runs = [run(10, 0, iou=0.8), run(20, 0, iou=0.9), run(40, 0, iou=0.95)]
-        v, note, _ = cp.parts_at(runs, "iou", 0.9)
-        self.assertEqual(note, "")
-        self.assertAlmostEqual(v, 20, places=9)
+    def test_a_lucky_coarse_run_does_not_count(self):
+        # tau 0.1 meets the IoU but 0.07 misses it again: the pair starts where every finer run meets.
+        series = [run(0.2, 5, iou=0.80), run(0.1, 10, iou=0.95), run(0.07, 15, iou=0.85), run(0.05, 20, iou=0.95)]
+        v, kind, used = fid.parts_at(series, "iou", 0.9)
+        self.assertEqual([r["tau"] for r in used], [0.07, 0.05])
+        self.assertAlmostEqual(v, math.exp(math.log(15) + 0.5 * math.log(20 / 15)), places=9)
 
-    def test_bounds_when_not_bracketed(self):
-        runs = [run(10, 0.05), run(20, 0.03)]
-        self.assertEqual(cp.parts_at(runs, "excess", 0.06)[:2], (10, "<="))
-        self.assertEqual(cp.parts_at(runs, "excess", 0.01)[:2], (20, ">"))
+    def test_figure_and_parts_from_the_same_runs(self):
+        # The IoU pair and the excess pair are each read from the runs that cross that figure.
+        series = [run(0.1, 10, 0.09, 0.85), run(0.05, 20, 0.04, 0.92)]
+        for fig, target in (("iou", 0.9), ("excess", 0.05)):
+            _, _, used = fid.parts_at(series, fig, target)
+            for r in used:
+                self.assertIn(r, series)
+
+    def test_unbracketed_pair_is_a_loss(self):
+        series = [run(0.1, 10, iou=0.8), run(0.05, 20, iou=0.9)]
+        v, kind, _ = fid.parts_at(series, "iou", 0.95)
+        self.assertEqual((v, kind), (20, fid.LOSS))
+        # counted as at least 1 (acd needs more), even when acd's finest run has fewer parts
+        self.assertEqual(fid.ratio(series, "iou", 40, 0.95), (1.0, fid.LOSS))
+        self.assertEqual(fid.ratio(series, "iou", 10, 0.95), (2.0, fid.LOSS))
+        # and a finest run that misses after coarser ones met is a loss too
+        series = [run(0.1, 10, iou=0.96), run(0.05, 20, iou=0.9)]
+        self.assertEqual(fid.parts_at(series, "iou", 0.95)[1], fid.LOSS)
+
+    def test_coarsest_run_meeting_gives_an_upper_bound(self):
+        series = [run(0.2, 6, 0.03), run(0.1, 12, 0.02)]
+        self.assertEqual(fid.ratio(series, "excess", 12, 0.05), (0.5, fid.AT_MOST))
+
+    def test_median_and_geomean(self):
+        self.assertEqual(fid.median([3, 1, 2]), 2)
+        self.assertEqual(fid.median([4, 1, 2, 3]), 2.5)
+        self.assertAlmostEqual(fid.geomean([0.5, 2.0]), 1.0, places=12)
 
 
 class Motions(unittest.TestCase):

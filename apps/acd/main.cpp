@@ -12,6 +12,7 @@
 
 #include <CLI/CLI.hpp>
 #include "batch.hpp"
+#include "convert.hpp"
 #include "decompose.hpp"
 #include "evaluate.hpp"
 #include "exact.hpp"
@@ -30,7 +31,7 @@ namespace {
 const char* exitCodes() {
   return "Exit codes: 0 success; 1 bad command line; 2 unreadable or invalid model; 3 invalid parameter;\n"
          "4 some component still exceeds tau (--exact: a cap stopped it); 5 cannot write output; 6 internal error;\n"
-         "7 batch: some meshes failed (see OUT/batch.jsonl).";
+         "7 batch: some meshes failed (see OUT/batch.jsonl); 8 some hull stands off the model by more than tau.";
 }
 
 }  // namespace
@@ -51,6 +52,7 @@ int main(int argc, char** argv) {
   acdcli::addExactOptions(*dec);
   CLI::App* batch = acdcli::addBatchCommand(app, *dec);  // after every decompose option: it takes them all
   CLI::App* report = acdcli::addReportCommand(app);
+  CLI::App* convert = acdcli::addConvertCommand(app);
 
   try {
     app.parse(argc, argv);
@@ -64,6 +66,7 @@ int main(int argc, char** argv) {
     if (*report) return acdcli::runReport();
     if (*info) return runInfo();
     if (*eval) return runEvaluate();
+    if (*convert) return acdcli::runConvert();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "acd: internal error: %s\n", e.what());
     return kInternal;
