@@ -53,7 +53,7 @@ for model in $MODELS; do
         rm -rf "$dir"
         rc=0
         "$ACD" decompose "$src" -t "$tau" -o "$dir" -q "${EXTRA[@]}" 2>"$OUT.stderr" || rc=$?
-        if (( rc != 0 && rc != 4 )); then
+        if (( rc != 0 && rc != 4 && rc != 8 )); then
             echo "tau_kept: $model at tau $tau: decompose exit $rc" >&2; failed=1; row+=" – | – |"; continue
         fi
         parts=$(jq '.components | length' "$dir/report.json")
