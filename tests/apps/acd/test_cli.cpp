@@ -205,6 +205,19 @@ TEST_F(Cli, AHullBeyondTauEndsWithItsOwnCodeAndNamesIt) {
   EXPECT_NE(r.out.find("BEYOND tau"), std::string::npos);
 }
 
+TEST_F(Cli, ConvertWritesTheMeshAsRead) {
+  const TriMesh l = shapes::lShape();
+  const std::string model = writeModel("L.off", l);
+  const acdtest::ToolRun r = acd("convert " + quote(model) + " " + quote(path("L.obj")));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const ReadResult back = readMesh(path("L.obj"));
+  ASSERT_TRUE(back.status.ok()) << back.status.message;
+  ASSERT_EQ(back.mesh.vertices.size(), l.vertices.size());
+  ASSERT_EQ(back.mesh.faces.size(), l.faces.size());
+  for (std::size_t i = 0; i < l.vertices.size(); ++i) EXPECT_EQ(back.mesh.vertices[i], l.vertices[i]) << i;
+  EXPECT_EQ(acd("convert " + quote(path("nowhere.off")) + " " + quote(path("x.obj"))).code, 2);
+}
+
 TEST_F(Cli, QuietPrintsNoSummary) {
   const std::string model = writeModel("L.off", shapes::lShape());
   const acdtest::ToolRun r = acd("decompose " + quote(model) + " -t 0.05 -q -o " + quote(path("out")));

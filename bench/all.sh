@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# Makes docs/BENCHMARKS.md in one run on one commit: the peers (bench/compare_peers.sh, corpus and
+# held-out models), speed over the corpus (bench/run_corpus.sh), tau kept (bench/tau_kept.sh) and
+# invariance under rigid motion (bench/invariance.sh), each table placed into
+# bench/BENCHMARKS.template.md with the command that made it.
+#
+#   bench/all.sh [--out DIR] [--doc PATH]
+#
+#   --out   where this run's outputs go (default out/all; emptied first, except the peers' cache)
+#   --doc   the document written (default docs/BENCHMARKS.md)
+#
+# About 2.5 h of CoACD on a cold cache (2 cores); with the peers cached, about 40 min. The peers'
+# runs and every acd run of the comparison are cached by hash (bench/compare_peers.py), so they
+# are reused exactly when input, binary and flags are the same.
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$ROOT"
+OUT="out/all"
+DOC="docs/BENCHMARKS.md"
+while [[ $# -gt 0 ]]; do
+    case "$1" in
+        --out) OUT="$2"; shift 2 ;;
+        --doc) DOC="$2"; shift 2 ;;
+        -h|--help) sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        *) echo "all: unknown option $1" >&2; exit 2 ;;
+    esac
+done
+rm -rf "$OUT"; mkdir -p "$OUT/tables"
+start=$(date +%s)
+say() { echo "[all $(date +%T)] $*" >&2; }
+
+cmake --build build --target acd_cli acd_score -j"$(nproc)" >/dev/null
+commit="$(git rev-parse --short HEAD)"
+git diff --quiet HEAD -- libacd apps bench || commit="$commit+dirty"
+{
+    echo "commit=$commit"
+    echo "date=$(date -u '+%Y-%m-%d %H:%M UTC')"
+    echo "acd_sha256=$(sha256sum build/bin/acd | cut -c1-16)"
+    echo "machine=$(nproc) cores ($(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -n 1)), $(free -g | awk '/Mem:/ {print $2}') GiB, $(. /etc/os-release; echo "$PRETTY_NAME"), $(g++ --version | head -n 1)"
+} >"$OUT/tables/header.env"
+
+say "peers: corpus"
+bench/compare_peers.sh --set corpus --out "$OUT/peers" >"$OUT/tables/peers_corpus.md"
+say "peers: held-out"
+bench/compare_peers.sh --set heldout --out "$OUT/peers" >"$OUT/tables/peers_heldout.md"
+say "speed"
+bench/run_corpus.sh --taus "0.2 0.05 0.02" --repeat 3 --out "$OUT/speed" >"$OUT/tables/speed.md" || true
+say "tau kept"
+bench/tau_kept.sh --out "$OUT/tau_kept" >"$OUT/tables/tau_kept.md" || true
+say "invariance"
+bench/invariance.sh --jobs 1 --threads 2 --out "$OUT/invariance" >"$OUT/tables/invariance.md" || true
+echo "minutes=$(( ($(date +%s) - start) / 60 ))" >>"$OUT/tables/header.env"
+
+/usr/bin/python3 - "$OUT/tables" bench/BENCHMARKS.template.md "$DOC" <<'PY'
+import os, re, sys
+tables, template, doc = sys.argv[1:]
+values = dict(l.rstrip("\n").split("=", 1) for l in open(os.path.join(tables, "header.env")))
+def fill(m):
+    key = m.group(1)
+    if key in values:
+        return values[key]
+    return open(os.path.join(tables, key + ".md")).read().strip()
+open(doc, "w").write(re.sub(r"\{\{(\w+)\}\}", fill, open(template).read()))
+PY
+say "wrote $DOC"
