@@ -4,10 +4,13 @@
 # invariance under rigid motion (bench/invariance.sh), each table placed into
 # bench/BENCHMARKS.template.md with the command that made it.
 #
-#   bench/all.sh [--out DIR] [--doc PATH]
+#   bench/all.sh [--out DIR] [--doc PATH] [--existing]
 #
 #   --out   where this run's outputs go (default out/all; emptied first, except the peers' cache)
 #   --doc   the document written (default docs/BENCHMARKS.md)
+#   --existing  table only the peer runs already in the cache and start none (CoACD on a cold
+#           cache takes hours: run `bench/compare_peers.sh --only peers` first, in parts, or in
+#           shards with bench/compare_peers.py's --shard); the tables say how many runs each has
 #
 # About 2.5 h of CoACD on a cold cache (2 cores); with the peers cached, about 40 min. The peers'
 # runs and every acd run of the comparison are cached by hash (bench/compare_peers.py), so they
@@ -17,11 +20,13 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
 OUT="out/all"
 DOC="docs/BENCHMARKS.md"
+EXISTING=()
 while [[ $# -gt 0 ]]; do
     case "$1" in
         --out) OUT="$2"; shift 2 ;;
         --doc) DOC="$2"; shift 2 ;;
-        -h|--help) sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        --existing) EXISTING=(--existing); shift ;;
+        -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         *) echo "all: unknown option $1" >&2; exit 2 ;;
     esac
 done
@@ -40,9 +45,9 @@ git diff --quiet HEAD -- libacd apps bench || commit="$commit+dirty"
 } >"$OUT/tables/header.env"
 
 say "peers: corpus"
-bench/compare_peers.sh --set corpus --out "$OUT/peers" >"$OUT/tables/peers_corpus.md"
+bench/compare_peers.sh --set corpus --out "$OUT/peers" "${EXISTING[@]}" >"$OUT/tables/peers_corpus.md"
 say "peers: held-out"
-bench/compare_peers.sh --set heldout --out "$OUT/peers" >"$OUT/tables/peers_heldout.md"
+bench/compare_peers.sh --set heldout --out "$OUT/peers" "${EXISTING[@]}" >"$OUT/tables/peers_heldout.md"
 say "speed"
 bench/run_corpus.sh --taus "0.2 0.05 0.02" --repeat 3 --out "$OUT/speed" >"$OUT/tables/speed.md" || true
 say "tau kept"

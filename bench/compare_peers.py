@@ -98,11 +98,14 @@ def timed(cmd, cwd, log_path, timeout):
     return rc, time.monotonic() - start, usage.ru_maxrss / 1024
 
 
-def cached(paths, key, make):
-    """The cache folder for key, made by make(dir) once (a folder without `done` is re-made)."""
+def cached(paths, key, make, existing_only=False):
+    """The cache folder for key, made by make(dir) once (a folder without `done` is re-made);
+    with existing_only, None instead of making it."""
     d = os.path.join(paths.cache, "runs", key)
     if os.path.exists(os.path.join(d, "done")):
         return d
+    if existing_only:
+        return None
     shutil.rmtree(d, ignore_errors=True)
     os.makedirs(d)
     make(d)
@@ -138,7 +141,7 @@ def peer_runs():
     return runs
 
 
-def run_peer(paths, obj, tool, flags):
+def run_peer(paths, obj, tool, flags, existing_only=False):
     binary = os.path.realpath(paths.peer(tool))
 
     def make(d):
@@ -155,10 +158,10 @@ def run_peer(paths, obj, tool, flags):
         json.dump({"command": " ".join([tool, "model.obj"] + (["-o", "hulls.obj"] if tool == "coacd" else []) + flags),
                    "rc": rc, "seconds": sec, "peak_mb": mb}, open(os.path.join(d, "run.json"), "w"))
 
-    return cached(paths, key_of("peer", tool, sha256(binary), sha256(obj), *flags), make)
+    return cached(paths, key_of("peer", tool, sha256(binary), sha256(obj), *flags), make, existing_only)
 
 
-def run_acd(paths, model, tau):
+def run_acd(paths, model, tau, existing_only=False):
     def make(d):
         cmd = [paths.acd, "decompose", model, "-t", str(tau), "-o", d, "-q", "--threads", "2"]
         rc, sec, mb = timed(cmd, d, os.path.join(d, "log.txt"), PEER_TIMEOUT)
@@ -167,7 +170,7 @@ def run_acd(paths, model, tau):
         json.dump({"command": "acd decompose MODEL -t %g --threads 2" % tau, "rc": rc, "seconds": sec, "peak_mb": mb},
                   open(os.path.join(d, "run.json"), "w"))
 
-    return cached(paths, key_of("acd", sha256(paths.acd), sha256(model), "%g" % tau), make)
+    return cached(paths, key_of("acd", sha256(paths.acd), sha256(model), "%g" % tau), make, existing_only)
 
 
 def evaluate(paths, model, hulls):
@@ -200,8 +203,11 @@ def run(args, paths):
     if args.only in ("acd", "all"):
         for name, model, _ in models:
             for tau in ACD_TAUS:
-                say("acd %s tau %g" % (name, tau))
-                d = run_acd(paths, model, tau)
+                if not args.existing:
+                    say("acd %s tau %g" % (name, tau))
+                d = run_acd(paths, model, tau, args.existing)
+                if d is None:
+                    continue
                 dst = os.path.join(paths.out, name, "acd-t%g" % tau)
                 publish(d, dst, ["hulls.obj", "report.json", "log.txt", "run.json"])
                 if os.path.exists(os.path.join(d, "hulls.obj")):
@@ -211,8 +217,11 @@ def run(args, paths):
         shard, shards = args.shard
         jobs = [(label, tool, flags, name, model) for label, tool, flags in peer_runs() for name, model, _ in models]
         for label, tool, flags, name, model in jobs[shard::shards]:
-            say("%s %s" % (label, name))
-            d = run_peer(paths, peer_input(paths, name, model), tool, flags)
+            if not args.existing:
+                say("%s %s" % (label, name))
+            d = run_peer(paths, peer_input(paths, name, model), tool, flags, args.existing)
+            if d is None:
+                continue
             dst = os.path.join(paths.out, name, label)
             publish(d, dst, ["hulls.obj", "log.txt", "run.json"])
             if os.path.exists(os.path.join(d, "hulls.obj")):
@@ -268,8 +277,8 @@ def fmt_ratio(r, kind):
 
 
 def comparison_table(out, models, evaluator):
-    lines = ["| model | peer | peer parts (median, range) | peer IoU | acd / peer at IoU | peer excess | acd / peer at excess |",
-             "|---|---|---:|---:|---:|---:|---:|"]
+    lines = ["| model | peer | runs | peer parts (median, range) | peer IoU | acd / peer at IoU | peer excess | acd / peer at excess |",
+             "|---|---|---:|---:|---:|---:|---:|---:|"]
     summary = {}
     for name in models:
         for group, labels in PEER_GROUPS:
@@ -287,7 +296,8 @@ def comparison_table(out, models, evaluator):
                 cells += ["%.3f" % mid[1], fmt_ratio(med, mid[3]) + spread]
                 summary.setdefault((group, fig), []).append(med)
             prange = " (%d–%d)" % (min(parts), max(parts)) if len(parts) > 1 else ""
-            lines.append("| %s | %s | %g%s | %s | %s | %s | %s |" % (name, group, fidelity.median(parts), prange, *cells))
+            lines.append("| %s | %s | %d | %g%s | %s | %s | %s | %s |" % (name, group, len(parts), fidelity.median(parts), prange,
+                                                                     *cells))
     lines += ["", "| peer | n | acd / peer at IoU (geometric mean) | acd fewer at IoU | at excess | acd fewer at excess |",
               "|---|---:|---:|---:|---:|---:|"]
     allr = {"iou": [], "excess": []}
@@ -351,6 +361,8 @@ def main():
     ap.add_argument("--models", type=lambda s: s.split(","), default=None)
     ap.add_argument("--only", choices=["acd", "peers", "all"], default="all")
     ap.add_argument("--out", default=os.path.join(ROOT, "out/compare_peers"))
+    ap.add_argument("--existing", action="store_true",
+                    help="publish and score only the runs already in the cache, start none")
     ap.add_argument("--shard", type=lambda s: tuple(int(x) for x in s.split("/")), default=(0, 1),
                     help="I/N: run only every N-th peer run from the I-th (several processes share a cold run)")
     args = ap.parse_args()

@@ -8,6 +8,7 @@
 #             ($ACD_WIDE_DATA/compare, never used for tuning); all (default): both
 #   --only    run only acd or only the peers (the tables use whatever is there)
 #   --out     where each run's hulls, log and scores are published (default out/compare_peers)
+#   --existing  table only the runs already cached, start none
 #
 # Environment: ACD_BENCH_CACHE (default ~/.cache/acd-bench): the peers' build and every run and
 # score, keyed by the SHA-256 of input, binary and flags, so a re-run after an acd change runs

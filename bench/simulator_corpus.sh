@@ -12,8 +12,8 @@
 #   --max-hulls           N (default 64)
 #   --models              corpus names, files data/meshes/NAME.off (default: all 12)
 #   --samples             Monte-Carlo points for acd evaluate (default 1000000, as the peers' table)
-#   --peers FILE          the peers' figures (default bench/peers-corpus.tsv); V-HACD's row at
-#                         its defaults (64 hulls) is joined in
+#   --peers DIR           bench/compare_peers.sh's output (default out/compare_peers); V-HACD's
+#                         run at its defaults (64 hulls) is joined in where it is there
 #   --out DIR             where runs write (default out/simulator)
 #   --acd PATH            the CLI (default build/bin/acd)
 #   --table-only          no runs: the table from the outputs already in --out
@@ -33,7 +33,7 @@ K=60
 N=64
 MODELS="elephant armadillo bunny00 camel cow dino homer handle knot eight mushroom ChineseDragon-10kv"
 SAMPLES=1000000
-PEERS="bench/peers-corpus.tsv"
+PEERS="out/compare_peers"
 OUTROOT="out/simulator"
 ACD="build/bin/acd"
 TABLE_ONLY=0
@@ -93,19 +93,15 @@ done
 import json, os, re, sys
 root, tau, K, N, peers = sys.argv[1], float(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4]), sys.argv[5]
 models = sys.argv[6:]
-vhacd = {}
-if os.path.isfile(peers):
-    header = None
-    for line in open(peers):
-        if line.startswith('#') or not line.strip():
-            continue
-        cells = line.rstrip('\n').split('\t')
-        if header is None:
-            header = cells
-            continue
-        row = dict(zip(header, cells))
-        if row.get('tool') == 'V-HACD' and row.get('setting') == 'default':
-            vhacd[row['model']] = ' / '.join(row[k] for k in ('parts', 'iou', 'err_pct', 'excess', 'seconds'))
+vhacd = {}   # V-HACD at its defaults, as bench/compare_peers.sh ran and scored it
+for m in sys.argv[6:]:
+    try:
+        ev = json.load(open(os.path.join(peers, m, 'vhacd-default', 'eval.json')))
+        run = json.load(open(os.path.join(peers, m, 'vhacd-default', 'run.json')))
+        vhacd[m] = '%d / %.3f / %.2f / %.3f / %.1f' % (ev['hulls'], ev['iou'], 100 * ev['misclassified_share'],
+                                                   max(ev['hull_outside_max'], ev['model_to_hulls_max']), run['seconds'])
+    except (OSError, ValueError, KeyError):
+        pass
 def load(path):
     try:
         with open(path) as f:

@@ -252,11 +252,11 @@ int main(int argc, char** argv) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double scale3 = radius * radius * radius;
   std::printf("{\"evaluator\": \"acd-score\", \"hulls\": %zu, \"skipped_hulls\": %d, \"iou\": %.6f, "
-              "\"iou_stderr\": %.6f, \"model_volume\": %.6f, \"union_volume\": %.6f, "
+              "\"iou_stderr\": %.6f, \"model_volume\": %.6f, \"model_volume_exact\": %.6f, \"union_volume\": %.6f, "
               "\"hull_outside_max\": %.6f, \"hull_outside_p99\": %.6f, \"model_to_hulls_max\": %.6f, "
               "\"model_to_hulls_p99\": %.6f, \"volume_samples\": %ld, \"surface_samples\": %ld, \"seconds\": %.3f}\n",
               hulls.size(), skipped, iou, either > 0 ? std::sqrt(iou * (1 - iou) / either) : 0.0,
-              boxVolume * inModel / volumeSamples / scale3, boxVolume * inUnion / volumeSamples / scale3,
+              boxVolume * inModel / volumeSamples / scale3, PMP::volume(model) / scale3, boxVolume * inUnion / volumeSamples / scale3,
               *std::max_element(outside.begin(), outside.end()), percentile(outside, 0.99),
               *std::max_element(uncovered.begin(), uncovered.end()), percentile(uncovered, 0.99), volumeSamples,
               surfaceSamples, seconds);
