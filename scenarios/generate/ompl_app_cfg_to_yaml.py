@@ -26,12 +26,29 @@ def pose(section, which):
         ", ".join("%.10g" % v for v in position), ", ".join("%.10g" % v for v in axis), "%.10g" % theta)
 
 
+def planner_entries(path):
+    """The [planner] keys in file order, repeats kept (configparser keeps only the last)."""
+    entries, inside = [], False
+    for line in open(path):
+        line = line.strip()
+        if line.startswith("["):
+            inside = line.lower() == "[planner]"
+        elif inside and line and line[0] not in "#;":
+            entries.append(line.split("=", 1)[0].strip())
+    return entries
+
+
 def main():
     if len(sys.argv) != 2:
         sys.exit("usage: ompl_app_cfg_to_yaml.py PROBLEM.cfg > scenario.yaml")
-    cfg = configparser.ConfigParser()
-    if not cfg.read(sys.argv[1]):
-        sys.exit("%s: cannot read" % sys.argv[1])
+    # OMPL.app's problem files repeat keys in [planner] (one line per planner instance) and its
+    # own reader takes them: so does this one (strict=False; the entries are listed below).
+    cfg = configparser.ConfigParser(strict=False, interpolation=None)
+    try:
+        if not cfg.read(sys.argv[1]):
+            sys.exit("%s: cannot read" % sys.argv[1])
+    except configparser.Error as e:
+        sys.exit("%s: not an OMPL.app problem file: %s" % (sys.argv[1], str(e).splitlines()[0]))
     if "problem" not in cfg:
         sys.exit("%s: no [problem] section" % sys.argv[1])
     p = cfg["problem"]
@@ -52,6 +69,9 @@ def main():
         b = cfg["benchmark"]
         out.append("# OMPL.app benchmark: planner SCENARIO --race --time-limit %s --runs %s"
                    % (b.get("time_limit", "30"), b.get("run_count", "20")))
+    planners = planner_entries(sys.argv[1])
+    if planners:
+        out.append("# OMPL.app [planner] entries: " + ", ".join(planners))
     print("\n".join(out))
 
 

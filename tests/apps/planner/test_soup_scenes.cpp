@@ -224,3 +224,22 @@ TEST(SoupScenes, AcdThroughTheTwistyPassageWhereUniformFails) {
 }
 
 }  // namespace
+
+TEST(SoupScenes, OmplAppCfgWithRepeatedPlannerKeysConverts) {
+  // OMPL.app's problem files list one [planner] line per planner instance, repeating keys.
+  if (!std::filesystem::exists("/usr/bin/python3")) GTEST_SKIP() << "no /usr/bin/python3";
+  acdtest::TempDir dir("planner_cfg_repeats");
+  std::ofstream(dir / "p.cfg") << "[problem]\nworld=env.dae\nrobot=robot.dae\n"
+                                  "start.x=0\nstart.y=0\nstart.z=0\nstart.axis.x=0\nstart.axis.y=0\nstart.axis.z=1\nstart.theta=0\n"
+                                  "goal.x=1\ngoal.y=2\ngoal.z=3\ngoal.axis.x=0\ngoal.axis.y=0\ngoal.axis.z=1\ngoal.theta=0\n"
+                                  "[benchmark]\ntime_limit=10\nrun_count=5\n"
+                                  "[planner]\naps=\naps=\nrrtconnect=\n";
+  const auto run = acdtest::runTool("/usr/bin/python3",
+                                    acdtest::quote(std::string(PLANNER_SCENARIO_DIR) + "/generate/ompl_app_cfg_to_yaml.py") +
+                                        " " + acdtest::quote(dir / "p.cfg"),
+                                    dir);
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_EQ(run.err.find("Traceback"), std::string::npos) << run.err;
+  EXPECT_NE(run.out.find("[planner] entries: aps, aps, rrtconnect"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("goal: {position: [1, 2, 3]"), std::string::npos) << run.out;
+}
