@@ -4,13 +4,14 @@
 # invariance under rigid motion (bench/invariance.sh), each table placed into
 # bench/BENCHMARKS.template.md with the command that made it.
 #
-#   bench/all.sh [--out DIR] [--doc PATH] [--existing]
+#   bench/all.sh [--out DIR] [--doc PATH] [--existing] [--assemble-only]
 #
 #   --out   where this run's outputs go (default out/all; emptied first, except the peers' cache)
 #   --doc   the document written (default docs/BENCHMARKS.md)
 #   --existing  table only the peer runs already in the cache and start none (CoACD on a cold
 #           cache takes hours: run `bench/compare_peers.sh --only peers` first, in parts, or in
 #           shards with bench/compare_peers.py's --shard); the tables say how many runs each has
+#   --assemble-only  no runs: write the document again from OUT/tables (after a template edit)
 #
 # About 2.5 h of CoACD on a cold cache (2 cores); with the peers cached, about 40 min. The peers'
 # runs and every acd run of the comparison are cached by hash (bench/compare_peers.py), so they
@@ -21,18 +22,21 @@ cd "$ROOT"
 OUT="out/all"
 DOC="docs/BENCHMARKS.md"
 EXISTING=()
+ASSEMBLE_ONLY=0
 while [[ $# -gt 0 ]]; do
     case "$1" in
         --out) OUT="$2"; shift 2 ;;
         --doc) DOC="$2"; shift 2 ;;
         --existing) EXISTING=(--existing); shift ;;
-        -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        --assemble-only) ASSEMBLE_ONLY=1; shift ;;
+        -h|--help) sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         *) echo "all: unknown option $1" >&2; exit 2 ;;
     esac
 done
+say() { echo "[all $(date +%T)] $*" >&2; }
+if (( ! ASSEMBLE_ONLY )); then
 rm -rf "$OUT"; mkdir -p "$OUT/tables"
 start=$(date +%s)
-say() { echo "[all $(date +%T)] $*" >&2; }
 
 cmake --build build --target acd_cli acd_score -j"$(nproc)" >/dev/null
 commit="$(git rev-parse --short HEAD)"
@@ -42,6 +46,11 @@ git diff --quiet HEAD -- libacd apps bench || commit="$commit+dirty"
     echo "date=$(date -u '+%Y-%m-%d %H:%M UTC')"
     echo "acd_sha256=$(sha256sum build/bin/acd | cut -c1-16)"
     echo "machine=$(nproc) cores ($(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -n 1)), $(free -g | awk '/Mem:/ {print $2}') GiB, $(. /etc/os-release; echo "$PRETTY_NAME"), $(g++ --version | head -n 1)"
+    if (( ${#EXISTING[@]} )); then
+        echo "peers_mode=This run tabled only the peer runs already in the cache (\`--existing\`): the \`runs\` column says how many of CoACD's three seeds each setting had; the median and spread are over those."
+    else
+        echo "peers_mode=Every peer run of the list above is in this run (from the cache where input, binary and flags were the same)."
+    fi
 } >"$OUT/tables/header.env"
 
 say "peers: corpus"
@@ -55,6 +64,7 @@ bench/tau_kept.sh --out "$OUT/tau_kept" >"$OUT/tables/tau_kept.md" || true
 say "invariance"
 bench/invariance.sh --jobs 1 --threads 2 --out "$OUT/invariance" >"$OUT/tables/invariance.md" || true
 echo "minutes=$(( ($(date +%s) - start) / 60 ))" >>"$OUT/tables/header.env"
+fi
 
 /usr/bin/python3 - "$OUT/tables" bench/BENCHMARKS.template.md "$DOC" <<'PY'
 import os, re, sys
