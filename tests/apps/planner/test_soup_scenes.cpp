@@ -20,6 +20,14 @@
 
 namespace {
 
+/// scenarios/generate/ompl_app_cfg_to_yaml.py on DIR/NAME, run in DIR.
+acdtest::ToolRun convertCfg(const acdtest::TempDir& dir, const std::string& name) {
+  return acdtest::runTool("/usr/bin/python3",
+                          acdtest::quote(std::string(PLANNER_SCENARIO_DIR) + "/generate/ompl_app_cfg_to_yaml.py") + " " +
+                              acdtest::quote(dir / name),
+                          dir);
+}
+
 using acd::Vec3;
 
 const std::string kGenerated = std::string(PLANNER_SCENARIO_DIR) + "/generated";
@@ -182,10 +190,7 @@ TEST(SoupScenes, OmplAppCfgConvertsToTheSameProblem) {
                                        "volume.min.x=0\nvolume.min.y=0\nvolume.min.z=0\n"
                                        "volume.max.x=7\nvolume.max.y=3\nvolume.max.z=3\n"
                                        "[benchmark]\ntime_limit=30.0\nrun_count=10\n";
-  const auto run = acdtest::runTool("/usr/bin/python3",
-                                    acdtest::quote(std::string(PLANNER_SCENARIO_DIR) + "/generate/ompl_app_cfg_to_yaml.py") +
-                                        " " + acdtest::quote(dir / "twisty.cfg"),
-                                    dir);
+  const auto run = convertCfg(dir, "twisty.cfg");
   ASSERT_EQ(run.code, 0) << run.err;
   EXPECT_NE(run.out.find("--race --time-limit 30.0 --runs 10"), std::string::npos) << run.out;
   const planner::Scenario converted = planner::parseScenario(run.out, "converted.yaml", dir.path().string());
@@ -234,10 +239,7 @@ TEST(SoupScenes, OmplAppCfgWithRepeatedPlannerKeysConverts) {
                                   "goal.x=1\ngoal.y=2\ngoal.z=3\ngoal.axis.x=0\ngoal.axis.y=0\ngoal.axis.z=1\ngoal.theta=0\n"
                                   "[benchmark]\ntime_limit=10\nrun_count=5\n"
                                   "[planner]\naps=\naps=\nrrtconnect=\n";
-  const auto run = acdtest::runTool("/usr/bin/python3",
-                                    acdtest::quote(std::string(PLANNER_SCENARIO_DIR) + "/generate/ompl_app_cfg_to_yaml.py") +
-                                        " " + acdtest::quote(dir / "p.cfg"),
-                                    dir);
+  const auto run = convertCfg(dir, "p.cfg");
   ASSERT_EQ(run.code, 0) << run.err;
   EXPECT_EQ(run.err.find("Traceback"), std::string::npos) << run.err;
   EXPECT_NE(run.out.find("[planner] entries: aps, aps, rrtconnect"), std::string::npos) << run.out;
