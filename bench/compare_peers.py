@@ -113,9 +113,25 @@ def cached(paths, key, make, existing_only=False):
     return d
 
 
+# What the peers' build needs from Debian (CoACD's CMake would download them otherwise).
+PEER_PACKAGES = ["zlib1g-dev", "libboost-dev", "libboost-iostreams-dev", "libopenvdb-dev", "libtbb-dev", "libspdlog-dev"]
+
+
+def ensure_peer_packages():
+    missing = [p for p in PEER_PACKAGES if subprocess.run(["dpkg", "-s", p], capture_output=True).returncode != 0]
+    if not missing:
+        return
+    sudo = [] if os.geteuid() == 0 else ["sudo"]
+    say("installing the peers' build packages: " + " ".join(missing))
+    env = dict(os.environ, DEBIAN_FRONTEND="noninteractive")
+    subprocess.run(sudo + ["apt-get", "update", "-qq"], check=True, env=env)
+    subprocess.run(sudo + ["apt-get", "install", "-y", "-qq", "--no-install-recommends"] + missing, check=True, env=env)
+
+
 def ensure_peers(paths):
     if all(os.access(paths.peer(t), os.X_OK) for t in ("coacd", "vhacd")):
         return
+    ensure_peer_packages()
     script = os.path.join(paths.peers_src, "build.sh")
     if not os.path.exists(script):
         sys.exit("compare_peers: the peers are not built in %s and no source at %s (set ACD_PEERS_SRC to the folder "
