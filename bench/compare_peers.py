@@ -13,6 +13,7 @@ own files (hulls, log) and both evaluators' scores are copied beside each other 
 (default out/compare_peers)/MODEL/TOOL-SETTING/.
 """
 import argparse
+import functools
 import glob
 import hashlib
 import json
@@ -46,6 +47,10 @@ def sha256(path):
         for block in iter(lambda: f.read(1 << 20), b""):
             h.update(block)
     return h.hexdigest()
+
+
+# Binaries and models do not change during a run: hash each once (hull files are hashed each time).
+fixed_file_hash = functools.lru_cache(maxsize=None)(sha256)
 
 
 def key_of(*parts):
@@ -140,10 +145,9 @@ def ensure_peers(paths):
     subprocess.run([script, os.path.join(paths.cache, "peers-build")], check=True)
 
 
-def peer_input(paths, name, model):
+def peer_input(paths, model):
     """The model as an OBJ written by acd's own writer (acd convert), cached by the model's hash."""
-    src_hash = sha256(model)
-    d = cached(paths, key_of("input", src_hash, sha256(paths.acd)),
+    d = cached(paths, key_of("input", fixed_file_hash(model), fixed_file_hash(paths.acd)),
                lambda d: subprocess.run([paths.acd, "convert", model, os.path.join(d, "model.obj")], check=True))
     return os.path.join(d, "model.obj")
 
@@ -174,7 +178,7 @@ def run_peer(paths, obj, tool, flags, existing_only=False):
         json.dump({"command": " ".join([tool, "model.obj"] + (["-o", "hulls.obj"] if tool == "coacd" else []) + flags),
                    "rc": rc, "seconds": sec, "peak_mb": mb}, open(os.path.join(d, "run.json"), "w"))
 
-    return cached(paths, key_of("peer", tool, sha256(binary), sha256(obj), *flags), make, existing_only)
+    return cached(paths, key_of("peer", tool, fixed_file_hash(binary), sha256(obj), *flags), make, existing_only)
 
 
 def run_acd(paths, model, tau, existing_only=False):
@@ -186,7 +190,7 @@ def run_acd(paths, model, tau, existing_only=False):
         json.dump({"command": "acd decompose MODEL -t %g --threads 2" % tau, "rc": rc, "seconds": sec, "peak_mb": mb},
                   open(os.path.join(d, "run.json"), "w"))
 
-    return cached(paths, key_of("acd", sha256(paths.acd), sha256(model), "%g" % tau), make, existing_only)
+    return cached(paths, key_of("acd", fixed_file_hash(paths.acd), fixed_file_hash(model), "%g" % tau), make, existing_only)
 
 
 def evaluate(paths, model, hulls):
@@ -199,7 +203,8 @@ def evaluate(paths, model, hulls):
             open(os.path.join(d, name), "w").write(p.stdout if p.returncode == 0 else
                                                    json.dumps({"error": p.stderr.strip()[-300:]}))
 
-    return cached(paths, key_of("eval", sha256(model), sha256(hulls), sha256(paths.acd), sha256(paths.score),
+    return cached(paths, key_of("eval", fixed_file_hash(model), sha256(hulls), fixed_file_hash(paths.acd),
+                                fixed_file_hash(paths.score),
                                 str(SAMPLES)), make)
 
 
@@ -235,7 +240,7 @@ def run(args, paths):
         for label, tool, flags, name, model in jobs[shard::shards]:
             if not args.existing:
                 say("%s %s" % (label, name))
-            d = run_peer(paths, peer_input(paths, name, model), tool, flags, args.existing)
+            d = run_peer(paths, peer_input(paths, model), tool, flags, args.existing)
             if d is None:
                 continue
             dst = os.path.join(paths.out, name, label)
