@@ -84,6 +84,7 @@ py::tuple decompose(const Vertices& vertices, const Faces& faces, const SolidOpt
     if (parameters.ok() && d.status.ok() && post.status.ok()) {
       acd::ReportInput input = acd::describeInput(model, mesh);
       input.mesh = sceneMesh;
+      input.inputOutside = acd::inputOutsideHulls(mesh, d).max;
       report = acd::reportJson(input, d, post);
     }
   }

@@ -1,5 +1,5 @@
 // Shells (libacd/src/prepare/shells.cpp, acd/algo/shells.hpp): nesting depth finds the cavities,
-// and preparing a model drops them while overlapping shells stay apart.
+// and preparing a model drops them and unites overlapping shells (or keeps them apart when told).
 #include <acd/algo/shells.hpp>
 #include <acd/decompose.hpp>
 #include <acd/robust.hpp>
@@ -46,8 +46,15 @@ TEST(Shells, PrepareDropsCavitiesAndKeepsOverlapsApart) {
   }
   const PreparedModel loose = prepareModel(caseMesh("solid_in_cavity"), atTau(0.1));
   EXPECT_EQ(loose.cavitiesDropped, 1);
-  EXPECT_EQ(loose.shells.size(), 2u);
-  const PreparedModel overlap = prepareModel(caseMesh("shells_overlapping"), atTau(0.1));
+  // With the cavity gone the solid inside it lies in the outer shell's solid: the union absorbs it.
+  EXPECT_EQ(loose.shells.size(), 1u);
+  // Overlapping shells become their union (acd/algo/shell_union.hpp), or stay apart when told.
+  const PreparedModel united = prepareModel(caseMesh("shells_overlapping"), atTau(0.1));
+  EXPECT_EQ(united.overlappingShells, 0);
+  EXPECT_EQ(united.shells.size(), 1u);
+  DecomposeOptions apart = atTau(0.1);
+  apart.uniteShells = false;
+  const PreparedModel overlap = prepareModel(caseMesh("shells_overlapping"), apart);
   EXPECT_EQ(overlap.overlappingShells, 2);
   EXPECT_EQ(overlap.shells.size(), 2u);
 }

@@ -9,6 +9,7 @@
 #include "surface.hpp"
 
 #include <acd/diagnosis.hpp>
+#include <acd/evaluate.hpp>
 #include <acd/io.hpp>
 #include <acd/report.hpp>
 #include <acd/robust.hpp>
@@ -40,7 +41,7 @@ int furthestHull(const acd::Decomposition& d) {
   return worst;
 }
 
-void printSummary(const DecomposeArgs& a, const acd::Decomposition& d) {
+void printSummary(const DecomposeArgs& a, const acd::Decomposition& d, double uncovered) {
   const auto& cs = d.components;
   double volume = 0, hullVolume = 0, maxConcavity = 0;
   for (const auto& c : cs) volume += c.volume, hullVolume += c.hullVolume, maxConcavity = std::max(maxConcavity, c.concavity);
@@ -64,6 +65,8 @@ void printSummary(const DecomposeArgs& a, const acd::Decomposition& d) {
   const double maxExcess = worst < 0 ? 0.0 : cs[worst].hullExcess;
   std::printf("  hull excess    %.4f   (how far a hull stands off the model, at most: %s)\n", maxExcess,
               maxExcess <= d.options.tau ? "within tau, as promised" : "BEYOND tau, the promise is not kept");
+  std::printf("  input outside  %.4f   (how far the input reaches outside every hull, at most: %s)\n", uncovered,
+              uncovered == 0.0 ? "covered" : uncovered <= d.options.tau ? "within tau" : "BEYOND tau, the promise is not kept");
   std::printf("  max concavity  %.4f%s\n", maxConcavity,
               d.options.mergeScope == acd::MergeScope::Model && maxConcavity > d.options.tau
                   ? "   (not promised: a merged component's pockets lie in its neighbours)" : "");
@@ -132,6 +135,11 @@ int decomposeMesh(DecomposeArgs& a, const acd::TriMesh& mesh) {
   if (!s.ok()) return (void)fail("output", s), kOutputFailed;
   json outputs = json::object();  // --format: the files written
   if (const int code = writeSimulatorOutputs(a.sim, d, mesh, a.model, a.out, outputs); code != kOk) return code;
+  // The other half of the promise: every point of the input as read inside a hull, or within tau
+  // of one (a repair that cut off a fold, a shell dropped by mistake would show here).
+  const acd::Coverage cover = acd::inputOutsideHulls(mesh, d);
+  const double uncovered = cover.max;
+  input.inputOutside = uncovered;
   std::ofstream report(fs::path(a.out) / "report.json");
   const bool anyUnresolved = std::any_of(d.components.begin(), d.components.end(), [](const auto& c) { return c.unresolved; });
   // The library's report with the post-passes' sections, plus the simulator files written.
@@ -139,7 +147,7 @@ int decomposeMesh(DecomposeArgs& a, const acd::TriMesh& mesh) {
   j.update(outputs);
   report << j.dump(2) << "\n";
   if (!report) return (void)fail("output", acd::Status::error(acd::StatusCode::FileUnreadable, "cannot write report.json")), kOutputFailed;
-  if (!a.quiet) printSummary(a, d);
+  if (!a.quiet) printSummary(a, d, uncovered);
   if (anyUnresolved) {
     std::fprintf(stderr, "acd: warning: some components still exceed tau (marked unresolved in report.json)%s\n",
                  selfIntersections > 0 ? "; the input self-intersects" : "");
@@ -149,6 +157,11 @@ int decomposeMesh(DecomposeArgs& a, const acd::TriMesh& mesh) {
   if (const int worst = furthestHull(d); worst >= 0 && d.components[worst].hullExcess > d.options.tau && a.sim.maxHulls == 0) {
     std::fprintf(stderr, "acd: %s: tau not kept: the hull of component %d stands %.4g off the model (%.2f tau)\n",
                  a.model.c_str(), worst, d.components[worst].hullExcess, d.components[worst].hullExcess / d.options.tau);
+    return kTauNotKept;
+  }
+  if (uncovered > d.options.tau && a.sim.maxHulls == 0) {
+    std::fprintf(stderr, "acd: %s: tau not kept: the input reaches %.4g outside every hull (%.2f tau), at (%.6g, %.6g, %.6g)\n",
+                 a.model.c_str(), uncovered, uncovered / d.options.tau, cover.worst.x(), cover.worst.y(), cover.worst.z());
     return kTauNotKept;
   }
   return kOk;
@@ -203,6 +216,7 @@ int runSolidDecompose(DecomposeArgs& a) {
   a.options.mergeScope = a.mergeScope == "component" ? acd::MergeScope::Component : acd::MergeScope::Model;
   a.options.fillHoles = !a.noFillHoles;
   a.options.wrap = !a.noWrap && !a.noRepair;
+  a.options.uniteShells = !a.noUnion;
   a.options.repair = !a.noRepair;
   if (a.perMesh) return runPerMesh(a);
   acd::ReadResult r = readModel(a.model);
@@ -244,6 +258,9 @@ CLI::App* addDecomposeCommand(CLI::App& app, DecomposeArgs& a) {
   dec->add_flag("--no-wrap", a.noWrap,
                 "Refuse a mesh that the repairs cannot make a clean solid instead of decomposing its watertight wrap; "
                 "self-intersecting pieces left above tau stay unresolved (exit 4)");
+  dec->add_flag("--no-union", a.noUnion,
+                "Decompose each shell on its own instead of uniting the shells that pass through, touch or lie in "
+                "another (an assembly exported from CAD) into the solid they bound together");
   dec->add_flag("--no-repair", a.noRepair,
                 "Only the strict checks and safe repairs of earlier versions: no vertex merging, double-sided face, "
                 "non-manifold, degenerate-face repairs, no cavity handling and no wrap");

@@ -67,4 +67,8 @@ struct PreparedSolid {
 /// closed by hole filling, refused, or kept open, as `options` says.
 PreparedSolid prepareSolid(const TriMesh& mesh, const PrepareOptions& options = {});
 
+/// The first face whose area is too small for a usable normal (at most 1e-14 of the squared
+/// bounding-box diagonal), which prepareSolid refuses; -1 when there is none.
+int firstZeroAreaFace(const TriMesh& mesh);
+
 }  // namespace acd

@@ -1,6 +1,7 @@
 // Measures any decomposition (a set of convex hulls) against the model it approximates.
 #pragma once
 
+#include <acd/decompose.hpp>
 #include <acd/mesh.hpp>
 #include <acd/status.hpp>
 
@@ -44,6 +45,21 @@ struct Evaluation {
 
 Evaluation evaluate(const TriMesh& model, const std::vector<TriMesh>& hulls,
                     const EvaluateOptions& options = {});
+
+/// How far a surface reaches outside a set of hulls: the largest distance from a point of
+/// `surface` (each vertex, and `samples` points spread over its faces by area from `seed`) to the
+/// union of the hulls, 0 when every one is inside some hull; in the surface's own units. Any
+/// triangles will do (a soup, an open sheet): nothing is asked of the surface but faces.
+struct Coverage {
+  double max = 0.0;
+  Vec3 worst = Vec3::Zero();  // the point that reaches furthest out
+};
+Coverage surfaceOutsideHulls(const TriMesh& surface, const std::vector<TriMesh>& hulls,
+                             std::int64_t samples = 20000, std::uint64_t seed = 1);
+
+/// The input as read against a decomposition's hulls: surfaceOutsideHulls with `max` in the
+/// decomposition's normalised units (tau's). The second half of the promise: at most tau.
+Coverage inputOutsideHulls(const TriMesh& input, const Decomposition& d);
 
 /// evaluate() on a mesh as read (what `acd evaluate` does): the model is first checked and
 /// repaired by prepareSolid (open meshes refused); a model it refuses comes back in `status`.

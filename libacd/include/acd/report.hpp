@@ -22,6 +22,7 @@ struct ReportInput {
   std::string mesh;           // the scene mesh decomposed (acd decompose --per-mesh); empty: the whole file
   MeshDiagnosis diagnosis;    // of the mesh as read, before repairs
   int selfIntersections = 0;  // face pairs (countSelfIntersections); explains unresolved components
+  double inputOutside = -1.0; // inputOutsideHulls (acd/evaluate.hpp), normalised; < 0: not measured
 };
 
 /// Diagnosis and self-intersection count of a mesh as read. Call it once the decomposition has

@@ -29,14 +29,15 @@ struct PreparedModel {
 };
 
 /// Repairs the mesh, closes holes (options.fillHoles), classifies shells, drops cavities (a shell
-/// at odd nesting depth: the hulls of the shell around it cover it) and wraps the pieces that
+/// at odd nesting depth: the hulls of the shell around it cover it), unites the shells that pass
+/// through, touch or lie in another (options.uniteShells; acd/algo/shell_union.hpp) and wraps the pieces that
 /// still are not clean solids (options.wrap; otherwise refuses them as prepareSolid does). Wrap
 /// parameters follow options.tau (wrapParametersFor). With `buildWrap` off only the reason is
 /// given (acd info). Never throws.
 PreparedModel prepareModel(const TriMesh& mesh, const DecomposeOptions& options, bool buildWrap = true);
 
-/// prepareModel, then each shell decomposed on its own at tau in the model's normalised units
-/// (so shells that touch or overlap never get glued together); then, when options.wrap is on,
+/// prepareModel (which unites the shells that meet, unless options.uniteShells is off), then each
+/// remaining shell decomposed on its own at tau in the model's normalised units; then, when options.wrap is on,
 /// every shell left with a component above tau (a surface passing through itself, typically) is
 /// replaced by its wrap and decomposed again. Volumes and concavities are in the model's units;
 /// Component::source is the shell.

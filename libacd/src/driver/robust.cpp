@@ -1,5 +1,6 @@
 // Repairs, shells, hole filling and the wrap around the solid decomposition (acd/robust.hpp).
 #include <acd/algo/canonical_frame.hpp>
+#include <acd/algo/shell_union.hpp>
 #include <acd/algo/shells.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/normalize.hpp>
@@ -78,6 +79,45 @@ void addWrapToReport(WrapReport& report, const WrapShells& w, int pieces, const 
   report.seconds += w.seconds;
 }
 
+/// Drops the shells at odd nesting depth (cavities, or solids inside another solid).
+void dropCavities(PreparedModel& out) {
+  const ShellNesting nesting = classifyShells(out.shells);
+  if (nesting.cavities == 0) return;
+  std::vector<TriMesh> kept;
+  std::vector<char> keptWrap;
+  for (std::size_t i = 0; i < out.shells.size(); ++i)
+    if (nesting.depth[i] % 2 == 0) kept.push_back(std::move(out.shells[i])), keptWrap.push_back(out.isWrap[i]);
+  out.shells = std::move(kept);
+  out.isWrap = std::move(keptWrap);
+  out.cavitiesDropped += nesting.cavities;
+  out.repairs.push_back("dropped " + plural(nesting.cavities, "inner shell", "inner shells") +
+                        " bounding a cavity (inside another shell): the hulls of the shell around cover it");
+}
+
+/// Unites the shells (not the wrap's) that pass through, touch or nest in another
+/// (acd/algo/shell_union.hpp); what the union could not take is decomposed shell by shell.
+void uniteShells(PreparedModel& out, bool invariant) {
+  std::vector<TriMesh> exact, wrapped;
+  for (std::size_t i = 0; i < out.shells.size(); ++i)
+    (out.isWrap[i] ? wrapped : exact).push_back(std::move(out.shells[i]));
+  ShellUnion u = uniteMeetingShells(exact, invariant);
+  out.shells = std::move(u.shells);
+  out.isWrap.assign(out.shells.size(), 0);
+  for (TriMesh& w : wrapped) {
+    out.shells.push_back(std::move(w));
+    out.isWrap.push_back(1);
+  }
+  if (u.united > 0) {
+    out.repairs.push_back("united " + plural(u.united, "shell", "shells") +
+                          " that pass through, touch or lie in another into " + plural(u.solids, "solid", "solids") +
+                          " (their union, exact; " + number(u.seconds) + " s)");
+    dropCavities(out);  // a shell may lie inside a union and in no one shell
+  }
+  if (u.leftAlone > 0)
+    out.repairs.push_back(plural(u.leftAlone, "shell meets", "shells meet") + " another but could not be united (" +
+                          u.firstFailure + "): each is decomposed on its own");
+}
+
 }  // namespace
 
 PreparedModel prepareModel(const TriMesh& mesh, const DecomposeOptions& options, bool buildWrap) {
@@ -148,23 +188,11 @@ PreparedModel prepareModel(const TriMesh& mesh, const DecomposeOptions& options,
     out.repairs.push_back(out.wrapReason + ": decompose wraps them");
   }
 
-  // Shells: cavities go (the hulls of the shell around them cover them); overlapping ones stay apart.
-  const ShellNesting nesting = classifyShells(out.shells);
-  if (nesting.cavities > 0) {
-    std::vector<TriMesh> kept;
-    std::vector<char> keptWrap;
-    for (std::size_t i = 0; i < out.shells.size(); ++i)
-      if (nesting.depth[i] % 2 == 0) kept.push_back(std::move(out.shells[i])), keptWrap.push_back(out.isWrap[i]);
-    out.shells = std::move(kept);
-    out.isWrap = std::move(keptWrap);
-    out.cavitiesDropped = nesting.cavities;
-    out.repairs.push_back("dropped " + plural(nesting.cavities, "inner shell", "inner shells") +
-                          " bounding a cavity (inside another shell): the hulls of the shell around cover it");
-  }
-  out.overlappingShells = nesting.overlapping;
-  if (nesting.overlapping > 0)
-    out.repairs.push_back(plural(nesting.overlapping, "shell passes", "shells pass") +
-                          " through or touch another: each shell is decomposed on its own");
+  // Shells: cavities go (the hulls of the shell around them cover them); shells that meet become
+  // the solid they bound together, so that one hull may span several (an assembly from CAD).
+  dropCavities(out);
+  if (options.uniteShells) uniteShells(out, options.invariant);
+  out.overlappingShells = classifyShells(out.shells).overlapping;
   out.status = out.shells.empty() ? Status::error(StatusCode::EmptyMesh, "no solid left after the repairs")
                                   : Status::success();
   out.seconds = secondsSince(start);

@@ -417,6 +417,20 @@ void sampleVolumes(const Box3& box, const HullSet& index, const InsideTest& loca
 
 }
 
+/// Distance from a point outside them to the nearest of the hulls; `order` is scratch space.
+double distanceToHulls(const std::vector<Hull>& hs, const Vec3& p, std::vector<std::pair<double, int>>& order) {
+  // Nearest hulls first by box distance, a lower bound of the hull distance.
+  order.resize(hs.size());
+  for (std::size_t h = 0; h < hs.size(); ++h) order[h] = {boxDistance(hs[h].lo, hs[h].hi, p), static_cast<int>(h)};
+  std::sort(order.begin(), order.end());
+  double best = std::numeric_limits<double>::infinity();
+  for (const auto& [bound, h] : order) {
+    if (bound >= best) break;
+    best = std::min(best, distanceToHullBoundary(hs[h], p));
+  }
+  return best;
+}
+
 /// Surface distances: from sample points on the hulls to the model (outside it only), and from
 /// sample points on the model to the union of the hulls.
 void sampleSurfaceDistances(const TriMesh& m, const std::vector<Hull>& hs, const HullSet& index,
@@ -468,14 +482,7 @@ void sampleSurfaceDistances(const TriMesh& m, const std::vector<Hull>& hs, const
       for (std::int64_t i = static_cast<std::int64_t>(b) * kBlock; i < end; ++i) {
         const Vec3 p = modelSampler.sample(modelRng, static_cast<std::uint64_t>(i));
         if (index.inside(p)) continue;
-        // Nearest hulls first by box distance, a lower bound of the hull distance.
-        for (std::size_t h = 0; h < hs.size(); ++h) order[h] = {boxDistance(hs[h].lo, hs[h].hi, p), static_cast<int>(h)};
-        std::sort(order.begin(), order.end());
-        double best = std::numeric_limits<double>::infinity();
-        for (const auto& [bound, h] : order) {
-          if (bound >= best) break;
-          best = std::min(best, distanceToHullBoundary(hs[h], p));
-        }
+        const double best = distanceToHulls(hs, p, order);
         acc.sum += best;
         acc.max = std::max(acc.max, best);
       }
@@ -543,6 +550,44 @@ Evaluation evaluate(const TriMesh& model, const std::vector<TriMesh>& hulls, con
                         " hulls with fewer than 4 non-coplanar vertices";
   ev.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return ev;
+}
+
+Coverage surfaceOutsideHulls(const TriMesh& surface, const std::vector<TriMesh>& hulls, std::int64_t samples,
+                             std::uint64_t seed) {
+  Coverage out;
+  if (surface.faces.empty() || hulls.empty()) return out;
+  const Normalization norm = minimumSphereNormalization(surface);
+  int skipped = 0;
+  const std::vector<Hull> hs = normalisedHulls(hulls, norm, skipped);
+  if (hs.empty()) return out;
+  const TriMesh m = applyNormalization(surface, norm);
+  std::vector<std::array<Vec3, 3>> triangles;
+  for (const Face& f : m.faces) triangles.push_back({m.vertices[f[0]], m.vertices[f[1]], m.vertices[f[2]]});
+  const SurfaceSampler sampler(std::move(triangles));
+  Box3 box = boundingBox(m);
+  for (const Hull& h : hs) box.lo = box.lo.cwiseMin(h.lo), box.hi = box.hi.cwiseMax(h.hi);
+  tbb::task_arena arena = workerArena(1);
+  const HullSet index = hullUnion(hs, box, arena);
+  const Stream rng(seed, 4);
+  std::vector<std::pair<double, int>> order;
+  auto visit = [&](const Vec3& p) {
+    if (index.inside(p)) return;
+    const double d = distanceToHulls(hs, p, order);
+    if (d > out.max) out.max = d, out.worst = norm.undo(p);
+  };
+  for (const Vec3& v : m.vertices) visit(v);
+  if (sampler.area() > 0.0)
+    for (std::int64_t i = 0; i < samples; ++i) visit(sampler.sample(rng, static_cast<std::uint64_t>(i)));
+  out.max /= norm.scale;
+  return out;
+}
+
+Coverage inputOutsideHulls(const TriMesh& input, const Decomposition& d) {
+  std::vector<TriMesh> hulls;
+  for (const Component& c : d.components) hulls.push_back(c.hull);
+  Coverage c = surfaceOutsideHulls(input, hulls);
+  c.max *= d.normalization.scale;
+  return c;
 }
 
 Evaluation evaluateModel(const TriMesh& model, const std::vector<TriMesh>& hulls, const EvaluateOptions& options) {

@@ -127,6 +127,7 @@ json solidReport(const ReportInput& in, const Decomposition& d) {
                  {"bridges_measured", d.stats.bridges},
                  {"bridge_refinements", d.stats.refinements},
                  {"merges", d.stats.merges}};
+  if (in.inputOutside >= 0.0) j["totals"]["input_outside_hulls"] = in.inputOutside;
   j["timing"] = {{"prepare_seconds", d.times.prepare},
                  {"repair_seconds", d.repairSeconds},
                  {"wrap_seconds", d.wrap.seconds},

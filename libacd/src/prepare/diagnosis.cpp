@@ -600,4 +600,11 @@ PreparedSolid prepareSolid(const TriMesh& mesh, const PrepareOptions& options) {
   return out;
 }
 
+int firstZeroAreaFace(const TriMesh& mesh) {
+  const double squaredDiag = squaredDiagonal(boundingBox(mesh));
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+    if (hasZeroArea(mesh.vertices, mesh.faces[f], squaredDiag)) return static_cast<int>(f);
+  return -1;
+}
+
 }  // namespace acd

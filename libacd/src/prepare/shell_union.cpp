@@ -1,0 +1,209 @@
+// The union of meeting shells by corefinement in exact arithmetic (acd/algo/shell_union.hpp). Its
+// own translation unit: CGAL's corefinement with an exact kernel is slow to compile.
+#include <acd/algo/shell_union.hpp>
+
+#include <acd/algo/canonical_frame.hpp>
+#include <acd/algo/surface_mesh_copy.hpp>
+#include <acd/algo/union_find.hpp>
+#include <acd/diagnosis.hpp>
+#include <acd/repair.hpp>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/corefinement.h>
+#include <CGAL/Polygon_mesh_processing/intersection.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <numeric>
+#include <optional>
+
+namespace acd {
+namespace {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
+using ExactMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+
+TriMesh toTriMesh(const ExactMesh& in) {
+  TriMesh out;
+  std::map<ExactMesh::Vertex_index, int> index;
+  for (auto v : in.vertices()) {
+    // The nearest doubles to the exact coordinates: a lazy number's own to_double may give its
+    // interval's approximation, which depends on what was evaluated before (and so on threads).
+    const auto& p = CGAL::exact(in.point(v));
+    index[v] = static_cast<int>(out.vertices.size());
+    out.vertices.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+  for (auto f : in.faces()) {
+    const auto h = in.halfedge(f);
+    out.faces.push_back({index[in.source(h)], index[in.target(h)], index[in.target(in.next(h))]});
+  }
+  return out;
+}
+
+bool boxesMeet(const Box3& a, const Box3& b) {
+  return (a.lo.array() <= b.hi.array()).all() && (b.lo.array() <= a.hi.array()).all();
+}
+
+}  // namespace
+
+ShellUnion uniteMeetingShells(const std::vector<TriMesh>& shells, bool invariant) {
+  const auto start = std::chrono::steady_clock::now();
+  ShellUnion out;
+  const int n = static_cast<int>(shells.size());
+  auto finish = [&] {
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return out;
+  };
+  if (n < 2) {
+    out.shells = shells;
+    return finish();
+  }
+
+  // Everything below sees the shells as `work`: with `invariant`, each shell's vertices and faces
+  // in canonical order and the shells too, so that the union does not follow the order of the
+  // input. The coordinates stay the input's: rounded to the canonical frame's grid, shells that
+  // touch in a plane would cross one another by a grid step and the union would be full of slivers.
+  std::vector<TriMesh> work(n);
+  std::vector<TriMesh> ordered(invariant ? n : 0);  // canonical meshes, for the order of shells
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  if (invariant) {
+    const Normalization frame = canonicalFrame(shells);
+    for (int i = 0; i < n; ++i) {
+      CanonicalMesh c = canonicalMesh(shells[i], frame);
+      work[i].faces = c.mesh.faces;
+      for (int source : c.source) work[i].vertices.push_back(shells[i].vertices[source]);
+      ordered[i] = std::move(c.mesh);
+    }
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return canonicalLess(ordered[a], ordered[b]); });
+  } else {
+    work = shells;
+  }
+  std::vector<Box3> boxes(n);
+  for (int i = 0; i < n; ++i) boxes[i] = boundingBox(work[i]);
+
+  std::vector<std::optional<ExactMesh>> exact(n);
+  std::vector<char> usable(n, 1);  // bounds a volume and does not cross itself
+  auto exactOf = [&](int i) -> ExactMesh* {
+    if (!usable[i]) return nullptr;
+    if (!exact[i]) {
+      exact[i].emplace();
+      if (copyToSurfaceMesh(work[i], *exact[i]) >= 0 || PMP::does_self_intersect(*exact[i]) ||
+          !PMP::does_bound_a_volume(*exact[i])) {
+        usable[i] = 0;
+        if (out.firstFailure.empty()) out.firstFailure = "a shell passes through itself or does not bound a volume";
+        return nullptr;
+      }
+    }
+    return &*exact[i];
+  };
+
+  // Shells meet when their surfaces intersect or touch, or one lies inside the other.
+  UnionFind groups(n);
+  std::vector<char> meets(n, 0);
+  for (int a = 0; a < n; ++a)
+    for (int b = a + 1; b < n; ++b) {
+      if (!boxesMeet(boxes[a], boxes[b])) continue;
+      ExactMesh* ea = exactOf(a);
+      ExactMesh* eb = exactOf(b);
+      if (!ea || !eb) continue;
+      if (PMP::do_intersect(*ea, *eb, CGAL::parameters::do_overlap_test_of_bounded_sides(true),
+                            CGAL::parameters::do_overlap_test_of_bounded_sides(true))) {
+        groups.joinKeepingSmallest(a, b);
+        meets[a] = meets[b] = 1;
+      }
+    }
+
+  // Each group united in canonical order; a shell the union refuses stays on its own.
+  std::vector<char> consumed(n, 0);
+  std::vector<TriMesh> solids;
+  std::vector<std::vector<int>> members(n);
+  for (int i : order)
+    if (meets[i]) members[groups.find(i)].push_back(i);
+  std::vector<int> leaders;
+  for (int i : order)
+    if (meets[i] && groups.find(i) == i) leaders.push_back(i);
+  std::stable_sort(leaders.begin(), leaders.end(), [&](int a, int b) {
+    return std::find(order.begin(), order.end(), members[a].front()) <
+           std::find(order.begin(), order.end(), members[b].front());
+  });
+  for (int leader : leaders) {
+    const std::vector<int>& group = members[leader];
+    ExactMesh acc = *exactOf(group.front());
+    std::vector<int> taken = {group.front()};
+    for (std::size_t k = 1; k < group.size(); ++k) {
+      ExactMesh left = acc, right = *exactOf(group[k]), result;
+      bool ok = false;
+      try {
+        ok = PMP::corefine_and_compute_union(left, right, result);
+      } catch (const std::exception&) {
+        ok = false;
+      }
+      if (!ok) {
+        if (out.firstFailure.empty()) out.firstFailure = "their union is not a manifold surface: shells touch along an edge or at a point";
+        continue;
+      }
+      acc = std::move(result);
+      taken.push_back(group[k]);
+    }
+    if (taken.size() < 2) {
+      // Nothing joined it: the first shell stays on its own too.
+      continue;
+    }
+    const TriMesh united = toTriMesh(acc);
+    // Rounding the exact union to doubles leaves slivers and specks where the shells cross (faces
+    // of 1e-8 of the diagonal): the repair merges their vertices. Its usual tolerance can merge
+    // more than those (a thin wall between two shells), so the smallest tolerance that gives a
+    // clean surface is taken, one that does not pass through itself if there is one. (Where
+    // shells touch in many planes, rounding can leave the union crossing itself by an ulp: the
+    // decomposition then treats it as any such shell, repaired locally or wrapped if needed.)
+    std::vector<TriMesh> parts;
+    bool clean = false;
+    for (bool allowCrossings : {false, true}) {
+      for (double tolerance : {1e-12, 1e-10, 1e-8, 1e-7, 1e-6}) {
+        RepairOptions gentle;
+        gentle.mergeTolerance = tolerance;
+        const MeshRepair repaired = repairMesh(united, gentle);
+        clean = repaired.status.ok() && repaired.leftDegenerateFaces == 0 && isClosedOriented(repaired.mesh) &&
+                (allowCrossings || countSelfIntersections(repaired.mesh, 1) == 0);
+        if (!clean) continue;
+        parts = splitEdgeConnected(repaired.mesh);
+        for (const TriMesh& part : parts) clean = clean && firstZeroAreaFace(part) < 0;
+        if (clean) break;
+      }
+      if (clean) break;
+    }
+    if (!clean) {
+      out.firstFailure = "their union, rounded to doubles, is not a clean surface";  // it left the most shells
+      continue;
+    }
+    for (int i : taken) consumed[i] = 1;
+    out.united += static_cast<int>(taken.size());
+    for (TriMesh& part : parts) {
+      if (signedVolume(part) < 0.0)
+        for (Face& f : part.faces) std::swap(f[1], f[2]);
+      solids.push_back(std::move(part));
+    }
+  }
+  out.solids = static_cast<int>(solids.size());
+  out.shells = std::move(solids);
+  for (int i = 0; i < n; ++i) {
+    if (consumed[i]) continue;
+    out.shells.push_back(shells[i]);
+  }
+  // Shells that meet another, or that could not be tested, and went into no union.
+  for (int i = 0; i < n; ++i) {
+    if (consumed[i]) continue;
+    bool near = meets[i];
+    for (int j = 0; j < n && !near && !usable[i]; ++j) near = j != i && boxesMeet(boxes[i], boxes[j]);
+    out.leftAlone += near;
+  }
+  return finish();
+}
+
+}  // namespace acd
