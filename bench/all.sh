@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Makes docs/BENCHMARKS.md in one run on one commit: the peers (bench/compare_peers.sh, corpus and
-# held-out models), speed over the corpus (bench/run_corpus.sh), tau kept (bench/tau_kept.sh) and
+# held-out models), assemblies (bench/compare_assemblies.py), speed over the corpus (bench/run_corpus.sh), tau kept (bench/tau_kept.sh) and
 # invariance under rigid motion (bench/invariance.sh), each table placed into
 # bench/BENCHMARKS.template.md with the command that made it.
 #
@@ -57,6 +57,9 @@ say "peers: corpus"
 bench/compare_peers.sh --set corpus --out "$OUT/peers" "${EXISTING[@]}" >"$OUT/tables/peers_corpus.md"
 say "peers: held-out"
 bench/compare_peers.sh --set heldout --out "$OUT/peers" "${EXISTING[@]}" >"$OUT/tables/peers_heldout.md"
+say "assemblies"
+/usr/bin/python3 bench/compare_assemblies.py run --out "$OUT/assemblies" "${EXISTING[@]}" >&2
+/usr/bin/python3 bench/compare_assemblies.py table --out "$OUT/assemblies" >"$OUT/tables/assemblies.md"
 say "speed"
 bench/run_corpus.sh --taus "0.2 0.05 0.02" --repeat 3 --out "$OUT/speed" >"$OUT/tables/speed.md" || true
 say "tau kept"

@@ -47,6 +47,7 @@ def shells_of(paths, model):
 def generated_dir(paths):
     d = os.path.join(paths.cache, "assemblies", "seed%(seed)d-n%(count)d" % GENERATED)
     if not os.path.exists(os.path.join(d, "manifest.tsv")):
+        cp.ensure_packages(["openscad", "openscad-mcad"], "the assembly generator's packages")
         cp.say("generating %(count)d assemblies (seed %(seed)d) with OpenSCAD" % GENERATED)
         subprocess.run([os.path.join(cp.ROOT, "bench/assemblies/generate.py"), d, "--count", str(GENERATED["count"]),
                         "--seed", str(GENERATED["seed"])], check=True)

@@ -122,12 +122,13 @@ def cached(paths, key, make, existing_only=False):
 PEER_PACKAGES = ["zlib1g-dev", "libboost-dev", "libboost-iostreams-dev", "libopenvdb-dev", "libtbb-dev", "libspdlog-dev"]
 
 
-def ensure_peer_packages():
-    missing = [p for p in PEER_PACKAGES if subprocess.run(["dpkg", "-s", p], capture_output=True).returncode != 0]
+def ensure_packages(packages, why):
+    """Installs the Debian packages the benchmark (never the product) needs when they are missing."""
+    missing = [p for p in packages if subprocess.run(["dpkg", "-s", p], capture_output=True).returncode != 0]
     if not missing:
         return
     sudo = [] if os.geteuid() == 0 else ["sudo"]
-    say("installing the peers' build packages: " + " ".join(missing))
+    say("installing %s: %s" % (why, " ".join(missing)))
     env = dict(os.environ, DEBIAN_FRONTEND="noninteractive")
     subprocess.run(sudo + ["apt-get", "update", "-qq"], check=True, env=env)
     subprocess.run(sudo + ["apt-get", "install", "-y", "-qq", "--no-install-recommends"] + missing, check=True, env=env)
@@ -136,7 +137,7 @@ def ensure_peer_packages():
 def ensure_peers(paths):
     if all(os.access(paths.peer(t), os.X_OK) for t in ("coacd", "vhacd")):
         return
-    ensure_peer_packages()
+    ensure_packages(PEER_PACKAGES, "the peers' build packages")
     script = os.path.join(paths.peers_src, "build.sh")
     if not os.path.exists(script):
         sys.exit("compare_peers: the peers are not built in %s and no source at %s (set ACD_PEERS_SRC to the folder "

@@ -2,6 +2,8 @@
 #include <acd/algo/canonical_frame.hpp>
 #include <acd/algo/shell_union.hpp>
 #include <acd/algo/shells.hpp>
+#include <acd/algo/cut_choice.hpp>
+#include <acd/algo/hull_excess.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/normalize.hpp>
 #include <acd/repair.hpp>
@@ -219,6 +221,7 @@ Decomposition decomposeShell(const TriMesh& shell, int index, const DecomposeOpt
   const double k3 = k * k * k;
   for (Component& c : d.components) {
     c.concavity /= k;
+    c.hullExcess /= k;
     c.volume /= k3;
     c.hullVolume /= k3;
     c.source = index;
@@ -306,6 +309,21 @@ void accumulateShell(Decomposition& into, Decomposition&& d) {
   t.cutting += d.times.cutting;
   t.merging += d.times.merging;
   t.hulls += d.times.hulls;
+}
+
+/// The promise is about the input: a component of the wrap has its hull measured against the
+/// input pieces the wrap replaced (their solid where they bound one), not against the wrap, which
+/// stands off them (by its offset, and more where it bridges a gap or a fold).
+void measureWrapHullsAgainstInput(Decomposition& result, const TriMesh& wrappedInput) {
+  const TriMesh input = applyNormalization(wrappedInput, result.normalization);
+  const ModelExcess model(input);
+  const double tau = result.options.tau;
+  for (Component& c : result.components) {
+    if (!c.ofWrap) continue;
+    const HullExcess e = model.measure(applyNormalization(c.hull, result.normalization), 4.0 * tau,
+                                       kExcessResolution * tau);
+    c.hullExcess = e.distance;
+  }
 }
 
 }  // namespace
@@ -412,6 +430,7 @@ Decomposition decomposeRepaired(const TriMesh& mesh, const DecomposeOptions& opt
   }
   if (result.wrap.used && !wraps.empty()) {
     const auto t = Clock::now();
+    measureWrapHullsAgainstInput(result, concatenate(wrapInputs));
     const SurfaceDistance d = surfaceDistance(concatenate(wraps), concatenate(wrapInputs));
     result.wrap.hausdorff = d.hausdorff() * scale;
     result.wrap.wrapToInput = d.aToB * scale;
