@@ -41,8 +41,11 @@ std::vector<int> mergeClose(const std::vector<Vec3>& vertices, const Box3& box, 
   const int n = static_cast<int>(vertices.size());
   UnionFind sets(n);
   if (tolerance > 0.0) {
+    // Cells no smaller than 2^-20 of the diagonal, so that a cell index fits the key's 21 bits
+    // (a smaller tolerance only means more vertices per cell to compare).
+    const double cell = std::max(tolerance, box.size().norm() * 0x1p-20);
     auto cellOf = [&](const Vec3& p) {
-      return Eigen::Array3i(((p - box.lo) / tolerance).array().floor().cast<int>());
+      return Eigen::Array3i(((p - box.lo) / cell).array().floor().cast<int>());
     };
     auto key = [](const Eigen::Array3i& c) {
       return (static_cast<std::uint64_t>(c.x() + 1) << 42) | (static_cast<std::uint64_t>(c.y() + 1) << 21) |
