@@ -70,6 +70,12 @@ def models_of(paths, only=None):
     return out
 
 
+def scorable(paths, model):
+    """The model as the evaluators read it: the peers' OBJ (acd's own writer; scene files merged),
+    since acd-score reads with CGAL, which reads no glTF, COLLADA or 3MF."""
+    return cp.peer_input(paths, model)
+
+
 def run(args, paths):
     models = models_of(paths, args.models)
     if args.only in ("acd", "all"):
@@ -83,7 +89,8 @@ def run(args, paths):
                 dst = os.path.join(paths.out, name, "acd-t%g" % tau)
                 cp.publish(d, dst, ["hulls.obj", "report.json", "log.txt", "run.json"])
                 if os.path.exists(os.path.join(d, "hulls.obj")):
-                    cp.publish(cp.evaluate(paths, model, os.path.join(d, "hulls.obj")), dst, ["eval.json", "score.json"])
+                    cp.publish(cp.evaluate(paths, scorable(paths, model), os.path.join(d, "hulls.obj")), dst,
+                               ["eval.json", "score.json"])
     if args.only in ("peers", "all"):
         cp.ensure_peers(paths)
         shard, shards = args.shard
@@ -97,7 +104,8 @@ def run(args, paths):
             dst = os.path.join(paths.out, name, label)
             cp.publish(d, dst, ["hulls.obj", "log.txt", "run.json"])
             if os.path.exists(os.path.join(d, "hulls.obj")):
-                cp.publish(cp.evaluate(paths, model, os.path.join(d, "hulls.obj")), dst, ["eval.json", "score.json"])
+                cp.publish(cp.evaluate(paths, scorable(paths, model), os.path.join(d, "hulls.obj")), dst,
+                           ["eval.json", "score.json"])
 
 
 # ---- the tables -------------------------------------------------------------------------------
@@ -137,8 +145,9 @@ def cell(f):
     if "error" in f:
         return "exit %d, not scored" % f["rc"] if f["rc"] != 0 else "not scored"
     rc = "" if f["rc"] == 0 else " (exit %d)" % f["rc"]
-    return "%d · %.3f / %.3f · %.3f · %.3f · %.1f s%s" % (f["parts"], f["out_max"], f["out_p99"], f["uncovered"], f["iou"],
-                                                      f["seconds"], rc)
+    iou = "–" if f["iou"] is None else "%.3f" % f["iou"]
+    return "%d · %.3f / %.3f · %.3f · %s · %.1f s%s" % (f["parts"], f["out_max"], f["out_p99"], f["uncovered"], iou,
+                                                    f["seconds"], rc)
 
 
 def table(args, paths):

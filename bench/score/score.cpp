@@ -11,7 +11,8 @@
 //   hull_outside_p99    its 99th percentile over all hull-surface samples (covered ones count 0)
 //   model_to_hulls_max  largest distance from a model-surface sample to the union of hulls
 //   model_to_hulls_p99
-// Output: one JSON object on stdout. Exit 2 when a file cannot be read or the model is not closed.
+// Output: one JSON object on stdout; a model that is not closed gets null IoU and volumes (its
+// closed shells still have an inside for the hull distances). Exit 2 when a file cannot be read.
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -189,9 +190,11 @@ int main(int argc, char** argv) {
 
   Mesh model;
   if (!PMP::IO::read_polygon_mesh(argv[1], model) || model.is_empty()) refuse(std::string(argv[1]) + ": cannot read");
-  if (!CGAL::is_closed(model)) refuse(std::string(argv[1]) + ": not closed (no inside)");
+  // A model that is not closed has no volume to compare (IoU null); its closed shells still have
+  // an inside for the distance of the hulls, its open sheets only a surface.
+  const bool closed = CGAL::is_closed(model);
   if (!CGAL::is_triangle_mesh(model)) PMP::triangulate_faces(model);
-  if (PMP::volume(model) < 0) PMP::reverse_face_orientations(model);
+  if (closed && PMP::volume(model) < 0) PMP::reverse_face_orientations(model);
 
   // Normalised units: the minimum enclosing sphere of the model's vertices has radius 1.
   using SphereTraits = CGAL::Min_sphere_of_points_d_traits_3<K, double>;
@@ -218,7 +221,8 @@ int main(int argc, char** argv) {
   std::vector<Mesh> shells;
   PMP::split_connected_components(model, shells);
   std::vector<std::unique_ptr<CGAL::Side_of_triangle_mesh<Mesh, K>>> sides;
-  for (const Mesh& shell : shells) sides.push_back(std::make_unique<CGAL::Side_of_triangle_mesh<Mesh, K>>(shell));
+  for (const Mesh& shell : shells)
+    if (CGAL::is_closed(shell)) sides.push_back(std::make_unique<CGAL::Side_of_triangle_mesh<Mesh, K>>(shell));
   auto insideModel = [&](const Point& p) {
     for (const auto& side : sides)
       if ((*side)(p) != CGAL::ON_UNBOUNDED_SIDE) return CGAL::ON_BOUNDED_SIDE;
@@ -264,12 +268,15 @@ int main(int argc, char** argv) {
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double scale3 = radius * radius * radius;
-  std::printf("{\"evaluator\": \"acd-score\", \"hulls\": %zu, \"skipped_hulls\": %d, \"iou\": %.6f, "
-              "\"iou_stderr\": %.6f, \"model_volume\": %.6f, \"model_volume_exact\": %.6f, \"union_volume\": %.6f, "
+  auto orNull = [&](double x) { return closed ? std::to_string(x) : std::string("null"); };
+  std::printf("{\"evaluator\": \"acd-score\", \"closed\": %s, \"hulls\": %zu, \"skipped_hulls\": %d, \"iou\": %s, "
+              "\"iou_stderr\": %s, \"model_volume\": %s, \"model_volume_exact\": %s, \"union_volume\": %.6f, "
               "\"hull_outside_max\": %.6f, \"hull_outside_p99\": %.6f, \"model_to_hulls_max\": %.6f, "
               "\"model_to_hulls_p99\": %.6f, \"volume_samples\": %ld, \"surface_samples\": %ld, \"seconds\": %.3f}\n",
-              hulls.size(), skipped, iou, either > 0 ? std::sqrt(iou * (1 - iou) / either) : 0.0,
-              boxVolume * inModel / volumeSamples / scale3, PMP::volume(model) / scale3, boxVolume * inUnion / volumeSamples / scale3,
+              closed ? "true" : "false", hulls.size(), skipped, orNull(iou).c_str(),
+              orNull(either > 0 ? std::sqrt(iou * (1 - iou) / either) : 0.0).c_str(),
+              orNull(boxVolume * inModel / volumeSamples / scale3).c_str(),
+              orNull(closed ? PMP::volume(model) / scale3 : 0.0).c_str(), boxVolume * inUnion / volumeSamples / scale3,
               *std::max_element(outside.begin(), outside.end()), percentile(outside, 0.99),
               *std::max_element(uncovered.begin(), uncovered.end()), percentile(uncovered, 0.99), volumeSamples,
               surfaceSamples, seconds);
