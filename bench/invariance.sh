@@ -11,6 +11,7 @@
 #   --models   default: the 10 closed corpus models     --taus     default: 0.05 0.1
 #   --threads  acd's --threads (default 2)               --jobs     runs at a time (default 1)
 #   --out      cache (default out/invariance): finished runs are reused unless --fresh
+#   --data     folder of MODEL.off files (default data/meshes: the corpus)
 #   --invariant  pass acd's --invariant (the default of the acd command since 2026-11-25; for older builds)
 #
 # Prints a Markdown table model x tau: motions matching out of 10, the largest relative volume
@@ -27,6 +28,7 @@ TAUS="0.05 0.1"
 THREADS=2
 JOBS=1
 OUT="out/invariance"
+DATA="data/meshes"
 FRESH=0
 ACD="build/bin/acd"
 PY=/usr/bin/python3
@@ -35,6 +37,7 @@ EXTRA=()
 usage() { sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; }
 while [[ $# -gt 0 ]]; do
     case "$1" in
+        --data) DATA="$2"; shift 2 ;;
         --models) MODELS="$2"; shift 2 ;;
         --taus) TAUS="$2"; shift 2 ;;
         --threads) THREADS="$2"; shift 2 ;;
@@ -67,7 +70,7 @@ run_one() {
 
 failed=0
 for model in $MODELS; do
-    src="data/meshes/$model.off"
+    src="$DATA/$model.off"
     [[ -f "$src" ]] || { echo "invariance: $src not found (scripts/fetch_corpus.sh)" >&2; exit 1; }
     for motion in $($PY bench/invariance.py motions); do
         moved="$OUT/meshes/$model-${motion/:/}.off"

@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Tests of the benchmark helpers bench/compare_peers.py and bench/invariance.py (run by ctest)."""
+"""Tests of the benchmark helpers bench/compare_peers.py, bench/compare_assemblies.py and
+bench/invariance.py (run by ctest)."""
 import importlib.util
 import math
 import os
@@ -18,6 +19,9 @@ def load(name):
 
 fid = load("fidelity")
 inv = load("invariance")
+import sys  # noqa: E402
+sys.path.insert(0, BENCH)
+asm = load("compare_assemblies")
 
 
 def run(tau, parts, excess=0.05, iou=0.9):
@@ -145,6 +149,39 @@ class Comparison(unittest.TestCase):
         self.assertFalse(ok)
         self.assertAlmostEqual(worst, 1e-5, places=12)
         self.assertFalse(inv.compare(orig, (0, [1.0, 2.0], moved[2][:2]), m)[0])
+
+
+class Assemblies(unittest.TestCase):
+    """bench/compare_assemblies.py reads acd-score's figures: an open model has no IoU but keeps its
+    distances; the excess compared is the larger of the two distances."""
+
+    def publish(self, d, run_json, score_json):
+        import json
+        os.makedirs(d, exist_ok=True)
+        json.dump(run_json, open(os.path.join(d, "run.json"), "w"))
+        if score_json is not None:
+            json.dump(score_json, open(os.path.join(d, "score.json"), "w"))
+
+    def test_scored_figures(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            closed = os.path.join(tmp, "a")
+            self.publish(closed, {"rc": 0, "seconds": 1.5}, {"hulls": 7, "hull_outside_max": 0.04, "hull_outside_p99": 0.02,
+                                                            "model_to_hulls_max": 0.06, "iou": 0.9})
+            f = asm.scored(closed)
+            self.assertEqual((f["parts"], f["excess"], f["iou"]), (7, 0.06, 0.9))
+            self.assertIn("7 · 0.040 / 0.020 · 0.060 · 0.900", asm.cell(f))
+            open_model = os.path.join(tmp, "b")
+            self.publish(open_model, {"rc": 8, "seconds": 1.0}, {"hulls": 3, "hull_outside_max": 0.2,
+                                                                "hull_outside_p99": 0.1, "model_to_hulls_max": 0.0,
+                                                                "iou": None})
+            g = asm.scored(open_model)
+            self.assertIsNone(g["iou"])
+            self.assertIn("· – ·", asm.cell(g))
+            self.assertIn("(exit 8)", asm.cell(g))
+            failed = os.path.join(tmp, "c")
+            self.publish(failed, {"rc": 2, "seconds": 0.1}, None)
+            self.assertEqual(asm.cell(asm.scored(failed)), "exit 2, not scored")
+            self.assertIsNone(asm.scored(os.path.join(tmp, "missing")))
 
 
 if __name__ == "__main__":
