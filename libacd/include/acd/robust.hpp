@@ -23,6 +23,7 @@ struct PreparedModel {
   int holesFilled = 0;
   int cavitiesDropped = 0;
   int overlappingShells = 0;
+  int unitedShells = 0;               // shells that went into a union (acd/algo/shell_union.hpp)
   WrapReport wrap;                    // hausdorff is filled in by decomposeRepaired
   std::string wrapReason;             // with buildWrap off: why the wrap would be used
   double seconds = 0.0;
@@ -37,7 +38,8 @@ struct PreparedModel {
 PreparedModel prepareModel(const TriMesh& mesh, const DecomposeOptions& options, bool buildWrap = true);
 
 /// prepareModel (which unites the shells that meet, unless options.uniteShells is off), then each
-/// remaining shell decomposed on its own at tau in the model's normalised units; then, when options.wrap is on,
+/// remaining shell decomposed on its own at tau in the model's normalised units (where shells were
+/// united, the shells apart too, and the route with fewer hulls kept); then, when options.wrap is on,
 /// every shell left with a component above tau (a surface passing through itself, typically) is
 /// replaced by its wrap and decomposed again. Volumes and concavities are in the model's units;
 /// Component::source is the shell.

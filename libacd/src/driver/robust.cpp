@@ -109,6 +109,7 @@ void uniteShells(PreparedModel& out, bool invariant) {
     out.shells.push_back(std::move(w));
     out.isWrap.push_back(1);
   }
+  out.unitedShells = u.united;
   if (u.united > 0) {
     out.repairs.push_back("united " + plural(u.united, "shell", "shells") +
                           " that pass through, touch or lie in another into " + plural(u.solids, "solid", "solids") +
@@ -328,7 +329,11 @@ void measureWrapHullsAgainstInput(Decomposition& result, const TriMesh& wrappedI
 
 }  // namespace
 
-Decomposition decomposeRepaired(const TriMesh& mesh, const DecomposeOptions& options) {
+namespace {
+
+/// decomposeRepaired's one route: the shells prepareModel gives, each decomposed; `united` gets
+/// how many shells went into a union.
+Decomposition decomposeShells(const TriMesh& mesh, const DecomposeOptions& options, int& united) {
   const auto start = Clock::now();
   Decomposition result;
   result.status = validate(options);
@@ -337,6 +342,7 @@ Decomposition decomposeRepaired(const TriMesh& mesh, const DecomposeOptions& opt
   result.options = o;
 
   PreparedModel prepared = prepareModel(mesh, o);
+  united = prepared.unitedShells;
   result.repairs = prepared.repairs;
   result.stats.holesFilled = prepared.holesFilled;
   result.wrap = prepared.wrap;
@@ -440,6 +446,39 @@ Decomposition decomposeRepaired(const TriMesh& mesh, const DecomposeOptions& opt
   result.times.prepare += prepared.seconds;
   result.times.total = secondsSince(start);
   return result;
+}
+
+bool anyUnresolved(const Decomposition& d) {
+  return std::any_of(d.components.begin(), d.components.end(), [](const Component& c) { return c.unresolved; });
+}
+
+}  // namespace
+
+/// Where shells were united, the shells are also decomposed one by one, and the route with fewer
+/// hulls is kept (the union on a tie): both keep every hull within tau of the input. The union
+/// wins where shells interlock (a gear on its shaft, a box and its lid), the shells where small,
+/// nearly convex parts stand proud of a larger one (bolt heads on a plate: each is one hull, but
+/// united they are pockets in the plate's surface that take cuts).
+Decomposition decomposeRepaired(const TriMesh& mesh, const DecomposeOptions& options) {
+  const auto start = Clock::now();
+  int united = 0, unused = 0;
+  Decomposition whole = decomposeShells(mesh, options, united);
+  if (!options.uniteShells || united == 0 || !whole.status.ok()) return whole;
+  DecomposeOptions apartOptions = options;
+  apartOptions.uniteShells = false;
+  Decomposition apart = decomposeShells(mesh, apartOptions, unused);
+  const bool keepApart = apart.status.ok() && !anyUnresolved(apart) &&
+                         (anyUnresolved(whole) || apart.components.size() < whole.components.size());
+  Decomposition& kept = keepApart ? apart : whole;
+  kept.repairs.push_back(keepApart ? "shell by shell: " + plural(static_cast<int>(apart.components.size()), "hull", "hulls") +
+                                         " against the union's " + std::to_string(whole.components.size()) +
+                                         ": kept the shells apart"
+                                   : "the union: " + plural(static_cast<int>(whole.components.size()), "hull", "hulls") +
+                                         " against " + std::to_string(apart.components.size()) +
+                                         " shell by shell: kept the union");
+  kept.options = whole.options;
+  kept.times.total = secondsSince(start);
+  return std::move(kept);
 }
 
 }  // namespace acd
