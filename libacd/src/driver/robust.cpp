@@ -448,6 +448,9 @@ Decomposition decomposeShells(const TriMesh& mesh, const DecomposeOptions& optio
   return result;
 }
 
+/// How many pieces, per hull of the shells decomposed apart, the union's recursion may make.
+constexpr int kUnionPieces = 4;
+
 bool anyUnresolved(const Decomposition& d) {
   return std::any_of(d.components.begin(), d.components.end(), [](const Component& c) { return c.unresolved; });
 }
@@ -461,12 +464,26 @@ bool anyUnresolved(const Decomposition& d) {
 /// united they are pockets in the plate's surface that take cuts).
 Decomposition decomposeRepaired(const TriMesh& mesh, const DecomposeOptions& options) {
   const auto start = Clock::now();
-  int united = 0, unused = 0;
-  Decomposition whole = decomposeShells(mesh, options, united);
-  if (!options.uniteShells || united == 0 || !whole.status.ok()) return whole;
+  if (!options.uniteShells) {
+    int unused = 0;
+    return decomposeShells(mesh, options, unused);
+  }
+  // The shells apart first (cheap: most shells of an assembly are nearly convex); the union then
+  // gets at most kUnionPieces times their hull count of pieces before its merge pass: a union
+  // whose shells meet in coincident faces (a bolt in a hole of its own radius) can cut into
+  // slivers for minutes, and with that many pieces it would not win.
   DecomposeOptions apartOptions = options;
   apartOptions.uniteShells = false;
+  int united = 0, unused = 0;
+  PreparedModel probe = prepareModel(mesh, resolvedOptions(options), false);
+  if (!probe.status.ok() || probe.unitedShells == 0) return decomposeShells(mesh, options, unused);
   Decomposition apart = decomposeShells(mesh, apartOptions, unused);
+  DecomposeOptions wholeOptions = options;
+  if (apart.status.ok())
+    wholeOptions.maxComponents =
+        std::min(options.maxComponents, kUnionPieces * std::max<int>(1, static_cast<int>(apart.components.size())));
+  Decomposition whole = decomposeShells(mesh, wholeOptions, united);
+  if (!whole.status.ok()) return apart.status.ok() ? apart : whole;
   const bool keepApart = apart.status.ok() && !anyUnresolved(apart) &&
                          (anyUnresolved(whole) || apart.components.size() < whole.components.size());
   Decomposition& kept = keepApart ? apart : whole;
@@ -476,7 +493,7 @@ Decomposition decomposeRepaired(const TriMesh& mesh, const DecomposeOptions& opt
                                    : "the union: " + plural(static_cast<int>(whole.components.size()), "hull", "hulls") +
                                          " against " + std::to_string(apart.components.size()) +
                                          " shell by shell: kept the union");
-  kept.options = whole.options;
+  kept.options = resolvedOptions(options);
   kept.times.total = secondsSince(start);
   return std::move(kept);
 }

@@ -159,23 +159,20 @@ ShellUnion uniteMeetingShells(const std::vector<TriMesh>& shells, bool invariant
     // Rounding the exact union to doubles leaves slivers and specks where the shells cross (faces
     // of 1e-8 of the diagonal): the repair merges their vertices. Its usual tolerance can merge
     // more than those (a thin wall between two shells), so the smallest tolerance that gives a
-    // clean surface is taken, one that does not pass through itself if there is one. (Where
-    // shells touch in many planes, rounding can leave the union crossing itself by an ulp: the
-    // decomposition then treats it as any such shell, repaired locally or wrapped if needed.)
+    // clean surface is taken: closed, no zero-area face, not passing through itself. (Where shells
+    // touch in many planes, rounding can leave crossings of an ulp at every tolerance; the local
+    // repair of crossings then takes minutes, so such a group stays apart.)
     std::vector<TriMesh> parts;
     bool clean = false;
-    for (bool allowCrossings : {false, true}) {
-      for (double tolerance : {1e-12, 1e-10, 1e-8, 1e-7, 1e-6}) {
-        RepairOptions gentle;
-        gentle.mergeTolerance = tolerance;
-        const MeshRepair repaired = repairMesh(united, gentle);
-        clean = repaired.status.ok() && repaired.leftDegenerateFaces == 0 && isClosedOriented(repaired.mesh) &&
-                (allowCrossings || countSelfIntersections(repaired.mesh, 1) == 0);
-        if (!clean) continue;
-        parts = splitEdgeConnected(repaired.mesh);
-        for (const TriMesh& part : parts) clean = clean && firstZeroAreaFace(part) < 0;
-        if (clean) break;
-      }
+    for (double tolerance : {1e-12, 1e-10, 1e-8, 1e-7, 1e-6}) {
+      RepairOptions gentle;
+      gentle.mergeTolerance = tolerance;
+      const MeshRepair repaired = repairMesh(united, gentle);
+      clean = repaired.status.ok() && repaired.leftDegenerateFaces == 0 && isClosedOriented(repaired.mesh) &&
+              countSelfIntersections(repaired.mesh, 1) == 0;
+      if (!clean) continue;
+      parts = splitEdgeConnected(repaired.mesh);
+      for (const TriMesh& part : parts) clean = clean && firstZeroAreaFace(part) < 0;
       if (clean) break;
     }
     if (!clean) {
