@@ -248,7 +248,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                  written.ok() ? "written" : written.message.c_str(), options.tau,
                  options.featureGrouping ? "" : " --no-grouping", options.merge ? "" : " --no-merge",
                  options.mergeScope == acd::MergeScope::Component ? " --merge-scope component" : "",
-                 options.uniteShells ? "" : " --no-union", options.fillHoles ? "" : " --no-fill-holes",
+                 options.uniteShells ? " --union" : "", options.fillHoles ? "" : " --no-fill-holes",
                  options.wrap ? "" : " --no-wrap");
   }
 

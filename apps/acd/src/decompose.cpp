@@ -216,7 +216,7 @@ int runSolidDecompose(DecomposeArgs& a) {
   a.options.mergeScope = a.mergeScope == "component" ? acd::MergeScope::Component : acd::MergeScope::Model;
   a.options.fillHoles = !a.noFillHoles;
   a.options.wrap = !a.noWrap && !a.noRepair;
-  a.options.uniteShells = !a.noUnion;
+  a.options.uniteShells = a.unite;
   a.options.repair = !a.noRepair;
   if (a.perMesh) return runPerMesh(a);
   acd::ReadResult r = readModel(a.model);
@@ -258,9 +258,10 @@ CLI::App* addDecomposeCommand(CLI::App& app, DecomposeArgs& a) {
   dec->add_flag("--no-wrap", a.noWrap,
                 "Refuse a mesh that the repairs cannot make a clean solid instead of decomposing its watertight wrap; "
                 "self-intersecting pieces left above tau stay unresolved (exit 4)");
-  dec->add_flag("--no-union", a.noUnion,
-                "Decompose each shell on its own instead of uniting the shells that pass through, touch or lie in "
-                "another (an assembly exported from CAD) into the solid they bound together");
+  dec->add_flag("--union", a.unite,
+                "Also decompose the shells that pass through, touch or lie in another (an assembly exported from CAD) "
+                "as the solid they bound together, and keep whichever gives fewer hulls; not yet the same result "
+                "under rigid motion");
   dec->add_flag("--no-repair", a.noRepair,
                 "Only the strict checks and safe repairs of earlier versions: no vertex merging, double-sided face, "
                 "non-manifold, degenerate-face repairs, no cavity handling and no wrap");

@@ -24,7 +24,7 @@ struct DecomposeArgs {
   std::string mergeScope = "model";  // --merge-scope
   bool noFillHoles = false;
   bool noWrap = false;
-  bool noUnion = false;  // --no-union
+  bool unite = false;  // --union
   bool noRepair = false;
   bool surface = false;
   bool quiet = false;
