@@ -13,7 +13,8 @@
 #           shards with bench/compare_peers.py's --shard); the tables say how many runs each has
 #   --assemble-only  no runs: write the document again from OUT/tables (after a template edit)
 #
-# About 2.5 h of CoACD on a cold cache (2 cores); with the peers cached, about 40 min. The peers'
+# About 2.5 h of CoACD on a cold cache (2 cores), and several hours more for the assemblies (CoACD
+# takes 2-25 min per assembly); with the peers cached, about 1 h. The peers'
 # runs and every acd run of the comparison are cached by hash (bench/compare_peers.py), so they
 # are reused exactly when input, binary and flags are the same.
 set -euo pipefail
