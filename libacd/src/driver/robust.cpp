@@ -331,18 +331,13 @@ void measureWrapHullsAgainstInput(Decomposition& result, const TriMesh& wrappedI
 
 namespace {
 
-/// decomposeRepaired's one route: the shells prepareModel gives, each decomposed; `united` gets
-/// how many shells went into a union.
-Decomposition decomposeShells(const TriMesh& mesh, const DecomposeOptions& options, int& united) {
+/// decomposeRepaired's one route: the shells of `prepared` (prepareModel at `options`, resolved),
+/// each decomposed.
+Decomposition decomposeShells(const DecomposeOptions& o, PreparedModel prepared) {
   const auto start = Clock::now();
   Decomposition result;
-  result.status = validate(options);
-  if (!result.status.ok()) return result;
-  const DecomposeOptions o = resolvedOptions(options);
   result.options = o;
 
-  PreparedModel prepared = prepareModel(mesh, o);
-  united = prepared.unitedShells;
   result.repairs = prepared.repairs;
   result.stats.holesFilled = prepared.holesFilled;
   result.wrap = prepared.wrap;
@@ -464,25 +459,26 @@ bool anyUnresolved(const Decomposition& d) {
 /// united they are pockets in the plate's surface that take cuts).
 Decomposition decomposeRepaired(const TriMesh& mesh, const DecomposeOptions& options) {
   const auto start = Clock::now();
-  if (!options.uniteShells) {
-    int unused = 0;
-    return decomposeShells(mesh, options, unused);
+  if (Status valid = validate(options); !valid.ok()) {
+    Decomposition refused;
+    refused.status = std::move(valid);
+    return refused;
   }
+  const DecomposeOptions o = resolvedOptions(options);
+  PreparedModel united = prepareModel(mesh, o);
+  if (!united.status.ok() || united.unitedShells == 0) return decomposeShells(o, std::move(united));
   // The shells apart first (cheap: most shells of an assembly are nearly convex); the union then
   // gets at most kUnionPieces times their hull count of pieces before its merge pass: a union
   // whose shells meet in coincident faces (a bolt in a hole of its own radius) can cut into
   // slivers for minutes, and with that many pieces it would not win.
-  DecomposeOptions apartOptions = options;
+  DecomposeOptions apartOptions = o;
   apartOptions.uniteShells = false;
-  int united = 0, unused = 0;
-  PreparedModel probe = prepareModel(mesh, resolvedOptions(options), false);
-  if (!probe.status.ok() || probe.unitedShells == 0) return decomposeShells(mesh, options, unused);
-  Decomposition apart = decomposeShells(mesh, apartOptions, unused);
-  DecomposeOptions wholeOptions = options;
+  Decomposition apart = decomposeShells(apartOptions, prepareModel(mesh, apartOptions));
+  DecomposeOptions wholeOptions = o;
   if (apart.status.ok())
     wholeOptions.maxComponents =
-        std::min(options.maxComponents, kUnionPieces * std::max<int>(1, static_cast<int>(apart.components.size())));
-  Decomposition whole = decomposeShells(mesh, wholeOptions, united);
+        std::min(o.maxComponents, kUnionPieces * std::max<int>(1, static_cast<int>(apart.components.size())));
+  Decomposition whole = decomposeShells(wholeOptions, std::move(united));
   if (!whole.status.ok()) return apart.status.ok() ? apart : whole;
   const bool keepApart = apart.status.ok() && !anyUnresolved(apart) &&
                          (anyUnresolved(whole) || apart.components.size() < whole.components.size());
@@ -493,7 +489,7 @@ Decomposition decomposeRepaired(const TriMesh& mesh, const DecomposeOptions& opt
                                    : "the union: " + plural(static_cast<int>(whole.components.size()), "hull", "hulls") +
                                          " against " + std::to_string(apart.components.size()) +
                                          " shell by shell: kept the union");
-  kept.options = resolvedOptions(options);
+  kept.options = o;
   kept.times.total = secondsSince(start);
   return std::move(kept);
 }
