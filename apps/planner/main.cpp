@@ -2,6 +2,7 @@
 // obstacle-based and bridge-test) over seeded trials, on a scenario file (docs/PLANNER.md).
 #include "experiment.hpp"
 #include "n90_search.hpp"
+#include "ompl_app_problem.hpp"
 #include "ompl_planners.hpp"
 #include "report.hpp"
 #include "search_report.hpp"
@@ -47,12 +48,13 @@ struct Args {
   int samples = 0, trials = 0, sweepTrials = 0;
   long long seed = 0;
   bool sweep = false, quiet = false, n90 = false, race = false, noFixed = false;
-  int n90Start = 50, n90Max = 8000, n90Trials = 20, raceRuns = 20;
-  double timeLimit = 30.0;
+  int n90Start = 50, n90Max = 8000, n90Trials = 20, raceRuns = -1;  // -1: the scenario's (OMPL.app's run_count)
+  double timeLimit = -1;                                                 // -1: the scenario's (time_limit)
+  std::string plannerList;
 };
 
 void addOptions(CLI::App& app, Args& a) {
-  app.add_option("scenario", a.scenarioPath, "Scenario file (YAML, see docs/PLANNER.md)")->required();
+  app.add_option("scenario", a.scenarioPath, "Scenario file (YAML) or OMPL.app problem file (.cfg); see docs/PLANNER.md")->required();
   app.add_option("-n,--samples", a.samples, "Sampled milestones per roadmap (overrides the scenario)");
   app.add_option("-t,--trials", a.trials, "Seeded trials per sampler (overrides the scenario)");
   app.add_option("-s,--samplers", a.samplerList, "Comma-separated: uniform,acd,gaussian,obstacle_based,bridge_test");
@@ -64,21 +66,28 @@ void addOptions(CLI::App& app, Args& a) {
   app.add_option("--n90-start", a.n90Start, "First N of the search (doubled from there; default 50)");
   app.add_option("--n90-max", a.n90Max, "Largest N the search tries (default 8000)");
   app.add_option("--n90-trials", a.n90Trials, "Trials per N of the search (default 20)");
-  app.add_flag("--race", a.race, "Also run OMPL's PRM, RRTConnect, KPIECE1 and PRM with the acd sampler against the clock (race.csv)");
-  app.add_option("--time-limit", a.timeLimit, "Seconds per run of --race (default 30)");
-  app.add_option("--runs", a.raceRuns, "Runs per planner of --race (default 20)");
+  app.add_flag("--race", a.race,
+               "Also race PRM with each sampler (acd included) against OMPL's planners and those the .cfg lists "
+               "(race.csv, race_runs.csv, ompl_benchmark.log)");
+  app.add_option("--time-limit", a.timeLimit, "Seconds per run of --race (default: the .cfg's time_limit, else 30)");
+  app.add_option("--runs", a.raceRuns, "Runs per planner of --race (default: the .cfg's run_count, else 20)");
+  app.add_option("--planners", a.plannerList, "Comma-separated subset of the race's planners (PRM_acd,RRTConnect,...)");
   app.add_flag("--no-fixed", a.noFixed, "Skip the fixed-N table (with --n90 or --race)");
   app.add_flag("-q,--quiet", a.quiet, "No progress and no preprocessing report");
 }
 
 /// The scenario file with the command line's overrides; throws ScenarioError for a bad file or option.
 planner::Scenario scenarioFor(const Args& a) {
-  planner::Scenario scenario = planner::loadScenario(a.scenarioPath);
+  planner::Scenario scenario = planner::isOmplAppProblem(a.scenarioPath) ? planner::loadOmplAppProblem(a.scenarioPath)
+                                                                         : planner::loadScenario(a.scenarioPath);
   if (a.samples < 0 || a.trials < 0 || a.sweepTrials < 0)
     throw planner::ScenarioError("--samples, --trials and --sweep-trials must be positive");
   if (a.n90Start <= 0 || a.n90Max < a.n90Start || a.n90Trials <= 0)
     throw planner::ScenarioError("--n90-start and --n90-trials must be positive, --n90-max at least --n90-start");
-  if (!(a.timeLimit > 0) || a.raceRuns <= 0) throw planner::ScenarioError("--time-limit and --runs must be positive");
+  if (a.timeLimit <= 0 && a.timeLimit != -1) throw planner::ScenarioError("--time-limit must be positive");
+  if (a.raceRuns <= 0 && a.raceRuns != -1) throw planner::ScenarioError("--runs must be positive");
+  if (a.timeLimit > 0) scenario.race.timeLimit = a.timeLimit;
+  if (a.raceRuns > 0) scenario.race.runs = a.raceRuns;
   if (a.noFixed && !a.n90 && !a.race) throw planner::ScenarioError("--no-fixed needs --n90 or --race");
   if (a.samples > 0) scenario.samples = a.samples;
   if (a.trials > 0) scenario.trials = a.trials;
@@ -113,8 +122,7 @@ int run(int argc, char** argv) {
     return appcli::usageExit(app.exit(e));  // --help is not an error
   }
   const bool sweep = args.sweep, quiet = args.quiet, n90 = args.n90, race = args.race, noFixed = args.noFixed;
-  const int n90Start = args.n90Start, n90Max = args.n90Max, n90Trials = args.n90Trials, raceRuns = args.raceRuns;
-  const double timeLimit = args.timeLimit;
+  const int n90Start = args.n90Start, n90Max = args.n90Max, n90Trials = args.n90Trials;
 
   ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
   planner::Scenario scenario;
@@ -126,7 +134,7 @@ int run(int argc, char** argv) {
     // covers anything else OMPL draws, and must be set before OMPL's first generator exists.
     ompl::RNG::setSeed(scenario.seed);
     pre = planner::preprocess(scenario);
-    problem = std::make_unique<planner::PlanningProblem>(scenario, pre.freeSpace, pre.openings);
+    problem = std::make_unique<planner::PlanningProblem>(scenario, pre.freeSpace, pre.openings, pre.solids);
   } catch (const planner::ScenarioError& e) {
     return kConsole.fail(kBadInput, e.what());
   }
@@ -166,10 +174,22 @@ int run(int argc, char** argv) {
     planner::writeSweepCsv((dir / "n90_points.csv").string(), points);
   }
   if (race) {
-    if (tty) std::cerr << "racing OMPL's planners (" << raceRuns << " runs of up to " << timeLimit << " s each)\n";
-    const auto times = planner::raceOmplPlanners(*problem, pre, timeLimit, raceRuns, (dir / "ompl_benchmark.log").string());
+    const double timeLimit = scenario.race.timeLimit;
+    std::vector<std::string> skipped;
+    const std::vector<std::string> all = planner::racePlannerNames(scenario.race.planners, &skipped);
+    for (const std::string& name : skipped)
+      std::cerr << "planner: the problem file's planner '" << name << "' is not raced (not a plain OMPL geometric planner)\n";
+    const std::vector<std::string> only = splitList(args.plannerList);
+    for (const std::string& name : only)
+      if (std::find(all.begin(), all.end(), name) == all.end())
+        return kConsole.fail(appcli::kBadParameter, "--planners: unknown planner '" + name + "'");
+    if (tty) std::cerr << "racing " << (only.empty() ? all.size() : only.size()) << " planners (" << scenario.race.runs
+                       << " runs of up to " << timeLimit << " s each)\n";
+    const auto times = planner::raceOmplPlanners(*problem, pre, timeLimit, scenario.race.runs,
+                                                 (dir / "ompl_benchmark.log").string(), only);
     planner::printRaceTable(std::cout, times, timeLimit);
     planner::writeRaceCsv((dir / "race.csv").string(), times);
+    planner::writeRaceRunsCsv((dir / "race_runs.csv").string(), times);
   }
 
   std::vector<planner::SamplerSummary> sweepResults;
@@ -201,7 +221,10 @@ int run(int argc, char** argv) {
             << (bestFrom.empty() ? "" : ", " + (dir / "best_path.txt").string() + " (from " + bestFrom + ")")
             << (sweepResults.empty() ? "" : ", " + (dir / "sweep.csv").string())
             << (n90 ? ", " + (dir / "n90.csv").string() + ", " + (dir / "n90_points.csv").string() : "")
-            << (race ? ", " + (dir / "race.csv").string() + ", " + (dir / "ompl_benchmark.log").string() : "") << "\n";
+            << (race ? ", " + (dir / "race.csv").string() + ", " + (dir / "race_runs.csv").string() + ", " +
+                           (dir / "ompl_benchmark.log").string()
+                     : "")
+            << "\n";
   return kOk;
 }
 

@@ -1,10 +1,13 @@
 // planner_scenes DIR: writes the planner's soup scenes (scenes.hpp) as COLLADA through assimp,
-// <name>_env.dae and <name>_robot.dae each. The scenarios in scenarios/ expect them in
+// <name>_env.dae and <name>_robot.dae each, and OMPL.app problems (ompl_app_problems.hpp) as
+// DIR/ompl_app/<name>.cfg beside their meshes. The scenarios in scenarios/ expect them in
 // scenarios/generated (docs/PLANNER.md).
 #include "collada_export.hpp"
+#include "ompl_app_problems.hpp"
 #include "scenes.hpp"
 
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 
 int main(int argc, char** argv) {
@@ -19,14 +22,24 @@ int main(int argc, char** argv) {
     std::cerr << "planner_scenes: cannot create " << dir.string() << (ec ? ": " + ec.message() : "") << "\n";
     return 3;
   }
-  for (const scenes::Scene& s : scenes::allScenes()) {
+  auto write = [&](const std::filesystem::path& folder, const scenes::Scene& s) {
     for (const auto& [suffix, soup] : {std::pair{"_env.dae", &s.environment}, {"_robot.dae", &s.robot}}) {
-      const std::string error = scenes::writeCollada((dir / (s.name + suffix)).string(), *soup);
+      const std::string error = scenes::writeCollada((folder / (s.name + suffix)).string(), *soup);
       if (!error.empty()) {
         std::cerr << "planner_scenes: cannot write " << error << "\n";
-        return 3;
+        return false;
       }
     }
+    return true;
+  };
+  for (const scenes::Scene& s : scenes::allScenes())
+    if (!write(dir, s)) return 3;
+  // OMPL.app problem files with their meshes, in DIR/ompl_app.
+  const std::filesystem::path app = dir / "ompl_app";
+  std::filesystem::create_directories(app, ec);
+  for (const scenes::OmplAppProblem& p : scenes::omplAppProblems()) {
+    if (!write(app, p.scene)) return 3;
+    std::ofstream((app / (p.scene.name + ".cfg")).string()) << "# " << p.what << "\n" << p.cfg;
   }
   return 0;
 }

@@ -18,7 +18,8 @@ AcdValidStateSampler::AcdValidStateSampler(const ompl::base::SpaceInformation* s
       alignedFraction_(settings.alignedFraction),
       tilt_(settings.tilt),
       orientationTries_(static_cast<unsigned>(std::max(1, settings.orientationTries))),
-      alignment_(problem.alignment()) {
+      alignment_(problem.alignment()),
+      bodyIsReference_(problem.scenario().robot.insidePoints.front().isZero()) {
   name_ = "acd";
   // Narrow openings first: weight 1 / area, with areas below pi spread^2 counted as that much,
   // so that slivers left by the decomposition do not take every sample.
@@ -69,7 +70,7 @@ bool AcdValidStateSampler::candidate(ompl::base::State* state) {
     problem_.setPose(state, pose.position, pose.orientation);
     return true;
   }
-  problem_.setPosition(state, pointNearOpening(which));
+  problem_.placeBody(state, pointNearOpening(which));
   return false;
 }
 
@@ -78,8 +79,11 @@ bool AcdValidStateSampler::sample(ompl::base::State* state) {
   bool found = false;
   for (unsigned attempt = 0; attempt < attempts_ && !found; ++attempt) {
     const bool aligned = candidate(state);
-    // Where the reference point itself is blocked no orientation helps: next position.
-    if (!si_->satisfiesBounds(state) || !problem_.world().pointFree(problem_.position(state))) continue;
+    // Where the robot's body point is blocked no orientation helps: next position.
+    const acd::Vec3 body = problem_.bodyPoint(state);
+    if (!problem_.world().pointFree(body)) continue;
+    // Out of bounds: turning helps only when the reference point is not the body point.
+    if (!si_->satisfiesBounds(state) && (aligned || bodyIsReference_)) continue;
     if (si_->isValid(state)) {
       found = true;
       break;
@@ -87,10 +91,9 @@ bool AcdValidStateSampler::sample(ompl::base::State* state) {
     if (aligned) continue;  // its orientation is the point of it: a new candidate, not random turns
     // Keep the position and turn the robot: in a passage few orientations fit, and without
     // this the valid states would gather where every orientation fits, away from the passage.
-    const acd::Vec3 p = problem_.position(state);
     for (unsigned turn = 1; turn < orientationTries_ && !found; ++turn) {
       sampler_->sampleUniform(turned);
-      problem_.setPosition(turned, p);
+      problem_.placeBody(turned, body);
       if (si_->isValid(turned)) {
         si_->copyState(state, turned);
         found = true;

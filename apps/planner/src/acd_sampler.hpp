@@ -49,6 +49,7 @@ class AcdValidStateSampler : public ompl::base::ValidStateSampler {
   double tilt_;
   unsigned orientationTries_;
   const OpeningAlignment* alignment_;                // null: the robot does not turn (a point or a sphere)
+  bool bodyIsReference_;                             // the body point is the reference point: bounds do not depend on the turn
   std::vector<double> cumulativeWeight_;             // per opening
   std::vector<std::vector<double>> cumulativeArea_;  // per opening, per triangle
 };

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 namespace planner {
 
@@ -29,6 +30,7 @@ Preprocessing preprocess(const Scenario& scenario) {
       if (o.box) {
         solids.push_back(o.triangles);
         names.push_back(o.name);
+        pre.solids.push_back({o.name, "a box", o.triangles});
         continue;
       }
       const SolidObstacle solid = solidify(o.triangles, pre.wrap);
@@ -38,6 +40,11 @@ Preprocessing preprocess(const Scenario& scenario) {
       for (std::size_t i = 0; i < solid.pieces.size(); ++i) {
         solids.push_back(solid.pieces[i]);
         names.push_back(o.name + " piece " + std::to_string(i));
+        const bool wrap = solid.wrappedPieces > 0 && i + 1 == solid.pieces.size();
+        char how[160];
+        std::snprintf(how, sizeof how, "the alpha wrap of %d open pieces, %g beyond their triangles (alpha %g)",
+                      solid.wrappedPieces, solid.wrap.offset, solid.wrap.alpha);
+        pre.solids.push_back({names.back(), wrap ? std::string(how) : "closed or repaired exactly", solid.pieces[i]});
       }
     }
     pre.solidSeconds = secondsSince(t0);

@@ -19,6 +19,7 @@ namespace planner {
 /// Free space, its ACD and the openings: the preprocessing of the ACD sampler.
 struct Preprocessing {
   std::vector<std::string> obstacleSolids;   // per obstacle: "name: how it was made a solid" (SolidObstacle::summary)
+  std::vector<NamedSolid> solids;            // what the free space was cut from, for the messages
   WrapSettings wrap;                         // as resolved for the obstacles
   double robotThickness = 0.0;               // Robot::thickness(), for the report
   bool wrapped = false;                      // some obstacle piece was wrapped

@@ -5,11 +5,14 @@
 #include <ompl/base/DiscreteMotionValidator.h>
 #include <ompl/base/samplers/BridgeTestValidStateSampler.h>
 #include <ompl/base/samplers/GaussianValidStateSampler.h>
+#include <ompl/base/samplers/MaximizeClearanceValidStateSampler.h>
 #include <ompl/base/samplers/ObstacleBasedValidStateSampler.h>
 #include <ompl/base/samplers/UniformValidStateSampler.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/spaces/SE2StateSpace.h>
 #include <ompl/base/spaces/SE3StateSpace.h>
+
+#include <cstdio>
 
 namespace planner {
 
@@ -20,10 +23,15 @@ namespace {
 class WorldValidityChecker : public ob::StateValidityChecker {
  public:
   WorldValidityChecker(const ob::SpaceInformationPtr& si, const PlanningProblem& problem)
-      : StateValidityChecker(si), problem_(problem) {}
+      : StateValidityChecker(si), problem_(problem) {
+    specs_.clearanceComputationType = ob::StateValidityCheckerSpecs::EXACT;  // for the maximum-clearance sampler
+  }
   bool isValid(const ob::State* state) const override {
     if (!si_->satisfiesBounds(state)) return false;
     return problem_.world().valid(problem_.position(state), problem_.orientation(state));
+  }
+  double clearance(const ob::State* state) const override {
+    return problem_.world().clearance(problem_.position(state), problem_.orientation(state));
   }
 
  private:
@@ -32,15 +40,14 @@ class WorldValidityChecker : public ob::StateValidityChecker {
 
 }  // namespace
 
-PlanningProblem::PlanningProblem(const Scenario& scenario, const acd::TriMesh& freeSpace, std::vector<Opening> openings)
+PlanningProblem::PlanningProblem(const Scenario& scenario, const acd::TriMesh& freeSpace, std::vector<Opening> openings,
+                                 std::vector<NamedSolid> solids)
     : scenario_(scenario), openings_(std::move(openings)), seeds_(std::make_shared<SeedSource>()) {
-  if (scenario.freeSpaceGiven || scenario.obstacles.empty()) {
-    world_ = std::make_unique<CollisionWorld>(freeSpace, scenario.robot);
-  } else {
-    std::vector<acd::TriMesh> triangles;
-    for (const Obstacle& o : scenario.obstacles) triangles.push_back(o.triangles);
-    world_ = std::make_unique<CollisionWorld>(freeSpace, acd::concatenate(triangles), scenario.workspace, scenario.robot);
-  }
+  if (scenario.freeSpaceGiven || scenario.obstacles.empty())
+    world_ = std::make_unique<CollisionWorld>(freeSpace, scenario.robot, scenario.validity);
+  else
+    world_ = std::make_unique<CollisionWorld>(freeSpace, scenario.obstacles, std::move(solids), scenario.workspace,
+                                              scenario.robot, scenario.validity);
   // The reference point's bounds (OMPL.app's volume); the workspace when none are given.
   const bool hasBounds = ((scenario.bounds.hi - scenario.bounds.lo).array() > 0).all();
   const acd::Box3& ws = hasBounds ? scenario.bounds : scenario.workspace;
@@ -84,8 +91,26 @@ PlanningProblem::PlanningProblem(const Scenario& scenario, const acd::TriMesh& f
   goal_ = si_->allocState();
   setPose(start_, scenario.start.position, scenario.start.orientation);
   setPose(goal_, scenario.goal.position, scenario.goal.orientation);
-  if (!si_->isValid(start_)) throw ScenarioError(scenario.path + ": the start pose is in collision (or outside the free space)");
-  if (!si_->isValid(goal_)) throw ScenarioError(scenario.path + ": the goal pose is in collision (or outside the free space)");
+  refuseInvalid("start", scenario.start);
+  refuseInvalid("goal", scenario.goal);
+}
+
+void PlanningProblem::refuseInvalid(const std::string& which, const Pose& pose) const {
+  ob::State* state = which == "start" ? start_ : goal_;
+  if (si_->isValid(state)) return;
+  std::string why;
+  if (!si_->satisfiesBounds(state)) {
+    const acd::Box3& b = ((scenario_.bounds.hi - scenario_.bounds.lo).array() > 0).all() ? scenario_.bounds : scenario_.workspace;
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "its reference point (%.6g, %.6g, %.6g) is outside the volume [%.6g, %.6g] x [%.6g, %.6g] x [%.6g, %.6g]",
+                  pose.position.x(), pose.position.y(), pose.position.z(), b.lo.x(), b.hi.x(), b.lo.y(), b.hi.y(),
+                  b.lo.z(), b.hi.z());
+    why = buf;
+  } else {
+    why = world_->whyInvalid(position(state), orientation(state));
+    if (why.empty()) why = "not valid";
+  }
+  throw ScenarioError(scenario_.path + ": the " + which + " pose is not valid: " + why);
 }
 
 PlanningProblem::~PlanningProblem() {
@@ -122,6 +147,14 @@ void PlanningProblem::setPosition(ob::State* state, const acd::Vec3& p) const {
     auto* s = state->as<ob::RealVectorStateSpace::StateType>();
     for (int i = 0; i < 3; ++i) s->values[i] = p[i];
   }
+}
+
+acd::Vec3 PlanningProblem::bodyPoint(const ob::State* state) const {
+  return position(state) + orientation(state) * scenario_.robot.insidePoints.front();
+}
+
+void PlanningProblem::placeBody(ob::State* state, const acd::Vec3& p) const {
+  setPosition(state, p - orientation(state) * scenario_.robot.insidePoints.front());
 }
 
 acd::Vec3 PlanningProblem::position(const ob::State* state) const {
@@ -165,6 +198,10 @@ void PlanningProblem::useSampler(const std::string& name) {
   } else if (name == "bridge_test") {
     si_->setValidStateSamplerAllocator([](const ob::SpaceInformation* si) -> ob::ValidStateSamplerPtr {
       return std::make_shared<ob::BridgeTestValidStateSampler>(si);
+    });
+  } else if (name == "max_clearance") {
+    si_->setValidStateSamplerAllocator([](const ob::SpaceInformation* si) -> ob::ValidStateSamplerPtr {
+      return std::make_shared<ob::MaximizeClearanceValidStateSampler>(si);
     });
   } else if (name == "acd") {
     const double spread = spread_;

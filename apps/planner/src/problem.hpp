@@ -20,8 +20,10 @@ namespace planner {
 
 class PlanningProblem {
  public:
-  /// \throw ScenarioError when the start or the goal is in collision (naming which).
-  PlanningProblem(const Scenario& scenario, const acd::TriMesh& freeSpace, std::vector<Opening> openings);
+  /// `solids`: what the free space was cut from, named (for the messages only).
+  /// \throw ScenarioError when the start or the goal is not valid, saying why (CollisionWorld::whyInvalid).
+  PlanningProblem(const Scenario& scenario, const acd::TriMesh& freeSpace, std::vector<Opening> openings,
+                  std::vector<NamedSolid> solids = {});
 
   const ompl::base::SpaceInformationPtr& si() const { return si_; }
   const std::shared_ptr<SeedSource>& seeds() const { return seeds_; }
@@ -33,6 +35,10 @@ class PlanningProblem {
   void setPose(ompl::base::State* state, const acd::Vec3& position, const Eigen::Quaterniond& orientation) const;
   void setPosition(ompl::base::State* state, const acd::Vec3& position) const;
   acd::Vec3 position(const ompl::base::State* state) const;
+  /// The robot's body point (its first inside point, Robot::insidePoints) in the world, and
+  /// the position that puts it at p with the state's orientation kept.
+  acd::Vec3 bodyPoint(const ompl::base::State* state) const;
+  void placeBody(ompl::base::State* state, const acd::Vec3& p) const;
   Eigen::Quaterniond orientation(const ompl::base::State* state) const;
 
   ompl::base::State* startState() const { return start_; }
@@ -51,6 +57,7 @@ class PlanningProblem {
   ~PlanningProblem();
 
  private:
+  void refuseInvalid(const std::string& which, const Pose& pose) const;
   const Scenario& scenario_;
   std::vector<Opening> openings_;
   std::unique_ptr<CollisionWorld> world_;

@@ -1,5 +1,8 @@
 #include "scenario.hpp"
 
+#include "inside_points.hpp"
+#include "ompl_app_import.hpp"
+
 #include <acd/diagnosis.hpp>
 #include <acd/inside.hpp>
 #include <acd/io.hpp>
@@ -18,7 +21,8 @@
 namespace planner {
 
 const std::vector<std::string>& knownSamplers() {
-  static const std::vector<std::string> names{"uniform", "acd", "gaussian", "obstacle_based", "bridge_test"};
+  static const std::vector<std::string> names{"uniform", "acd", "gaussian", "obstacle_based", "bridge_test",
+                                              "max_clearance"};
   return names;
 }
 
@@ -61,6 +65,9 @@ namespace {
 class Parser {
  public:
   Parser(std::string source, std::string baseDir) : source_(std::move(source)), baseDir_(std::move(baseDir)) {}
+
+  // frame: ompl_app: mesh files in OMPL.app's frame (COLLADA's up axis and unit applied).
+  bool omplAppFrame_ = false;
 
   [[noreturn]] void fail(const std::string& what) const { throw ScenarioError(source_ + ": " + what); }
 
@@ -131,6 +138,11 @@ class Parser {
     if (!std::filesystem::exists(file)) fail("'" + where + "': " + file + ": file not found");
     acd::ReadResult read = acdsandbox::readModel(file);
     if (!read.status.ok()) fail("'" + where + "': " + read.status.message);
+    if (omplAppFrame_) {  // the sandbox said the file is safe to read; now read it as OMPL.app does
+      std::optional<OmplAppImport> imported = importAsOmplApp(file, true);
+      if (!imported) fail("'" + where + "': " + file + ": assimp finds no triangles in it");
+      return std::move(imported->triangles);
+    }
     return std::move(read.mesh);
   }
 
@@ -161,8 +173,9 @@ class Parser {
     if (node["axis"] || node["theta"]) {  // OMPL.app: a rotation of theta radians about axis
       if (!node["axis"] || !node["theta"]) fail("'" + where + "': 'axis' and 'theta' go together");
       const acd::Vec3 axis = vec3(node["axis"], where + ".axis");
-      if (axis.norm() < 1e-12) fail("'" + where + ".axis' must not be zero");
-      p.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(finite(node["theta"], where + ".theta"), axis.normalized()));
+      const double theta = finite(node["theta"], where + ".theta");
+      // OMPL.app (SO3StateSpace::setAxisAngle) takes a zero axis as no rotation.
+      if (axis.norm() > 0) p.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(theta, axis.normalized()));
     }
     if (node["orientation"]) {
       const YAML::Node& q = node["orientation"];
@@ -218,10 +231,12 @@ class Parser {
       acd::TriMesh triangles = meshFile(node["mesh"], "robot.mesh");
       if (node["center"] && scalar<bool>(node["center"], "robot.center")) {
         if (node["translate"]) fail("'robot.center' and 'robot.translate' exclude each other");
-        acd::Vec3 mean = acd::Vec3::Zero();
-        for (const acd::Vec3& v : triangles.vertices) mean += v;
-        mean /= static_cast<double>(triangles.vertices.size());
-        for (acd::Vec3& v : triangles.vertices) v -= mean;
+        // OMPL.app's reference point (robot_center.hpp); an SE(2) robot keeps its heights.
+        const std::optional<OmplAppImport> imported = importAsOmplApp(r.meshPath, omplAppFrame_);
+        if (!imported) fail("'robot.mesh': " + r.meshPath + ": assimp finds no vertices to centre the robot on");
+        std::optional<acd::Vec3> c = imported->center;
+        if (node["planar"] && scalar<bool>(node["planar"], "robot.planar")) c->z() = 0.0;
+        for (acd::Vec3& v : triangles.vertices) v -= *c;
       }
       r.mesh = transformed(std::move(triangles), node, "robot");
       // Point location needs a closed robot; a soup is closed by repair or a thin wrap.
@@ -233,9 +248,8 @@ class Parser {
       if (!solid.ok || solid.pieces.empty()) fail("'robot.mesh': " + r.meshPath + ": cannot be made a closed solid: " + solid.error);
       r.solid = concatenatedPieces(solid);
       r.solidSummary = solid.summary();
-      // The validity test relies on the reference point lying inside the robot (docs/PLANNER.md).
-      if (!acd::InsideTest(r.solid).inside(acd::Vec3::Zero()))
-        fail("'robot.mesh': the reference point (the origin of the mesh's frame, after 'translate') is not inside the robot");
+      r.insidePoints = insidePoints(solid.pieces, acd::Vec3::Zero());
+      if (r.insidePoints.empty()) fail("'robot.mesh': " + r.meshPath + " encloses no volume");
     } else {
       fail("'robot.type' must be point, sphere, box or mesh, not '" + type + "'");
     }
@@ -251,12 +265,23 @@ class Parser {
     if (!root || root.IsNull()) fail("empty scenario");
     checkKeys(root, "", {"name", "description", "expected", "workspace", "volume", "world", "obstacles", "free_space",
                          "wrap", "robot", "start", "goal", "samplers", "samples", "trials", "sweep", "sweep_trials",
-                         "prm", "acd", "seed", "output"});
+                         "prm", "acd", "seed", "output", "validity", "frame"});
+    if (root["frame"]) {
+      const std::string f = scalar<std::string>(root["frame"], "frame");
+      if (f != "as_written" && f != "ompl_app") fail("'frame' must be as_written or ompl_app, not '" + f + "'");
+      omplAppFrame_ = f == "ompl_app";
+    }
     Scenario s;
     if (root["name"]) s.name = scalar<std::string>(root["name"], "name");
     if (root["description"]) s.description = scalar<std::string>(root["description"], "description");
     if (root["expected"]) s.expected = scalar<std::string>(root["expected"], "expected");
     readObstacles(root, s);
+    if (root["validity"]) {
+      const std::string v = scalar<std::string>(root["validity"], "validity");
+      if (v == "free_space") s.validity = Validity::FreeSpace;
+      else if (v == "triangles") s.validity = Validity::Triangles;
+      else fail("'validity' must be free_space or triangles, not '" + v + "'");
+    }
     if (!root["robot"]) fail("missing key 'robot'");
     s.robot = robot(root["robot"]);
     readSpace(root, s);
@@ -278,8 +303,10 @@ class Parser {
       if (std::abs(s.start.position.z() - s.goal.position.z()) > 1e-12)
         fail("planar robot: 'start' and 'goal' must have the same z");
     }
+    // An OMPL.app problem's bounds are set by its reader (ompl_app_problem.cpp), which leaves
+    // a start or goal outside them to the validity test, as OMPL.app does.
     for (const auto& [p, name] : {std::pair<const Pose*, const char*>{&s.start, "start"}, {&s.goal, "goal"}})
-      if (((p->position - s.bounds.lo).array() < 0).any() || ((p->position - s.bounds.hi).array() > 0).any())
+      if (!omplAppFrame_ && (((p->position - s.bounds.lo).array() < 0).any() || ((p->position - s.bounds.hi).array() > 0).any()))
         fail("'" + std::string(name) + "' position is outside the " + (root["volume"] ? "volume" : "workspace"));
     readRuns(root, s);
     return s;

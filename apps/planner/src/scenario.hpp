@@ -35,6 +35,10 @@ struct Robot {
   std::string solidSummary;                    // mesh: how the solid was made (solid_obstacles.hpp)
   std::string meshPath;                        // mesh
   bool planar = false;                         // SE(2): moves in the xy-plane at the start's z, turns about z
+  /// Points strictly inside the robot, one per closed piece, in its frame (inside_points.hpp);
+  /// the first is the robot's body point for the samplers. The reference point (the frame's
+  /// origin) may lie anywhere, inside the robot or not.
+  std::vector<acd::Vec3> insidePoints{acd::Vec3::Zero()};
   /// Largest distance from the reference point to the robot's surface.
   double boundingRadius() const;
   /// Smallest extent of the robot's bounding box (2 radius for a sphere, 0 for a point): no
@@ -51,6 +55,13 @@ struct Obstacle {
   bool box = false;             // an axis-aligned box: closed as it is
 };
 
+/// What makes a pose valid. `FreeSpace`: the robot touches none of the obstacles' triangles
+/// (nor the workspace's walls) and lies in the free space (its inside points in the free
+/// space's solid, no obstacle piece inside it). `Triangles`: OMPL.app's rule, the robot
+/// touches none of the environment's triangles (a robot wholly inside a closed obstacle is
+/// valid there too). Either way the reference point stays within `volume`.
+enum class Validity { FreeSpace, Triangles };
+
 struct PrmSettings {
   int neighbors = 10;             // k of the k-nearest connection strategy
   double resolution = 0.002;      // motion checking step, fraction of the space's maximum extent
@@ -63,6 +74,21 @@ struct AcdSamplerSettings {
   int orientationTries = 20;      // random orientations tried at one free position
   double alignedFraction = 0.5;   // share of the opening samples posed aligned to the opening (turning robots)
   double tilt = 0.1;              // std. deviation of the aligned poses' random tilt, radians
+};
+
+/// One planner of the race (--race), as OMPL.app's [planner] section names it ("rrtconnect",
+/// "kpiece"...), with its parameters ("range" -> "0.5"); a name may come more than once.
+struct PlannerEntry {
+  std::string name;
+  std::vector<std::pair<std::string, std::string>> params;
+};
+
+/// The race against OMPL's planners: OMPL.app's [benchmark] time_limit and run_count, and the
+/// planners its [planner] section lists (raced besides the standard set, ompl_planners.hpp).
+struct RaceSettings {
+  double timeLimit = 30.0;
+  int runs = 20;
+  std::vector<PlannerEntry> planners;
 };
 
 struct Scenario {
@@ -78,7 +104,9 @@ struct Scenario {
   bool freeSpaceGiven = false;
   Robot robot;
   Pose start, goal;
-  std::vector<std::string> samplers{"uniform", "acd", "gaussian", "obstacle_based", "bridge_test"};
+  Validity validity = Validity::FreeSpace;
+  RaceSettings race;
+  std::vector<std::string> samplers{"uniform", "acd", "gaussian", "obstacle_based", "bridge_test"};  // of knownSamplers()
   int samples = 200;
   int trials = 100;
   std::vector<int> sweep{50, 100, 200, 300, 500, 750, 1000};  // sample counts for the plot

@@ -38,8 +38,8 @@ bool writeN90Csv(const std::string& path, const std::vector<N90Search>& searches
 
 void printRaceTable(std::ostream& out, const std::vector<PlannerTimes>& race, double timeLimit) {
   char line[256];
-  std::snprintf(line, sizeof line, "%-12s %5s %7s %11s %13s\n", "planner", "runs", "solved", "median [s]", "90% by [s]");
-  out << "OMPL planners, first solution within " << timeLimit << " s per run (PRM_acd: ACD preprocessing included):\n"
+  std::snprintf(line, sizeof line, "%-20s %5s %7s %11s %13s\n", "planner", "runs", "solved", "median [s]", "90% by [s]");
+  out << "planners, first solution within " << timeLimit << " s per run (PRM_acd: ACD preprocessing included):\n"
       << line;
   for (const PlannerTimes& t : race) {
     const double t90 = t.seconds90();
@@ -48,7 +48,7 @@ void printRaceTable(std::ostream& out, const std::vector<PlannerTimes>& race, do
       std::snprintf(by, sizeof by, "%13.2f", t90);
     else
       std::snprintf(by, sizeof by, "%13s", ("> " + std::to_string(static_cast<int>(timeLimit))).c_str());
-    std::snprintf(line, sizeof line, "%-12s %5d %6.0f%% %11.2f %s\n", t.planner.c_str(), t.runs,
+    std::snprintf(line, sizeof line, "%-20s %5d %6.0f%% %11.2f %s\n", t.planner.c_str(), t.runs,
                   t.runs ? 100.0 * t.solved / t.runs : 0.0, t.medianSeconds(), by);
     out << line;
   }
@@ -62,6 +62,15 @@ bool writeRaceCsv(const std::string& path, const std::vector<PlannerTimes>& race
     if (t.seconds90() >= 0) out << t.seconds90();
     out << ',' << t.addedSeconds << '\n';
   }
+  return static_cast<bool>(out);
+}
+
+bool writeRaceRunsCsv(const std::string& path, const std::vector<PlannerTimes>& race) {
+  std::ofstream out(path);
+  out << "planner,run,solved,seconds\n";
+  for (const PlannerTimes& t : race)
+    for (std::size_t i = 0; i < t.seconds.size(); ++i)
+      out << t.planner << ',' << i << ',' << (t.solvedRuns[i] ? 1 : 0) << ',' << t.seconds[i] << '\n';
   return static_cast<bool>(out);
 }
 

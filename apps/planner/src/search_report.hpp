@@ -22,4 +22,7 @@ void printRaceTable(std::ostream& out, const std::vector<PlannerTimes>& race, do
 /// planner,runs,solved,median_seconds,seconds_90,added_seconds (seconds_90 empty when fewer than 90 % solved).
 bool writeRaceCsv(const std::string& path, const std::vector<PlannerTimes>& race);
 
+/// Every run of the race (planner, run, solved, seconds): the data of apps/planner/plot_race.py.
+bool writeRaceRunsCsv(const std::string& path, const std::vector<PlannerTimes>& race);
+
 }  // namespace planner

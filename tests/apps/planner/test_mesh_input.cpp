@@ -80,7 +80,9 @@ TEST(MeshInput, BrokenColladaIsNamed) {
   EXPECT_NE(m.status.message.find("broken.dae"), std::string::npos);
 }
 
-TEST(MeshInput, MeshRobotMustContainItsReferencePoint) {
+TEST(MeshInput, MeshRobotsReferencePointMayLieOutsideIt) {
+  // OMPL.app's reference point is the mean of the vertices, outside a ring or a U: accepted,
+  // and the point location uses a point inside the robot instead.
   acdtest::TempDir dir("planner_robot");
   acd::writeMesh(dir / "bar.off", acd::shapes::box(Vec3(-0.5, -0.1, -0.1), Vec3(0.5, 0.1, 0.1)));
   const std::string base = R"(
@@ -92,14 +94,15 @@ goal: {position: [3, 3, 3]}
   const planner::Scenario s = planner::parseScenario(base, "robot.yaml", dir.path().string());
   EXPECT_EQ(s.robot.kind, planner::RobotKind::Mesh);
   EXPECT_NEAR(s.robot.boundingRadius(), std::sqrt(0.25 + 0.01 + 0.01), 1e-9);
+  ASSERT_EQ(s.robot.insidePoints.size(), 1u);
+  EXPECT_TRUE(s.robot.insidePoints[0].isZero());  // the reference point, where it is inside
   std::string shifted = base;
   shifted.replace(shifted.find("mesh: bar.off}"), 14, "mesh: bar.off, translate: [2, 0, 0]}");
-  try {
-    planner::parseScenario(shifted, "robot.yaml", dir.path().string());
-    FAIL() << "no error";
-  } catch (const planner::ScenarioError& e) {
-    EXPECT_NE(std::string(e.what()).find("reference point"), std::string::npos) << e.what();
-  }
+  const planner::Scenario t = planner::parseScenario(shifted, "robot.yaml", dir.path().string());
+  ASSERT_EQ(t.robot.insidePoints.size(), 1u);
+  const Vec3 p = t.robot.insidePoints[0];
+  EXPECT_TRUE(p.x() > 1.5 && p.x() < 2.5 && std::abs(p.y()) < 0.1 && std::abs(p.z()) < 0.1) << p.transpose();
+  EXPECT_NEAR(t.robot.boundingRadius(), std::sqrt(2.5 * 2.5 + 0.01 + 0.01), 1e-9);
 }
 
 TEST(MeshInput, FreeSpaceGivenDirectly) {
