@@ -2,9 +2,13 @@
 """Converts an OMPL.app problem file (.cfg, section [problem]) into a planner scenario (YAML),
 printed on stdout. Usage: ompl_app_cfg_to_yaml.py PROBLEM.cfg > scenario.yaml
 
-Mesh paths are kept as written (relative to the .cfg; put the YAML beside it). OMPL.app's
-[benchmark] time_limit and run_count become a comment with the matching `planner --race`
-options. SE(2) problems (start.theta without an axis) are not converted."""
+The planner reads .cfg files directly (`planner PROBLEM.cfg`); the YAML is for editing a
+problem into a scenario of one's own. Mesh paths are kept as written (relative to the .cfg; put
+the YAML beside it); the meshes are read in OMPL.app's frame (`frame: ompl_app`) and poses are
+valid as OMPL.app judges them (`validity: triangles`). OMPL.app's [benchmark] time_limit and
+run_count become a comment with the matching `planner --race` options. Without a volume the
+YAML bounds the reference point by the environment's box alone; OMPL.app (and `planner
+PROBLEM.cfg`) grow that box to hold the start and the goal."""
 import configparser
 import sys
 
@@ -16,11 +20,23 @@ def number(section, key):
     return float(value)
 
 
-def pose(section, which):
-    position = [number(section, "%s.%s" % (which, c)) for c in "xyz"]
-    if "%s.axis.x" % which not in section:
-        sys.exit("%s: %s has no axis (an SE(2) problem); not converted" % (sys.argv[1], which))
-    axis = [number(section, "%s.axis.%s" % (which, c)) for c in "xyz"]
+def is_se2(section):
+    """OMPL.app's rule: x, y and theta for both poses, and no z and no axis."""
+    for w in ("start", "goal"):
+        if any("%s.%s" % (w, k) not in section for k in ("x", "y", "theta")):
+            return False
+        if any("%s.%s" % (w, k) in section for k in ("z", "axis.x", "axis.y", "axis.z")):
+            return False
+    return True
+
+
+def pose(section, which, se2):
+    if se2:  # in the xy-plane at z = 0, turned about z
+        position = [number(section, "%s.x" % which), number(section, "%s.y" % which), 0.0]
+        axis = [0.0, 0.0, 1.0]
+    else:
+        position = [number(section, "%s.%s" % (which, c)) for c in "xyz"]
+        axis = [number(section, "%s.axis.%s" % (which, c)) for c in "xyz"]
     theta = number(section, "%s.theta" % which)
     return "{position: [%s], axis: [%s], theta: %s}" % (
         ", ".join("%.10g" % v for v in position), ", ".join("%.10g" % v for v in axis), "%.10g" % theta)
@@ -55,13 +71,20 @@ def main():
     out = []
     if "name" in p:
         out.append("name: %s" % p["name"])
+    se2 = is_se2(p)
+    out.append("frame: ompl_app       # meshes as OMPL.app reads them (COLLADA's up axis and unit applied)")
+    out.append("validity: triangles   # OMPL.app's rule: the robot touches none of the environment's triangles")
     out.append("world: %s" % p.get("world", ""))
-    out.append("robot: %s            # a mesh robot centred on its vertices' mean, as OMPL.app does" % p.get("robot", ""))
-    out.append("start: " + pose(p, "start"))
-    out.append("goal: " + pose(p, "goal"))
+    if se2:
+        out.append("robot: {type: mesh, mesh: %s, center: true, planar: true}   # SE(2)" % p.get("robot", ""))
+    else:
+        out.append("robot: %s            # a mesh robot centred on its vertices' mean, as OMPL.app does" % p.get("robot", ""))
+    out.append("start: " + pose(p, "start", se2))
+    out.append("goal: " + pose(p, "goal", se2))
     if "volume.min.x" in p:
-        lo = ", ".join("%.10g" % number(p, "volume.min." + c) for c in "xyz")
-        hi = ", ".join("%.10g" % number(p, "volume.max." + c) for c in "xyz")
+        # SE(2): z is not bounded (the robot stays at z = 0); any range holding 0 will do.
+        lo = ", ".join("%.10g" % (number(p, "volume.min." + c) if c != "z" or not se2 else -1) for c in "xyz")
+        hi = ", ".join("%.10g" % (number(p, "volume.max." + c) if c != "z" or not se2 else 1) for c in "xyz")
         out.append("volume: {min: [%s], max: [%s]}" % (lo, hi))
     else:
         out.append("# no volume: the reference point's bounds are the world's bounding box, as in OMPL.app")

@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 namespace scenes {
@@ -47,7 +48,7 @@ void squareRing(Soup& soup, const std::string& name, double outer, double bar, d
 
 struct Cfg {
   std::ostringstream s;
-  explicit Cfg(const std::string& name) { s << "[problem]\nname=" << name << "\nworld=" << name << "_env.dae\nrobot=" << name << "_robot.dae\n"; }
+  explicit Cfg(const std::string& name) { s << std::setprecision(10) << "[problem]\nname=" << name << "\nworld=" << name << "_env.dae\nrobot=" << name << "_robot.dae\n"; }
   void se3(const std::string& which, const Vec3& p, const Vec3& axis, double theta) {
     s << which << ".x=" << p.x() << "\n" << which << ".y=" << p.y() << "\n" << which << ".z=" << p.z() << "\n"
       << which << ".axis.x=" << axis.x() << "\n" << which << ".axis.y=" << axis.y() << "\n" << which << ".axis.z=" << axis.z()

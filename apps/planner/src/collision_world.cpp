@@ -45,6 +45,7 @@ CollisionWorld::CollisionWorld(const acd::TriMesh& freeSpace, const Robot& robot
   // Shells with negative volume bound cavities of the free space: obstacles floating in it.
   for (const acd::TriMesh& shell : acd::splitEdgeConnected(freeSpace))
     if (acd::signedVolume(shell) < 0) islandProbes_.push_back(shell.vertices.front());
+  workspace_ = acd::boundingBox(freeSpace);
   names_ = {"the free space's boundary"};
   firstTriangle_ = {0};
   setUpFcl(freeSpace);
@@ -67,6 +68,7 @@ CollisionWorld::CollisionWorld(const acd::TriMesh& freeSpace, const std::vector<
     faces += static_cast<int>(o.triangles.faces.size());
   }
   islandProbes_ = pieceProbes(acd::concatenate(parts));
+  workspace_ = workspace;
   parts.push_back(acd::shapes::box(workspace.lo, workspace.hi));
   names_.push_back("the workspace's walls");
   firstTriangle_.push_back(faces);
@@ -170,6 +172,8 @@ std::string CollisionWorld::whyInvalid(const acd::Vec3& position, const Eigen::Q
     std::string s = "the robot lies outside the free space: its inside point " + point(p) + " is ";
     for (const NamedSolid& solid : solids_)
       if (acd::InsideTest(solid.mesh).inside(p)) return s + "inside " + solid.name + " (" + solid.how + ")";
+    if (((p - workspace_.lo).array() >= 0).all() && ((workspace_.hi - p).array() >= 0).all())
+      return s + "inside an obstacle's solid";
     return s + "outside the workspace";
   }
   const int island = robot_.kind == RobotKind::Point ? -1 : islandInside(position, orientation);

@@ -77,6 +77,7 @@ class CollisionWorld {
   std::vector<std::string> names_;       // environment part names, starting at firstTriangle_
   std::vector<int> firstTriangle_;
   std::vector<NamedSolid> solids_;
+  acd::Box3 workspace_;
   std::unique_ptr<Fcl> fcl_;
   mutable long checks_ = 0;
 };

@@ -104,8 +104,8 @@ TEST(PlannerCli, BadScenariosExitTwoNamingTheProblem) {
   const std::vector<Case> cases{
       {"seed: 11", "sead: 11", "unknown key 'sead'"},
       {"robot: {type: point}", "robot: {type: mesh, mesh: missing_robot.stl}", "missing_robot.stl"},
-      {"start: {position: [0.3, 0.3, 0.3]}", "start: {position: [2.0, 0.3, 0.3]}", "start pose is in collision"},
-      {"goal: {position: [3.7, 1.7, 1.7]}", "goal: {position: [2.0, 1.7, 1.7]}", "goal pose is in collision"},
+      {"start: {position: [0.3, 0.3, 0.3]}", "start: {position: [2.0, 0.3, 0.3]}", "start pose is not valid: the robot lies outside the free space"},
+      {"goal: {position: [3.7, 1.7, 1.7]}", "goal: {position: [2.0, 1.7, 1.7]}", "goal pose is not valid: the robot lies outside the free space"},
   };
   for (const Case& c : cases) {
     std::string text = kScenario;

@@ -115,7 +115,7 @@ std::string problemErrorOf(const std::string& text) {
   try {
     const planner::Scenario s = planner::parseScenario(text, "test.yaml", ".");
     const planner::Preprocessing pre = planner::preprocess(s);
-    planner::PlanningProblem problem(s, pre.freeSpace, pre.openings);
+    planner::PlanningProblem problem(s, pre.freeSpace, pre.openings, pre.solids);
   } catch (const ScenarioError& e) {
     return e.what();
   }
@@ -124,10 +124,12 @@ std::string problemErrorOf(const std::string& text) {
 
 TEST(Scenario, StartOrGoalInCollisionIsNamed) {
   EXPECT_EQ(problemErrorOf(kValid), "");
-  // Reference point in the wall.
-  EXPECT_NE(problemErrorOf(replaced(kValid, "[0.5, 1, 1]", "[2.0, 1, 1]")).find("start pose is in collision"), std::string::npos);
+  // Reference point in the wall: the sphere touches the wall's triangles (FCL says so first).
+  const std::string inWall = problemErrorOf(replaced(kValid, "[0.5, 1, 1]", "[2.0, 1, 1]"));
+  EXPECT_NE(inWall.find("start pose is not valid: the robot touches obstacles[0]"), std::string::npos) << inWall;
   // Reference point free, but the sphere reaches into the wall.
-  EXPECT_NE(problemErrorOf(replaced(kValid, "[3.5, 1, 1]", "[2.15, 1, 1]")).find("goal pose is in collision"), std::string::npos);
+  const std::string reaches = problemErrorOf(replaced(kValid, "[3.5, 1, 1]", "[2.15, 1, 1]"));
+  EXPECT_NE(reaches.find("goal pose is not valid: the robot touches obstacles[0]"), std::string::npos) << reaches;
 }
 
 TEST(Scenario, FloatingObstacleIsAHoleOfTheAcd) {

@@ -49,7 +49,7 @@ std::string problemErrorOf(const std::string& text) {
   try {
     const planner::Scenario s = planner::parseScenario(text, "soup.yaml", PLANNER_SCENARIO_DIR);
     const planner::Preprocessing pre = planner::preprocess(s);
-    planner::PlanningProblem problem(s, pre.freeSpace, pre.openings);
+    planner::PlanningProblem problem(s, pre.freeSpace, pre.openings, pre.solids);
   } catch (const planner::ScenarioError& e) {
     return e.what();
   }
@@ -106,7 +106,11 @@ goal: {position: [5.5, 1.5, 1.5]}
 volume: {min: [0, -1, 0], max: [7, 3, 3]}
 samplers: [uniform]
 )";
-  EXPECT_NE(problemErrorOf(text).find("the start pose is in collision"), std::string::npos) << problemErrorOf(text);
+  EXPECT_NE(problemErrorOf(text).find("the start pose is not valid: the robot lies outside the free space: its inside "
+                                     "point (3.5, -0.5, 1.5) is inside world (generated/twisty_env.dae) piece 0 (closed or "
+                                     "repaired exactly)"),
+            std::string::npos)
+      << problemErrorOf(text);
   std::string free = text;
   free.replace(free.find("[3.5, -0.5, 1.5]"), 16, "[1.5, -0.5, 1.5]");
   EXPECT_EQ(problemErrorOf(free), "");
