@@ -185,3 +185,24 @@ TEST(PlannerCli, AMalformedSceneIsRefusedNotFatal) {
 }
 
 }  // namespace
+
+TEST(PlannerCli, OmplAppProblemFileRacesTheListedPlanners) {
+  // planner_list.cfg (generated, a CTest fixture) lists rrtconnect with range 0.5 and aps.
+  acdtest::TempDir dir("planner_cli_cfg");
+  const std::string cfg = std::string(PLANNER_SCENARIO_DIR) + "/generated/ompl_app/planner_list.cfg";
+  const auto run = acdtest::runTool(PLANNER_BIN, acdtest::quote(cfg) + " --race --no-fixed --time-limit 2 --runs 2"
+                                        " --planners PRM_acd,RRTConnect_cfg2 -q -o " + acdtest::quote(dir / "out"), dir);
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_NE(run.err.find("'aps' is not raced"), std::string::npos) << run.err;
+  const std::string race = acdtest::slurp(dir / "out/race.csv");
+  EXPECT_NE(race.find("\nRRTConnect_cfg2,2,"), std::string::npos) << race;
+  EXPECT_NE(race.find("\nPRM_acd,2,"), std::string::npos) << race;
+  EXPECT_EQ(race.find("KPIECE1"), std::string::npos) << race;
+  const std::string runs = acdtest::slurp(dir / "out/race_runs.csv");
+  EXPECT_EQ(std::count(runs.begin(), runs.end(), '\n'), 5) << runs;
+  EXPECT_NE(acdtest::slurp(dir / "out/ompl_benchmark.log").find("geometric_RRTConnect_cfg2"), std::string::npos);
+  const auto unknown = acdtest::runTool(PLANNER_BIN, acdtest::quote(cfg) + " --race --no-fixed --planners Nope -q -o " +
+                                                         acdtest::quote(dir / "out2"), dir);
+  EXPECT_EQ(unknown.code, 3) << unknown.err;
+  EXPECT_NE(unknown.err.find("unknown planner 'Nope'"), std::string::npos) << unknown.err;
+}
