@@ -53,9 +53,12 @@ double Robot::thickness() const {
 WrapSettings resolvedWrap(const Scenario& scenario) {
   double t = scenario.robot.thickness();
   if (t <= 0) t = 0.02 * scenario.workspace.size().norm();
+  // With validity by the triangles alone the wrap only steers the acd sampler, so it may be
+  // coarser: a passage narrower than the robot's thickness is one it cannot take anyway.
+  const bool steersOnly = scenario.validity == Validity::Triangles;
   WrapSettings w;
-  w.alpha = scenario.wrap.alpha > 0 ? scenario.wrap.alpha : t / 2;
-  w.offset = scenario.wrap.offset > 0 ? scenario.wrap.offset : t / 40;
+  w.alpha = scenario.wrap.alpha > 0 ? scenario.wrap.alpha : steersOnly ? t : t / 2;
+  w.offset = scenario.wrap.offset > 0 ? scenario.wrap.offset : steersOnly ? t / 20 : t / 40;
   return w;
 }
 
