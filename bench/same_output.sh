@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # Check that a change left the decomposition untouched: decompose the twelve corpus models at
-# τ = 0.05 with a build's acd and compare the output byte by byte with a reference folder.
+# τ = 0.05 (or --tau) with a build's acd and compare the output byte by byte with a reference folder.
 #
-#   bench/same_output.sh --acd BUILD/bin/acd --out DIR [--ref REFDIR] [--threads N] [--models "..."]
+#   bench/same_output.sh --acd BUILD/bin/acd --out DIR [--ref REFDIR] [--tau T] [--threads N] [--models "..."]
 #
 #   --acd PATH     the CLI to run (default: build/bin/acd)
 #   --out DIR      where the runs write (DIR/MODEL/: component_NNN.off, hulls.obj, report.json)
 #   --ref REFDIR   a folder written the same way by the build before the change; without it the
 #                  script only writes DIR (use that to make the reference)
+#   --tau T        the tolerance (default 0.05)
 #   --threads N    passed to acd decompose (default: acd's own default)
 #   --models LIST  corpus model names, files data/meshes/NAME.off (default: the 12 of run_corpus.sh)
 #
@@ -26,13 +27,14 @@ THREADS=()
 MODELS="elephant armadillo bunny00 camel cow dino homer handle knot eight mushroom ChineseDragon-10kv"
 TAU=0.05
 
-usage() { sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; }
 while [[ $# -gt 0 ]]; do
     case "$1" in
         --acd) ACD="$2"; shift 2 ;;
         --out) OUT="$2"; shift 2 ;;
         --ref) REF="$2"; shift 2 ;;
         --threads) THREADS=(--threads "$2"); shift 2 ;;
+        --tau) TAU="$2"; shift 2 ;;
         --models) MODELS="$2"; shift 2 ;;
         -h|--help) usage; exit 0 ;;
         *) echo "same_output: unknown option $1" >&2; usage >&2; exit 2 ;;

@@ -1,9 +1,9 @@
 // wrap_parameters MODEL... : the alpha wrap of each model at several (alpha, offset) pairs in
 // normalised units, with its two-sided Hausdorff distance to the model, face count and time.
 // The table behind the choice in acd::wrapParametersFor (docs/ALGORITHM.md, "The watertight wrap").
-#include <acd/alpha_wrap.hpp>
+#include <acd/algo/alpha_wrap.hpp>
 #include <acd/io.hpp>
-#include <acd/normalize.hpp>
+#include <acd/algo/normalize.hpp>
 
 #include <cstdio>
 #include <string>

@@ -9,7 +9,7 @@
 #include <acd/decompose.hpp>
 #include <acd/io.hpp>
 #include <acd/mesh.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <fuzzer/FuzzedDataProvider.h>
 

@@ -5,7 +5,7 @@
 #pragma once
 
 #include <acd/mesh.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 #include <acd/status.hpp>
 
 #include <cmath>

@@ -9,7 +9,7 @@
 #include <acd/algo/surface_graph.hpp>
 #include <acd/decompose.hpp>
 #include <acd/mesh.hpp>
-#include <acd/normalize.hpp>
+#include <acd/algo/normalize.hpp>
 
 #include <gtest/gtest.h>
 

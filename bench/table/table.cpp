@@ -9,7 +9,7 @@
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/io.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <nlohmann/json.hpp>
 

@@ -6,7 +6,7 @@
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/exact_decomposition.hpp>
-#include <acd/hull.hpp>
+#include <acd/algo/hull.hpp>
 #include <acd/io.hpp>
 #include <acd/report.hpp>
 #include <acd/surface_exact.hpp>

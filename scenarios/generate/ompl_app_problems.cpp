@@ -84,7 +84,7 @@ OmplAppProblem ringRobot() {
   OmplAppProblem p;
   p.what = "a square ring robot: its reference point is the middle of its hole";
   p.scene.name = "ring_robot";
-  wallWithWindow(p.scene.environment, 0.95, 2.05, 1.3, 1.7);
+  wallWithWindow(p.scene.environment, 0.8, 2.2, 1.25, 1.75);  // 0.2 to spare across the ring, lying flat
   squareRing(p.scene.robot, "ring", 1.0, 0.15, 0, turn(90, Vec3::UnitY()));  // drawn upright (in the yz-plane)
   Cfg c(p.scene.name);
   c.se3("start", {1.5, 1.5, 1.5}, {0, 0, 1}, 0);

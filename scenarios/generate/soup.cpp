@@ -1,6 +1,6 @@
 #include "soup.hpp"
 
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <algorithm>
 

@@ -5,10 +5,10 @@
 // capped run in a child process is tested in tests/sandbox/test_exact_solid.cpp.
 #include <acd/decompose.hpp>
 #include <acd/exact_decomposition.hpp>
-#include <acd/hull.hpp>
-#include <acd/inside.hpp>
+#include <acd/algo/hull.hpp>
+#include <acd/algo/inside.hpp>
 #include <acd/io.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

@@ -2,10 +2,10 @@
 // patches that partition the faces, are edge-connected and lie on their own hull's boundary
 // (checked by the definition and, independently, by a hull).
 #include <acd/decompose.hpp>
-#include <acd/hull.hpp>
+#include <acd/algo/hull.hpp>
 #include <acd/io.hpp>
-#include <acd/normalize.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/normalize.hpp>
+#include <acd/algo/shapes.hpp>
 #include <acd/surface_exact.hpp>
 
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/io.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

@@ -1,10 +1,10 @@
 // Bridge estimation (Appendix A, Algorithm 2) and concavity (Section 4.1, Observation 4.1).
 #include <acd/algo/concavity.hpp>
 #include <acd/algo/surface_graph.hpp>
-#include <acd/hull.hpp>
+#include <acd/algo/hull.hpp>
 #include <acd/io.hpp>
-#include <acd/normalize.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/normalize.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

@@ -4,8 +4,8 @@
 #include <acd/algo/surface_graph.hpp>
 #include <acd/decompose.hpp>
 #include <acd/io.hpp>
-#include <acd/normalize.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/normalize.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

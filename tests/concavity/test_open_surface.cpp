@@ -3,8 +3,8 @@
 #include <acd/algo/concavity.hpp>
 #include <acd/algo/open_surface.hpp>
 #include <acd/algo/surface_graph.hpp>
-#include <acd/hull.hpp>
-#include <acd/normalize.hpp>
+#include <acd/algo/hull.hpp>
+#include <acd/algo/normalize.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // cutByPlane on hand-made cases: generic, through vertices and edges, coplanar with faces, missing.
 #include <acd/algo/cut.hpp>
 #include <acd/mesh.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // The choice of a cut among candidate planes (cut_choice.cpp): the lookahead on shapes whose best
 // cut is known, its ties and repeats, the hull points it scores with, and the candidates' shape.
 #include <acd/algo/cut_choice.hpp>
-#include <acd/hull.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/hull.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // fitCutPlane and bisectorPlane against planes known from the construction of each case.
 #include <acd/algo/cut_plane.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

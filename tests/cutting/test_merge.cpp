@@ -1,7 +1,7 @@
 #include <acd/algo/cut.hpp>
 #include <acd/algo/merge.hpp>
 #include <acd/decompose.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

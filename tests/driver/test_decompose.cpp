@@ -5,10 +5,10 @@
 #include <acd/algo/surface_graph.hpp>
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
-#include <acd/hull.hpp>
+#include <acd/algo/hull.hpp>
 #include <acd/io.hpp>
-#include <acd/normalize.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/normalize.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest-spi.h>
 #include <gtest/gtest.h>

@@ -4,8 +4,8 @@
 // the tests' own distance code.
 #include <acd/decompose.hpp>
 #include <acd/io.hpp>
-#include <acd/normalize.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/normalize.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include "helpers.hpp"
 

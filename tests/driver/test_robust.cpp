@@ -3,15 +3,15 @@
 // components are checked with the tests' own geometry (helpers.hpp), not the library's. Each
 // repair, the shells and the wrap have their own tests in tests/prepare/.
 #include <acd/algo/shells.hpp>
-#include <acd/alpha_wrap.hpp>
+#include <acd/algo/alpha_wrap.hpp>
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
-#include <acd/hull.hpp>
+#include <acd/algo/hull.hpp>
 #include <acd/io.hpp>
-#include <acd/normalize.hpp>
+#include <acd/algo/normalize.hpp>
 #include <acd/repair.hpp>
 #include <acd/robust.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

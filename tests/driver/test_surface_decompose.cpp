@@ -2,10 +2,10 @@
 // and each is within tau, by the library's measure and by an independent lower bound.
 #include <acd/algo/surface_graph.hpp>
 #include <acd/diagnosis.hpp>
-#include <acd/hull.hpp>
+#include <acd/algo/hull.hpp>
 #include <acd/io.hpp>
-#include <acd/normalize.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/normalize.hpp>
+#include <acd/algo/shapes.hpp>
 #include <acd/surface_decompose.hpp>
 
 #include <gtest/gtest.h>

@@ -4,8 +4,8 @@
 #include <acd/algo/concavity.hpp>
 #include <acd/algo/cut_plane.hpp>
 #include <acd/algo/features.hpp>
-#include <acd/normalize.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/normalize.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

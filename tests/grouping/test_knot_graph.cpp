@@ -1,8 +1,8 @@
 #include <acd/algo/concavity.hpp>
 #include <acd/algo/features.hpp>
 #include <acd/algo/knot_graph.hpp>
-#include <acd/normalize.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/normalize.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

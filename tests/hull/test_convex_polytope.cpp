@@ -2,8 +2,8 @@
 // solids: a box, a box with a corner cut off (a tetrahedron of known volume), a slab, the
 // octahedron |x| + |y| + |z| <= 1 cut down from a box by eight planes; and against the divergence
 // theorem on the triangulated result.
-#include <acd/convex_polytope.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/convex_polytope.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

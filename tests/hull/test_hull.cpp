@@ -1,8 +1,8 @@
 // convexHull: hull vertices traced back to the input, canonical facets, exact predicates. The
 // reference is CGAL's convex_hull_3 with its stock traits, which shares neither the predicates
 // nor the interior-point elimination of libacd's hull.
-#include <acd/hull.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/hull.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>

@@ -1,7 +1,7 @@
 // How far a hull stands off its mesh, against shapes whose answer is known in closed form.
 #include <acd/algo/hull_excess.hpp>
-#include <acd/hull.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/hull.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include "helpers.hpp"
 

@@ -2,8 +2,8 @@
 // and the generalised winding number (sum of the triangles' solid angles, Van Oosterom &
 // Strackee) on non-convex shapes, for random points and for points on the vertices' x and y
 // coordinates, where the +z ray of the library passes through edges and vertices.
-#include <acd/inside.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/inside.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // checked with CGAL's orientation predicate (not the hull's own side test); and convexHull's
 // canonical output on top of it, which must not depend on the order of the input points.
 #include <acd/algo/quickhull.hpp>
-#include <acd/hull.hpp>
+#include <acd/algo/hull.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>

@@ -1,7 +1,7 @@
 #include <acd/evaluate.hpp>
 #include <acd/io.hpp>
-#include <acd/normalize.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/normalize.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

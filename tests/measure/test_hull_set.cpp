@@ -3,8 +3,8 @@
 // same hull as its mesh.
 #include <acd/algo/hull_set.hpp>
 #include <acd/algo/parallel.hpp>
-#include <acd/hull.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/hull.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

@@ -2,8 +2,8 @@
 // gives the same canonical mesh, bit for bit.
 #include <acd/algo/canonical_frame.hpp>
 #include <acd/io.hpp>
-#include <acd/normalize.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/normalize.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Reading from memory (readMeshFromMemory, readObjObjectsFromMemory) gives what reading the same
 // bytes from a file gives: same mesh, same refusal.
 #include <acd/io.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Mass properties against closed forms: boxes (any pose), unions of unit cubes summed with the
 // parallel-axis theorem, and a fine sphere against the ball's.
-#include <acd/mass_properties.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/mass_properties.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // boxes (volume, area, bounds), a right triangle's normal, connected parts, concatenation,
 // compaction, and what makes a mesh closed and consistently oriented.
 #include <acd/mesh.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

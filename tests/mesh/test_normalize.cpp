@@ -1,8 +1,8 @@
 // The paper's units (libacd/src/mesh/normalize.cpp): the minimum enclosing sphere on point sets
 // whose sphere is known (a box: its half diagonal; a regular tetrahedron: its circumradius; a
 // long segment with points inside: half its length), and the normalisation's round trip.
-#include <acd/normalize.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/normalize.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

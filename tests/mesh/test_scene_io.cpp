@@ -4,7 +4,7 @@
 // exports of the COLLADA scene, compared with it.
 #include <acd/io.hpp>
 #include <acd/scene_io.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <assimp/Exporter.hpp>
 #include <assimp/Importer.hpp>

@@ -2,7 +2,7 @@
 // faces themselves, and shortest paths and floods against a plain Dijkstra written here, on a
 // triangulated grid (open) and a torus (closed).
 #include <acd/algo/surface_graph.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // .glb and as .gltf with its buffer beside it; mismatched names and an unwritable path are a
 // Status.
 #include <acd/algo/gltf_export.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>

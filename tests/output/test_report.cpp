@@ -4,7 +4,7 @@
 // keys and one trailing newline.
 #include <acd/decompose.hpp>
 #include <acd/report.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

@@ -3,8 +3,8 @@
 // URDF/SDF well-formed (their own parsers read them in tests/simulators/).
 #include <acd/decompose.hpp>
 #include <acd/io.hpp>
-#include <acd/mass_properties.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/mass_properties.hpp>
+#include <acd/algo/shapes.hpp>
 #include <acd/simulator_export.hpp>
 
 #include <gtest/gtest.h>

@@ -19,4 +19,4 @@ grep -q "acd $VERSION from $PREFIX/" "$TMP/configure.log" || { echo "acd not fou
 cmake --build "$TMP/build" -j2 >"$TMP/build.log" 2>&1 || { cat "$TMP/build.log"; exit 1; }
 out="$("$TMP/build/consumer")"
 echo "$out"
-[[ "$out" == "acd $VERSION: "*" components" ]]
+[[ "$out" == "acd $VERSION: "*" components, "* ]]

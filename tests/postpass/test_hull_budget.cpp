@@ -1,8 +1,8 @@
 // The hull budget: at most N components, every input component in exactly one, volume kept,
 // N = 1 gives the convex hull of the model, separate pieces joined only when needed.
-#include <acd/hull.hpp>
-#include <acd/hull_budget.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/hull.hpp>
+#include <acd/algo/hull_budget.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // Hulls with a vertex budget: at most K vertices, every point of the hull (so of the component)
 // still inside, convex, exact when the hull is within the budget, K < 4 refused.
-#include <acd/convex_polytope.hpp>
-#include <acd/hull.hpp>
-#include <acd/hull_vertex_cap.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/convex_polytope.hpp>
+#include <acd/algo/hull.hpp>
+#include <acd/algo/hull_vertex_cap.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

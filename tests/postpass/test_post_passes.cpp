@@ -2,7 +2,7 @@
 // budget before the cap, tau as a length, the report's sections only for the passes that ran.
 #include <acd/post_passes.hpp>
 #include <acd/report.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

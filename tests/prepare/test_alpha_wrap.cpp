@@ -1,10 +1,10 @@
-// The watertight wrap (libacd/src/prepare/alpha_wrap.cpp, acd/alpha_wrap.hpp): its parameters
+// The watertight wrap (libacd/src/prepare/alpha_wrap.cpp, acd/algo/alpha_wrap.hpp): its parameters
 // follow tau, it is closed and lies outside the input at the offset (distances measured with the
 // tests' own geometry), and the library's Hausdorff estimate agrees with a brute-force one.
-#include <acd/alpha_wrap.hpp>
+#include <acd/algo/alpha_wrap.hpp>
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 #include <acd/diagnosis.hpp>
 #include <acd/io.hpp>
 #include <acd/repair.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

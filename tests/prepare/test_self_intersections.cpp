@@ -3,12 +3,12 @@
 // a thin triangle piercing two opposite faces of a box, overlapping boxes, and the limit; and the
 // corpus models known to pass through themselves (cow, camel) or not. removeSelfIntersections on a
 // generated fold and on the cow.
-#include <acd/alpha_wrap.hpp>
+#include <acd/algo/alpha_wrap.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/io.hpp>
-#include <acd/normalize.hpp>
+#include <acd/algo/normalize.hpp>
 #include <acd/repair.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

@@ -3,10 +3,10 @@
 // whose volume and distance function the tests compute themselves.
 #include <acd/algo/shell_union.hpp>
 #include <acd/decompose.hpp>
-#include <acd/hull.hpp>
-#include <acd/normalize.hpp>
+#include <acd/algo/hull.hpp>
+#include <acd/algo/normalize.hpp>
 #include <acd/robust.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

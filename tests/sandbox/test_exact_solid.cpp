@@ -3,8 +3,8 @@
 // many reflex edges the input has), the pieces of finished solids kept, progress, and the
 // input's refusals (which never start a child).
 #include <acd/exact_decomposition.hpp>
-#include <acd/hull.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/hull.hpp>
+#include <acd/algo/shapes.hpp>
 #include <sandbox/exact_solid.hpp>
 
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 #pragma once
 
 #include <acd/io.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

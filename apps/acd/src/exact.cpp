@@ -8,7 +8,7 @@
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/io.hpp>
-#include <acd/normalize.hpp>
+#include <acd/algo/normalize.hpp>
 #include <acd/report.hpp>
 #include <acd/surface_exact.hpp>
 #include <sandbox/exact_solid.hpp>

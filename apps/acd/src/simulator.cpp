@@ -3,7 +3,7 @@
 
 #include "exit_codes.hpp"
 
-#include <acd/mass_properties.hpp>
+#include <acd/algo/mass_properties.hpp>
 
 #include <algorithm>
 #include <cstdio>

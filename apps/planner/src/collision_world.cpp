@@ -1,6 +1,6 @@
 #include "collision_world.hpp"
 
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <fcl/fcl.h>
 

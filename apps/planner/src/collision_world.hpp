@@ -6,7 +6,7 @@
 
 #include "scenario.hpp"
 
-#include <acd/inside.hpp>
+#include <acd/algo/inside.hpp>
 #include <acd/mesh.hpp>
 
 #include <Eigen/Geometry>

@@ -2,7 +2,7 @@
 #include "free_space.hpp"
 
 #include <acd/algo/surface_mesh_copy.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Nef_polyhedron_3.h>

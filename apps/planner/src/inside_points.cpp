@@ -1,6 +1,6 @@
 #include "inside_points.hpp"
 
-#include <acd/inside.hpp>
+#include <acd/algo/inside.hpp>
 
 #include <algorithm>
 #include <limits>

@@ -1,6 +1,6 @@
 #include "openings.hpp"
 
-#include <acd/inside.hpp>
+#include <acd/algo/inside.hpp>
 
 #include <algorithm>
 #include <map>

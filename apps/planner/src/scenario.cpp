@@ -4,9 +4,9 @@
 #include "ompl_app_import.hpp"
 
 #include <acd/diagnosis.hpp>
-#include <acd/inside.hpp>
+#include <acd/algo/inside.hpp>
 #include <acd/io.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 #include <sandbox/scene_reader.hpp>
 
 #include <yaml-cpp/yaml.h>

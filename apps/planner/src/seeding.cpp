@@ -1,6 +1,6 @@
 #include "seeding.hpp"
 
-#include <acd/random.hpp>
+#include <acd/algo/random.hpp>
 
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/base/spaces/SE2StateSpace.h>

@@ -1,6 +1,6 @@
 #include "solid_obstacles.hpp"
 
-#include <acd/alpha_wrap.hpp>
+#include <acd/algo/alpha_wrap.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/repair.hpp>
 

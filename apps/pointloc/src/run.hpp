@@ -5,11 +5,11 @@
 
 #include "blocks.hpp"
 #include "parameters.hpp"
-#include <acd/random.hpp>
+#include <acd/algo/random.hpp>
 
 #include <acd/algo/hull_set.hpp>
 #include <acd/decompose.hpp>
-#include <acd/inside.hpp>
+#include <acd/algo/inside.hpp>
 
 #include <tbb/task_arena.h>
 

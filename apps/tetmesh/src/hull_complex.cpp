@@ -3,8 +3,8 @@
 
 #include "separation.hpp"
 
-#include <acd/convex_polytope.hpp>
-#include <acd/hull.hpp>
+#include <acd/algo/convex_polytope.hpp>
+#include <acd/algo/hull.hpp>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Constrained_triangulation_plus_2.h>

@@ -4,7 +4,7 @@
 #include "hull_simplify.hpp"
 
 #include <acd/diagnosis.hpp>
-#include <acd/hull.hpp>
+#include <acd/algo/hull.hpp>
 
 #include <chrono>
 #include <cmath>

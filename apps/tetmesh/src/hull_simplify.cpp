@@ -3,8 +3,8 @@
 
 #include "separation.hpp"
 
-#include <acd/convex_polytope.hpp>
-#include <acd/hull_vertex_cap.hpp>
+#include <acd/algo/convex_polytope.hpp>
+#include <acd/algo/hull_vertex_cap.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // Simplified hull regions: for each component, a convex polytope with at most K corners that
 // contains the component's convex hull, and that overlaps no other component's region.
 //
-// How. Each region is the hull's vertex-capped polytope (acd/hull_vertex_cap.hpp: supporting
+// How. Each region is the hull's vertex-capped polytope (acd/algo/hull_vertex_cap.hpp: supporting
 // planes cut greedily from the hull's box), started within the planes it must keep (below),
 // and with no edge shorter than a minimum length (short edges make poor tetrahedra).
 //
@@ -15,7 +15,7 @@
 // cut a hull; the pairs are counted.
 #pragma once
 
-#include <acd/convex_polytope.hpp>
+#include <acd/algo/convex_polytope.hpp>
 #include <acd/mesh.hpp>
 
 #include <vector>
@@ -41,6 +41,6 @@ struct SimplifiedHulls {
 /// Each hull must be a closed convex triangle mesh with volume.
 SimplifiedHulls simplifyHulls(const std::vector<acd::TriMesh>& hulls, const HullSimplifyOptions& options);
 
-using acd::maxOutsideDistance;  // moved to libacd (acd/convex_polytope.hpp)
+using acd::maxOutsideDistance;  // moved to libacd (acd/algo/convex_polytope.hpp)
 
 }  // namespace tetmesh

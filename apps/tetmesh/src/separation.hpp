@@ -3,7 +3,7 @@
 // planes of the decomposition) and the planes that keep grown regions apart.
 #pragma once
 
-#include <acd/convex_polytope.hpp>
+#include <acd/algo/convex_polytope.hpp>
 #include <acd/mesh.hpp>
 
 #include <limits>

@@ -1,46 +1,32 @@
-// acd: approximate convex decomposition (Lien & Amato 2007). This header is the stable API:
-// include it and use what it declares.
+// acd: approximate convex decomposition (Lien & Amato 2007). This header is the stable API's
+// core: include it and use what it declares (docs/API.md has a complete program).
 //
-//   const acd::ReadResult in = acd::readMesh("model.off");   // io.hpp
-//   acd::DecomposeOptions o;
+//   const acd::ReadResult in = acd::readMesh("model.off");              // io.hpp
+//   acd::DecomposeOptions o;                                            // decompose.hpp
 //   o.tau = 0.05;
-//   const acd::Decomposition d = acd::decompose(in.mesh, o);   // decompose.hpp
+//   const acd::Decomposition d = acd::decomposeRepaired(in.mesh, o);    // robust.hpp: any mesh
 //   for (const acd::Component& c : d.components) use(c.hull);
 //
-// What each header offers:
-//   mesh, status, io, scene_io, shapes     triangle meshes, results, files, test solids
-//   diagnosis, repair                      what is wrong with a mesh, and the safe repairs
-//   decompose, robust                      solid decomposition (any mesh: repairs, shells, wrap)
-//   surface_decompose                      surface decomposition (open meshes, any genus)
-//   post_passes, mass_properties           hull budget, vertex cap, tau as a length, mass
-//   exact_decomposition, surface_exact     exact baselines (link acd::baselines)
-//   evaluate, inside, hull, normalize      measures of a decomposition, point-in-solid, hulls
-//   report, simulator_export               report.json, URDF / MJCF / SDF / glTF output
+//   mesh, status        triangle meshes, and what every call returns on failure
+//   io                  mesh files (OFF, OBJ, PLY, STL; scenes through scene_io.hpp)
+//   decompose, robust   solid decomposition: of a clean closed solid, and of any mesh (repairs,
+//                       shells, wrap)
+//   surface_decompose   surface decomposition (open meshes, any genus)
+//   evaluate            IoU, hull excess and surface distances of any set of hulls
+//   version             ACD_VERSION
 //
-// The steps of the method have headers under acd/algo/ (concavity, bridges and pockets, handle
-// cuts, knots, global cuts, plane cuts, merges...): internal but exposed, for tests, benchmarks
-// and experiments. They may change between minor versions; docs/ARCHITECTURE.md maps them.
+// Entry headers beside it: acd/baselines.hpp (exact decompositions; link acd::baselines),
+// acd/export.hpp (report.json and simulator files). The other top-level headers are stable
+// too (diagnosis, repair, post_passes, scene_io); acd/algo/ holds the steps of the method and
+// the tools they share, exposed for tests, benchmarks and experiments, which may change between
+// minor versions (docs/API.md lists them).
 #pragma once
 
 #include <acd/decompose.hpp>
-#include <acd/diagnosis.hpp>
 #include <acd/evaluate.hpp>
-#include <acd/exact_decomposition.hpp>
-#include <acd/hull.hpp>
-#include <acd/inside.hpp>
 #include <acd/io.hpp>
-#include <acd/mass_properties.hpp>
 #include <acd/mesh.hpp>
-#include <acd/normalize.hpp>
-#include <acd/plane.hpp>
-#include <acd/post_passes.hpp>
-#include <acd/repair.hpp>
-#include <acd/report.hpp>
 #include <acd/robust.hpp>
-#include <acd/scene_io.hpp>
-#include <acd/shapes.hpp>
-#include <acd/simulator_export.hpp>
 #include <acd/status.hpp>
 #include <acd/surface_decompose.hpp>
-#include <acd/surface_exact.hpp>
 #include <acd/version.hpp>

@@ -2,9 +2,9 @@
 #pragma once
 
 #include <acd/mesh.hpp>
-#include <acd/normalize.hpp>
+#include <acd/algo/normalize.hpp>
 #include <acd/status.hpp>
-#include <acd/wrap_report.hpp>
+#include <acd/algo/wrap_report.hpp>
 
 #include <functional>
 #include <string>

@@ -1,13 +1,13 @@
 // What a simulator asks of a solid decomposition after it is made: tau given as a length in the
-// input's units, a budget on the number of hulls (acd/hull_budget.hpp), a vertex cap on every
-// hull (acd/hull_vertex_cap.hpp) and the mass properties of the model (acd/mass_properties.hpp).
+// input's units, a budget on the number of hulls (acd/algo/hull_budget.hpp), a vertex cap on every
+// hull (acd/algo/hull_vertex_cap.hpp) and the mass properties of the model (acd/algo/mass_properties.hpp).
 // `acd decompose --tau-abs --max-hulls --max-hull-vertices --density` and the Python keywords
 // tau_abs, max_hulls, max_hull_vertices and density both run them from here, so that their
 // results and report.json sections cannot differ.
 #pragma once
 
 #include <acd/decompose.hpp>
-#include <acd/mass_properties.hpp>
+#include <acd/algo/mass_properties.hpp>
 #include <acd/mesh.hpp>
 #include <acd/status.hpp>
 

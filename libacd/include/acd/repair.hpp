@@ -1,7 +1,7 @@
 // Repairs of the soups people export (Blender, CAD, scans, game assets) before the solid
 // decomposition: the steps that change the mesh without changing the shape it describes by
 // more than a negligible share of its size. What is left unrepairable goes to the watertight
-// wrap (acd/alpha_wrap.hpp) or is refused. docs/ERRORS.md lists every step.
+// wrap (acd/algo/alpha_wrap.hpp) or is refused. docs/ERRORS.md lists every step.
 #pragma once
 
 #include <acd/mesh.hpp>

@@ -1,9 +1,9 @@
 // Any mesh people bring, decomposed: repairs (acd/repair.hpp), hole filling, several shells
-// (acd/algo/shells.hpp) and, as the last resort, the watertight wrap (acd/alpha_wrap.hpp). This is
+// (acd/algo/shells.hpp) and, as the last resort, the watertight wrap (acd/algo/alpha_wrap.hpp). This is
 // what acd::decompose does when DecomposeOptions::repair is on (the default).
 #pragma once
 
-#include <acd/alpha_wrap.hpp>
+#include <acd/algo/alpha_wrap.hpp>
 #include <acd/decompose.hpp>
 #include <acd/mesh.hpp>
 #include <acd/status.hpp>

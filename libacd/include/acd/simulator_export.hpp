@@ -12,7 +12,7 @@
 // density in mass per unit length cubed.
 #pragma once
 
-#include <acd/mass_properties.hpp>
+#include <acd/algo/mass_properties.hpp>
 #include <acd/mesh.hpp>
 #include <acd/status.hpp>
 

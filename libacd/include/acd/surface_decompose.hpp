@@ -5,7 +5,7 @@
 #pragma once
 
 #include <acd/mesh.hpp>
-#include <acd/normalize.hpp>
+#include <acd/algo/normalize.hpp>
 #include <acd/status.hpp>
 
 #include <functional>

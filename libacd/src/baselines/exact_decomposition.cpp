@@ -7,7 +7,7 @@
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/exact_decomposition.hpp>
-#include <acd/hull.hpp>
+#include <acd/algo/hull.hpp>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Nef_polyhedron_3.h>

@@ -4,7 +4,7 @@
 // patch. A face that would break this is retracted from the patch's front and waits for a later
 // seed. Adding faces only adds constraints, so a retracted face never fits the same patch later.
 #include <acd/diagnosis.hpp>
-#include <acd/normalize.hpp>
+#include <acd/algo/normalize.hpp>
 #include <acd/surface_exact.hpp>
 
 #include <algorithm>

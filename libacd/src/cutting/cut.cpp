@@ -107,16 +107,13 @@ bool triangulateSection(const std::vector<Vec3>& points, const std::vector<std::
 /// the mesh's volume (measured with compare_peers: docs/ALGORITHM.md section 10).
 constexpr double kLargePiece = 0.1;
 
-/// The cut through the cap region nearest `near`, and through the other regions between large
-/// pieces: the surface stays whole across the rest. Fills `result` and returns true when that
-/// gives at least two closed pieces and not every region is cut; false (result untouched) when
-/// the section has one region, or when some piece would meet itself across a cut region (a
-/// handle), so that the caller cuts everywhere.
-bool cutNear(const std::vector<Vec3>& points, const std::vector<Face>& below, const std::vector<Face>& above,
-             const std::vector<Face>& cap, const Vec3& near, CutResult& result) {
-  // Cap regions: cap faces joined across shared edges.
+/// Cap regions: cap faces joined across shared edges (`parent`, a union-find forest over the
+/// faces). Returns their number; `keep` is the region with the corner nearest `near` (ties: the
+/// smaller root).
+int capRegions(const std::vector<Vec3>& points, const std::vector<Face>& cap, const Vec3& near, std::vector<int>& parent,
+               int& keep) {
   const int nc = static_cast<int>(cap.size());
-  std::vector<int> parent(nc);
+  parent.resize(nc);
   std::iota(parent.begin(), parent.end(), 0);
   std::unordered_map<std::uint64_t, int> firstAt;
   for (int f = 0; f < nc; ++f)
@@ -124,7 +121,8 @@ bool cutNear(const std::vector<Vec3>& points, const std::vector<Face>& below, co
       auto [it, inserted] = firstAt.emplace(edgeKey(cap[f][k], cap[f][(k + 1) % 3]), f);
       if (!inserted) parent[findRoot(parent, f)] = findRoot(parent, it->second);
     }
-  int keep = -1, regions = 0;
+  int regions = 0;
+  keep = -1;
   double best = std::numeric_limits<double>::infinity();
   for (int f = 0; f < nc; ++f) {
     const int r = findRoot(parent, f);
@@ -134,7 +132,20 @@ bool cutNear(const std::vector<Vec3>& points, const std::vector<Face>& below, co
       if (d < best || (d == best && r < keep)) best = d, keep = r;
     }
   }
-  if (regions < 2) return false;
+  return regions;
+}
+
+/// The cut through the cap region nearest `near`, and through the other regions between large
+/// pieces: the surface stays whole across the rest. Fills `result` and returns true when that
+/// gives at least two closed pieces and not every region is cut; false (result untouched) when
+/// the section has one region, or when some piece would meet itself across a cut region (a
+/// handle), so that the caller cuts everywhere.
+bool cutNear(const std::vector<Vec3>& points, const std::vector<Face>& below, const std::vector<Face>& above,
+             const std::vector<Face>& cap, const Vec3& near, CutResult& result) {
+  const int nc = static_cast<int>(cap.size());
+  std::vector<int> parent;
+  int keep = -1;
+  if (capRegions(points, cap, near, parent, keep) < 2) return false;
   // Faces: lower surface, upper surface, then every region's cap on each side.
   std::vector<Face> faces = below;
   std::vector<signed char> sideOf(below.size(), -1);

@@ -7,7 +7,7 @@
 #include <acd/algo/features.hpp>
 #include <acd/algo/hull_excess.hpp>
 #include <acd/algo/knot_graph.hpp>
-#include <acd/hull.hpp>
+#include <acd/algo/hull.hpp>
 
 #include <Eigen/Eigenvalues>
 #include <tbb/parallel_for.h>

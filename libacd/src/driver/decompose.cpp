@@ -8,10 +8,10 @@
 #include <acd/algo/hull_excess.hpp>
 #include <acd/algo/merge.hpp>
 #include <acd/algo/parallel.hpp>
-#include <acd/random.hpp>
+#include <acd/algo/random.hpp>
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
-#include <acd/hull.hpp>
+#include <acd/algo/hull.hpp>
 #include <acd/robust.hpp>
 
 #include "held_to.hpp"

@@ -5,7 +5,7 @@
 #include <acd/algo/cut_choice.hpp>
 #include <acd/algo/hull_excess.hpp>
 #include <acd/diagnosis.hpp>
-#include <acd/normalize.hpp>
+#include <acd/algo/normalize.hpp>
 #include <acd/repair.hpp>
 #include <acd/robust.hpp>
 

@@ -12,7 +12,7 @@
 #include <acd/algo/parallel.hpp>
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
-#include <acd/hull.hpp>
+#include <acd/algo/hull.hpp>
 
 #include "rounds.hpp"
 

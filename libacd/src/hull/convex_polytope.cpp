@@ -1,7 +1,7 @@
 // See convex_polytope.hpp.
-#include <acd/convex_polytope.hpp>
+#include <acd/algo/convex_polytope.hpp>
 
-#include <acd/hull.hpp>
+#include <acd/algo/hull.hpp>
 
 #include <algorithm>
 #include <cmath>

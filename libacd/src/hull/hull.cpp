@@ -1,5 +1,5 @@
 // The convex hull of a point set in canonical form: quickhull (quickhull.cpp), then facets as polygons of their corners, triangulated alike whatever the input order.
-#include <acd/hull.hpp>
+#include <acd/algo/hull.hpp>
 
 #include <acd/algo/quickhull.hpp>
 #include <acd/algo/union_find.hpp>

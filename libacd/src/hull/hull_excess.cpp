@@ -2,8 +2,8 @@
 // distance, not a predicate).
 #include <acd/algo/closest_point.hpp>
 #include <acd/algo/hull_excess.hpp>
-#include <acd/inside.hpp>
-#include <acd/random.hpp>
+#include <acd/algo/inside.hpp>
+#include <acd/algo/random.hpp>
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>

@@ -15,9 +15,9 @@
 #include <acd/algo/parallel.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/evaluate.hpp>
-#include <acd/inside.hpp>
-#include <acd/normalize.hpp>
-#include <acd/random.hpp>
+#include <acd/algo/inside.hpp>
+#include <acd/algo/normalize.hpp>
+#include <acd/algo/random.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -48,7 +48,7 @@ constexpr std::size_t kUnionCells = std::size_t(1) << 15;
 
 // ---------------------------------------------------------------- random numbers
 
-using Stream = UniformStream;  // acd/random.hpp
+using Stream = UniformStream;  // acd/algo/random.hpp
 
 // ---------------------------------------------------------------- convex hulls
 

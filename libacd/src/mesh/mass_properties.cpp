@@ -6,7 +6,7 @@
 // tetrahedron with one corner at the origin). Summed over a closed surface the tetrahedra
 // outside cancel, leaving the solid's volume, first and second moments. The reference is the
 // bounding-box centre, which keeps the sums free of cancellation for meshes far from the origin.
-#include <acd/mass_properties.hpp>
+#include <acd/algo/mass_properties.hpp>
 
 #include <Eigen/Eigenvalues>
 

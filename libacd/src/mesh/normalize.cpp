@@ -1,5 +1,5 @@
 // Minimum enclosing sphere with CGAL's Min_sphere_of_spheres_d (exact enough for a unit of length).
-#include <acd/normalize.hpp>
+#include <acd/algo/normalize.hpp>
 
 #include <CGAL/Min_sphere_of_points_d_traits_3.h>
 #include <CGAL/Min_sphere_of_spheres_d.h>

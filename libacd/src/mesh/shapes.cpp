@@ -1,4 +1,4 @@
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <cmath>
 #include <map>

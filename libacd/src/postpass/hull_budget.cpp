@@ -1,13 +1,13 @@
 // Merging components down to a hull budget; see hull_budget.hpp.
-#include <acd/hull_budget.hpp>
+#include <acd/algo/hull_budget.hpp>
 
 #include <acd/algo/concavity.hpp>
 #include <acd/algo/merge.hpp>
 #include <acd/algo/parallel.hpp>
 #include <acd/algo/surface_graph.hpp>
 #include <acd/evaluate.hpp>
-#include <acd/hull.hpp>
-#include <acd/normalize.hpp>
+#include <acd/algo/hull.hpp>
+#include <acd/algo/normalize.hpp>
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>

@@ -1,8 +1,8 @@
 // Hulls with a vertex budget by supporting planes; see hull_vertex_cap.hpp.
-#include <acd/hull_vertex_cap.hpp>
+#include <acd/algo/hull_vertex_cap.hpp>
 
-#include <acd/hull.hpp>
-#include <acd/mass_properties.hpp>
+#include <acd/algo/hull.hpp>
+#include <acd/algo/mass_properties.hpp>
 
 #include <Eigen/Dense>
 

@@ -1,9 +1,9 @@
 #include <acd/post_passes.hpp>
 
 #include <acd/diagnosis.hpp>
-#include <acd/hull_budget.hpp>
-#include <acd/hull_vertex_cap.hpp>
-#include <acd/normalize.hpp>
+#include <acd/algo/hull_budget.hpp>
+#include <acd/algo/hull_vertex_cap.hpp>
+#include <acd/algo/normalize.hpp>
 
 #include <algorithm>
 #include <cmath>

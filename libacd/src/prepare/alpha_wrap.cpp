@@ -1,6 +1,6 @@
-// Alpha wrapping and the surface distance that measures it (acd/alpha_wrap.hpp).
-#include <acd/alpha_wrap.hpp>
-#include <acd/inside.hpp>
+// Alpha wrapping and the surface distance that measures it (acd/algo/alpha_wrap.hpp).
+#include <acd/algo/alpha_wrap.hpp>
+#include <acd/algo/inside.hpp>
 
 #include <acd/algo/surface_mesh_copy.hpp>
 

@@ -49,6 +49,54 @@ bool boxesMeet(const Box3& a, const Box3& b) {
   return (a.lo.array() <= b.hi.array()).all() && (b.lo.array() <= a.hi.array()).all();
 }
 
+/// The shells as everything below sees them (`work`) and the order they are united in. With
+/// `invariant`, each shell's vertices and faces in canonical order and the shells too, so that
+/// the union does not follow the order of the input. The coordinates stay the input's: rounded
+/// to the canonical frame's grid, shells that touch in a plane would cross one another by a
+/// grid step and the union would be full of slivers.
+void canonicalWork(const std::vector<TriMesh>& shells, bool invariant, std::vector<TriMesh>& work,
+                   std::vector<int>& order) {
+  const int n = static_cast<int>(shells.size());
+  work.assign(n, TriMesh());
+  order.resize(n);
+  std::iota(order.begin(), order.end(), 0);
+  if (!invariant) {
+    work = shells;
+    return;
+  }
+  std::vector<TriMesh> ordered(n);  // canonical meshes, for the order of shells
+  const Normalization frame = canonicalFrame(shells);
+  for (int i = 0; i < n; ++i) {
+    CanonicalMesh c = canonicalMesh(shells[i], frame);
+    work[i].faces = c.mesh.faces;
+    for (int source : c.source) work[i].vertices.push_back(shells[i].vertices[source]);
+    ordered[i] = std::move(c.mesh);
+  }
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return canonicalLess(ordered[a], ordered[b]); });
+}
+
+/// Rounding the exact union to doubles leaves slivers and specks where the shells cross (faces
+/// of 1e-8 of the diagonal): the repair merges their vertices. Its usual tolerance can merge
+/// more than those (a thin wall between two shells), so the smallest tolerance that gives a
+/// clean surface is taken: closed, no zero-area face, not passing through itself; `parts` are
+/// its edge-connected pieces. (Where shells touch in many planes, rounding can leave crossings
+/// of an ulp at every tolerance; the local repair of crossings then takes minutes, so such a
+/// group stays apart: false.)
+bool cleanRounded(const TriMesh& united, std::vector<TriMesh>& parts) {
+  for (double tolerance : {1e-12, 1e-10, 1e-8, 1e-7, 1e-6}) {
+    RepairOptions gentle;
+    gentle.mergeTolerance = tolerance;
+    const MeshRepair repaired = repairMesh(united, gentle);
+    bool clean = repaired.status.ok() && repaired.leftDegenerateFaces == 0 && isClosedOriented(repaired.mesh) &&
+                 countSelfIntersections(repaired.mesh, 1) == 0;
+    if (!clean) continue;
+    parts = splitEdgeConnected(repaired.mesh);
+    for (const TriMesh& part : parts) clean = clean && firstZeroAreaFace(part) < 0;
+    if (clean) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 ShellUnion uniteMeetingShells(const std::vector<TriMesh>& shells, bool invariant) {
@@ -64,26 +112,9 @@ ShellUnion uniteMeetingShells(const std::vector<TriMesh>& shells, bool invariant
     return finish();
   }
 
-  // Everything below sees the shells as `work`: with `invariant`, each shell's vertices and faces
-  // in canonical order and the shells too, so that the union does not follow the order of the
-  // input. The coordinates stay the input's: rounded to the canonical frame's grid, shells that
-  // touch in a plane would cross one another by a grid step and the union would be full of slivers.
-  std::vector<TriMesh> work(n);
-  std::vector<TriMesh> ordered(invariant ? n : 0);  // canonical meshes, for the order of shells
-  std::vector<int> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  if (invariant) {
-    const Normalization frame = canonicalFrame(shells);
-    for (int i = 0; i < n; ++i) {
-      CanonicalMesh c = canonicalMesh(shells[i], frame);
-      work[i].faces = c.mesh.faces;
-      for (int source : c.source) work[i].vertices.push_back(shells[i].vertices[source]);
-      ordered[i] = std::move(c.mesh);
-    }
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return canonicalLess(ordered[a], ordered[b]); });
-  } else {
-    work = shells;
-  }
+  std::vector<TriMesh> work;
+  std::vector<int> order;
+  canonicalWork(shells, invariant, work, order);
   std::vector<Box3> boxes(n);
   for (int i = 0; i < n; ++i) boxes[i] = boundingBox(work[i]);
 
@@ -156,25 +187,8 @@ ShellUnion uniteMeetingShells(const std::vector<TriMesh>& shells, bool invariant
       continue;
     }
     const TriMesh united = toTriMesh(acc);
-    // Rounding the exact union to doubles leaves slivers and specks where the shells cross (faces
-    // of 1e-8 of the diagonal): the repair merges their vertices. Its usual tolerance can merge
-    // more than those (a thin wall between two shells), so the smallest tolerance that gives a
-    // clean surface is taken: closed, no zero-area face, not passing through itself. (Where shells
-    // touch in many planes, rounding can leave crossings of an ulp at every tolerance; the local
-    // repair of crossings then takes minutes, so such a group stays apart.)
     std::vector<TriMesh> parts;
-    bool clean = false;
-    for (double tolerance : {1e-12, 1e-10, 1e-8, 1e-7, 1e-6}) {
-      RepairOptions gentle;
-      gentle.mergeTolerance = tolerance;
-      const MeshRepair repaired = repairMesh(united, gentle);
-      clean = repaired.status.ok() && repaired.leftDegenerateFaces == 0 && isClosedOriented(repaired.mesh) &&
-              countSelfIntersections(repaired.mesh, 1) == 0;
-      if (!clean) continue;
-      parts = splitEdgeConnected(repaired.mesh);
-      for (const TriMesh& part : parts) clean = clean && firstZeroAreaFace(part) < 0;
-      if (clean) break;
-    }
+    const bool clean = cleanRounded(united, parts);
     if (!clean) {
       out.firstFailure = "their union, rounded to doubles, is not a clean surface";  // it left the most shells
       continue;

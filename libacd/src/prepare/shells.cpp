@@ -1,6 +1,6 @@
 // Shell nesting by point-in-solid tests on a few vertices of each shell (acd/algo/shells.hpp).
 #include <acd/algo/shells.hpp>
-#include <acd/inside.hpp>
+#include <acd/algo/inside.hpp>
 
 #include <algorithm>
 #include <memory>

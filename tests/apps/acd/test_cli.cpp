@@ -1,7 +1,7 @@
 // The `acd` command: help, decompose outputs (files, report.json), errors with exit codes, info, evaluate.
 #include <acd/io.hpp>
 #include <acd/mesh.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

@@ -1,8 +1,8 @@
 // `acd decompose` with simulator options: refusals with exit 3, --tau-abs, --max-hulls 1 as the
 // convex hull of the model, a cube capped at 8 vertices staying the cube, mass properties.
-#include <acd/hull.hpp>
+#include <acd/algo/hull.hpp>
 #include <acd/io.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

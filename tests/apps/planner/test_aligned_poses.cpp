@@ -7,7 +7,7 @@
 #include "problem.hpp"
 #include "scenario.hpp"
 
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

@@ -5,8 +5,8 @@
 #include "openings.hpp"
 
 #include <acd/decompose.hpp>
-#include <acd/inside.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/inside.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 #include "scenario.hpp"
 
 #include <acd/io.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <helpers.hpp>
 

@@ -7,8 +7,8 @@
 #include "problem.hpp"
 #include "scenario.hpp"
 
-#include <acd/inside.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/inside.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 #include "problem.hpp"
 #include "scenario.hpp"
 
-#include <acd/inside.hpp>
+#include <acd/algo/inside.hpp>
 
 #include <helpers.hpp>
 

@@ -7,7 +7,7 @@
 #include "scenario.hpp"
 #include "solid_obstacles.hpp"
 
-#include <acd/inside.hpp>
+#include <acd/algo/inside.hpp>
 #include <acd/io.hpp>
 
 #include <helpers.hpp>

@@ -1,7 +1,7 @@
 // The `pointloc` command: point location in the union of the ACD hulls against the exact answer.
 #include <acd/io.hpp>
 #include <acd/mesh.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

@@ -3,7 +3,7 @@
 #include "deform.hpp"
 
 #include <acd/io.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

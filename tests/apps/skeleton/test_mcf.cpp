@@ -1,8 +1,8 @@
 // CGAL's mean-curvature-flow skeleton through our wrapper.
 #include "mcf_skeleton.hpp"
 
-#include <acd/inside.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/inside.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

@@ -8,7 +8,7 @@
 #include <appcli/exit_codes.hpp>
 
 #include <acd/io.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

@@ -8,7 +8,7 @@
 #include "tetgen_run.hpp"
 
 #include <acd/io.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>

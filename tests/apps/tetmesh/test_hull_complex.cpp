@@ -3,7 +3,7 @@
 #include "tet_checks.hpp"
 #include "tetgen_run.hpp"
 
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 
 #include <acd/algo/merge.hpp>
 #include <acd/io.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

@@ -3,9 +3,9 @@
 #include "hull_simplify.hpp"
 
 #include <acd/decompose.hpp>
-#include <acd/hull.hpp>
-#include <acd/random.hpp>
-#include <acd/shapes.hpp>
+#include <acd/algo/hull.hpp>
+#include <acd/algo/random.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 #include "hull_mesher.hpp"
 #include "tet_files.hpp"
 
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 #include "mesh_quality.hpp"
 #include "tetgen_run.hpp"
 
-#include <acd/shapes.hpp>
+#include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
 

@@ -7,7 +7,7 @@
 
 #include <acd/mesh.hpp>
 #include <acd/status.hpp>
-#include <acd/wrap_report.hpp>
+#include <acd/algo/wrap_report.hpp>
 
 namespace acd {
 

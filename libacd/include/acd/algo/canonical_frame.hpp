@@ -3,7 +3,7 @@
 #pragma once
 
 #include <acd/mesh.hpp>
-#include <acd/normalize.hpp>
+#include <acd/algo/normalize.hpp>
 
 #include <unordered_map>
 #include <vector>

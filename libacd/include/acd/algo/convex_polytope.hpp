@@ -1,10 +1,10 @@
 // A convex polytope kept as its faces (convex polygons on known planes), so that cutting it by
 // one more half-space, counting its corners and measuring its volume are cheap. Hulls with a
-// vertex budget (acd/hull_vertex_cap.hpp) are built by cutting a box down with supporting planes.
+// vertex budget (acd/algo/hull_vertex_cap.hpp) are built by cutting a box down with supporting planes.
 #pragma once
 
 #include <acd/mesh.hpp>
-#include <acd/plane.hpp>
+#include <acd/algo/plane.hpp>
 
 #include <vector>
 

@@ -2,7 +2,7 @@
 #pragma once
 
 #include <acd/mesh.hpp>
-#include <acd/plane.hpp>
+#include <acd/algo/plane.hpp>
 
 #include <string>
 #include <vector>

@@ -3,7 +3,7 @@
 // union of the hulls" (acd evaluate's volume and surface samples, pointloc's queries).
 #pragma once
 
-#include <acd/convex_polytope.hpp>
+#include <acd/algo/convex_polytope.hpp>
 #include <acd/mesh.hpp>
 
 #include <tbb/task_arena.h>

@@ -14,7 +14,7 @@
 // candidates are never re-evaluated (lazy greedy).
 #pragma once
 
-#include <acd/convex_polytope.hpp>
+#include <acd/algo/convex_polytope.hpp>
 #include <acd/mesh.hpp>
 #include <acd/status.hpp>
 

@@ -9,7 +9,7 @@
 
 #include <acd/algo/bridge.hpp>
 #include <acd/algo/surface_graph.hpp>
-#include <acd/hull.hpp>
+#include <acd/algo/hull.hpp>
 #include <acd/mesh.hpp>
 
 #include <vector>

@@ -16,7 +16,7 @@ struct ShellNesting {
 
 /// Classifies closed, consistently oriented shells. Shell A contains shell B when B's box lies
 /// in A's and every sampled vertex of B (up to 64, spread over B) is inside A (exact
-/// point-in-solid test, acd/inside.hpp); when only some are, the two overlap. Under the even-odd
+/// point-in-solid test, acd/algo/inside.hpp); when only some are, the two overlap. Under the even-odd
 /// rule a shell at odd depth bounds a cavity (a void inside a solid, whichever way the file
 /// orients it); at even depth it is a solid, possibly inside another's cavity. Touching shells
 /// (vertices exactly on the other's surface) count as overlapping or apart; both are decomposed
