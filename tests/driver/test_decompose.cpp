@@ -234,6 +234,7 @@ Decomposition fakeLDecomposition(double lower) {
   Decomposition d;
   d.normalization = minimumSphereNormalization(shapes::lShape());
   d.options = resolvedOptions(withTau(0.05));
+  d.options.mergeScope = MergeScope::Component;  // the paper's promise: every component within tau
   const double s3 = std::pow(d.normalization.scale, 3);
   for (const auto& [lo, hi] : {std::pair{Vec3(0, 0, 0), Vec3(2, 1, 1)}, std::pair{Vec3(0, lower, 0), Vec3(1, 2, 1)}}) {
     Component c;
@@ -488,6 +489,7 @@ TEST(Decompose, TheComponentCapHoldsAndDoesNotDependOnThreads) {
   const TriMesh comb = shapes::voxels(cells);
   DecomposeOptions o = withTau(0.02);
   o.merge = false;
+  o.invariant = false;  // the volumes add up exactly in the input's own coordinates
   const Decomposition all = decompose(comb, o);
   ASSERT_TRUE(all.status.ok()) << all.status.message;
   ASSERT_GT(all.components.size(), 4u);

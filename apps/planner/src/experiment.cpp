@@ -69,6 +69,11 @@ Preprocessing preprocess(const Scenario& scenario) {
   if (pieces.empty()) throw ScenarioError(scenario.path + ": " + error);
   pre.freeSpacePieces = static_cast<int>(pieces.size());
   acd::DecomposeOptions options;
+  // Openings are the regions two components share: each component one solid, concave by at most
+  // tau (a merge held to the model may give one hull to touching pieces that do not glue). The
+  // free space stays in the scene's coordinates bit for bit.
+  options.mergeScope = acd::MergeScope::Component;
+  options.invariant = false;
   options.tau = scenario.acd.tau;
   options.threads = 1;  // the trials are timed; keep the preprocessing single-threaded too
   for (const acd::TriMesh& piece : pieces) {

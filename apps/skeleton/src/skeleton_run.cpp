@@ -130,6 +130,9 @@ int decomposeModels(const RunParameters& p, std::vector<Model>& models) {
   // Skeletons are compared across poses: the decomposition must not change with them (the
   // rounding of input vertices on cut planes, 2.1e-7 of the radius, does not matter here).
   options.invariant = true;
+  // One node per component at the centroid of the solid it bounds: a component must be one solid
+  // (a merge held to the model may give one hull to touching pieces that do not glue into one).
+  options.mergeScope = acd::MergeScope::Component;
   if (const acd::Status s = acd::validate(acd::resolvedOptions(options)); !s.ok()) return fail(kBadParameter, s.message);
 
   for (Model& m : models) {

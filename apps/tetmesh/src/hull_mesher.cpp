@@ -34,6 +34,10 @@ HullMeshResult meshHulls(const acd::TriMesh& model, const HullMeshOptions& optio
   // The complex needs leaves that lie on one side of every plane that cut their ancestors: their
   // hulls then meet only on those planes. A cut at the notch only leaves a finger whole across it.
   dopt.cutAtNotchOnly = false;
+  // The same for merges: the union of two leaves must stay one solid within tau of itself, and
+  // the cut planes must pass through the input's own vertices (hulls that meet on a plane).
+  dopt.mergeScope = acd::MergeScope::Component;
+  dopt.invariant = false;
   dopt.threads = options.threads;
   r.decomposition = acd::decompose(model, dopt);
   r.times.decompose = since(t0);

@@ -33,7 +33,7 @@ struct DecomposeOptions {
   /// the plane meets, so that each piece lies on one side of every plane that cut its ancestors.
   bool cutAtNotchOnly = true;
   bool merge = true;             // glue neighbours back while their union stays within tau
-  MergeScope mergeScope = MergeScope::Component;  // what "within tau" means for a union (above)
+  MergeScope mergeScope = MergeScope::Model;  // what "within tau" means for a union (above)
   bool fillHoles = true;         // close an open mesh's holes first (false: refuse open meshes)
   bool repair = true;            // repairs, shells and the wrap (acd/robust.hpp); false: strict checks only
   bool wrap = true;              // with repair: wrap what cannot be made a clean solid (false: refuse it)
@@ -46,7 +46,7 @@ struct DecomposeOptions {
   /// rotation, translation or order of faces. Input vertices come back exactly; the cuts are computed
   /// on coordinates rounded to the frame's grid (2.4e-7 of the model's radius), so a cut face through
   /// input vertices and points a cut made is planar to within that.
-  bool invariant = false;
+  bool invariant = true;
   int threads = 0;               // 0: all cores. The output never depends on it.
   int maxComponents = 10000;     // safety net against runaway recursion
   int maxDepth = 64;
@@ -54,11 +54,12 @@ struct DecomposeOptions {
   std::function<void(int done, int pending)> progress;
 };
 
-/// What the `acd` command and the Python module decompose with unless told otherwise: the shape's
-/// own frame (invariant) and the merge held to the model (MergeScope::Model), for the same parts in
-/// every pose and fewer parts at the same fidelity. The struct's own defaults keep the input's
-/// coordinates bit for bit and the paper's promise for every component, which the applications
-/// built on the library (planner, tetmesh, pointloc, skeleton) rely on.
+/// The defaults above are what the `acd` command and the Python module decompose with: the
+/// shape's own frame (invariant) and the merge held to the model (MergeScope::Model), for the
+/// same parts in every pose and fewer parts at the same fidelity. Programs that need the
+/// paper's promise for every component, or the input's coordinates bit for bit, ask for them
+/// (mergeScope = MergeScope::Component, invariant = false), as the planner, tetmesh and
+/// pointloc do. recommendedOptions() returns the defaults (kept for callers that used it).
 DecomposeOptions recommendedOptions();
 
 /// Parameters after defaults are applied; `validate` rejects nonsense with a message.

@@ -381,12 +381,7 @@ void accumulate(DecomposeStats& into, const DecomposeStats& s) {
 
 }  // namespace
 
-DecomposeOptions recommendedOptions() {
-  DecomposeOptions o;
-  o.invariant = true;
-  o.mergeScope = MergeScope::Model;
-  return o;
-}
+DecomposeOptions recommendedOptions() { return DecomposeOptions{}; }
 
 DecomposeOptions resolvedOptions(const DecomposeOptions& options) {
   DecomposeOptions o = options;

@@ -68,8 +68,10 @@ TEST(Openings, WallWithHoleGivesOpeningsInTheHole) {
   const double y0 = 1.0, y1 = 2.0, z0 = 3.5, z1 = 4.5;
   const planner::FreeSpace fs = planner::buildFreeSpace(kWorkspace, wallWithHole(4.75, 5.25, y0, y1, z0, z1), {});
   ASSERT_TRUE(fs.ok) << fs.error;
-  acd::DecomposeOptions options;
+  acd::DecomposeOptions options;  // as the planner decomposes the free space (experiment.cpp)
   options.tau = 0.05;
+  options.mergeScope = acd::MergeScope::Component;
+  options.invariant = false;
   const acd::Decomposition d = acd::decompose(fs.mesh, options);
   ASSERT_TRUE(d.status.ok()) << d.status.message;
   std::vector<acd::TriMesh> parts;

@@ -80,9 +80,11 @@ TEST(HullSimplify, TwoHalvesOfABarShareTheCutPlaneAndDoNotOverlap) {
 
 TEST(HullSimplify, DecomposedTorusRegionsContainTheirPiecesAndNeverOverlap) {
   const acd::TriMesh torus = acd::shapes::torus(2.0, 0.6, 32, 12);
-  acd::DecomposeOptions d;
+  acd::DecomposeOptions d;  // as tetmesh decomposes (hull_mesher.cpp)
   d.tau = 0.1;
   d.merge = false;
+  d.mergeScope = acd::MergeScope::Component;
+  d.invariant = false;
   const acd::Decomposition dec = acd::decompose(torus, d);
   ASSERT_TRUE(dec.status.ok()) << dec.status.message;
   ASSERT_GE(dec.components.size(), 4u);

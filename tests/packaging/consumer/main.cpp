@@ -16,8 +16,8 @@ int main(int argc, char** argv) {
     if (!in.status.ok()) return std::fprintf(stderr, "consumer: %s\n", in.status.message.c_str()), 2;
     mesh = in.mesh;
   }
-  acd::DecomposeOptions options = acd::recommendedOptions();  // what the acd command uses
-  options.tau = 0.05;                                          // in units of the model's radius
+  acd::DecomposeOptions options;  // the defaults are what the acd command uses
+  options.tau = 0.05;             // in units of the model's radius
   const acd::Decomposition d = acd::decomposeRepaired(mesh, options);  // any mesh: repairs, shells, wrap
   if (!d.status.ok()) return std::fprintf(stderr, "consumer: %s\n", d.status.message.c_str()), 1;
 
