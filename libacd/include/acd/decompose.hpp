@@ -87,6 +87,10 @@ struct PhaseTimes {
   // time); prepare, hulls, total are wall.
 };
 
+/// Sums the phases (a piece's work into its decomposition, a shell's into the model's); `total`,
+/// the wall time of the whole call, is not summed.
+PhaseTimes& operator+=(PhaseTimes& into, const PhaseTimes& t);
+
 struct DecomposeStats {
   int cuts = 0;               // successful plane cuts
   int fallbackCuts = 0;       // cuts where the feature plane failed and the bisector was used
@@ -99,6 +103,10 @@ struct DecomposeStats {
   int holesFilled = 0;        // boundary loops closed before decomposing an open mesh
   double inputVolume = 0.0;   // normalised units
 };
+
+/// The one sum of statistics: every count and the input's volume. `holesFilled` is the
+/// preparation's, set once, not summed.
+DecomposeStats& operator+=(DecomposeStats& into, const DecomposeStats& s);
 
 struct Decomposition {
   Status status;

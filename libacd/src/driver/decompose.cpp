@@ -365,21 +365,30 @@ void mergePieces(std::vector<Piece>& finals, std::vector<Component>& finalInfo, 
   finalInfo = std::move(keptInfo);
 }
 
-void accumulate(PhaseTimes& into, const PhaseTimes& t) {
+}  // namespace
+
+PhaseTimes& operator+=(PhaseTimes& into, const PhaseTimes& t) {
+  into.prepare += t.prepare;
   into.concavity += t.concavity;
   into.grouping += t.grouping;
   into.cutting += t.cutting;
+  into.merging += t.merging;
+  into.hulls += t.hulls;
+  return into;
 }
 
-void accumulate(DecomposeStats& into, const DecomposeStats& s) {
+DecomposeStats& operator+=(DecomposeStats& into, const DecomposeStats& s) {
   into.cuts += s.cuts;
   into.fallbackCuts += s.fallbackCuts;
   into.failedCuts += s.failedCuts;
   into.bridges += s.bridges;
   into.refinements += s.refinements;
+  into.merges += s.merges;
+  into.inputEdges += s.inputEdges;
+  into.inputNotches += s.inputNotches;
+  into.inputVolume += s.inputVolume;
+  return into;
 }
-
-}  // namespace
 
 DecomposeOptions recommendedOptions() { return DecomposeOptions{}; }
 
@@ -461,8 +470,8 @@ Decomposition decomposeSolid(const TriMesh& mesh, const TriMesh* heldTo, double 
         std::move(pending), o.maxComponents, [&](const Piece& piece) { return processPiece(piece, o); },
         [](const Piece&, Outcome& out) { return std::move(out.children); },
         [&](const Outcome& out) {
-          accumulate(result.times, out.times);
-          accumulate(result.stats, out.stats);
+          result.times += out.times;  // a piece's own work: concavity, grouping, cutting
+          result.stats += out.stats;
         },
         [](Outcome& out) {
           out.component.unresolved = true;

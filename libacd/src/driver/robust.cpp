@@ -293,23 +293,8 @@ Decomposition decomposeUntangled(const TriMesh& shell, int index, const Decompos
 
 void accumulateShell(Decomposition& into, Decomposition&& d) {
   for (Component& c : d.components) into.components.push_back(std::move(c));
-  DecomposeStats& s = into.stats;
-  s.cuts += d.stats.cuts;
-  s.fallbackCuts += d.stats.fallbackCuts;
-  s.failedCuts += d.stats.failedCuts;
-  s.bridges += d.stats.bridges;
-  s.refinements += d.stats.refinements;
-  s.merges += d.stats.merges;
-  s.inputEdges += d.stats.inputEdges;
-  s.inputNotches += d.stats.inputNotches;
-  s.inputVolume += d.stats.inputVolume;
-  PhaseTimes& t = into.times;
-  t.prepare += d.times.prepare;
-  t.concavity += d.times.concavity;
-  t.grouping += d.times.grouping;
-  t.cutting += d.times.cutting;
-  t.merging += d.times.merging;
-  t.hulls += d.times.hulls;
+  into.stats += d.stats;
+  into.times += d.times;
 }
 
 /// The promise is about the input: a component of the wrap has its hull measured against the
