@@ -1,5 +1,6 @@
 #include "solid_obstacles.hpp"
 
+#include <acd/algo/union_find.hpp>
 #include <acd/algo/alpha_wrap.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/repair.hpp>
@@ -22,18 +23,13 @@ std::vector<acd::TriMesh> vertexConnectedPieces(const acd::TriMesh& m) {
     const acd::Vec3& p = m.vertices[v];
     id[v] = byPosition.emplace(std::array<double, 3>{p.x(), p.y(), p.z()}, static_cast<int>(byPosition.size())).first->second;
   }
-  std::vector<int> parent(byPosition.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  acd::UnionFind sets(static_cast<int>(byPosition.size()));
   for (const acd::Face& f : m.faces)
-    for (int k = 1; k < 3; ++k) parent[find(id[f[k]])] = find(id[f[0]]);
+    for (int k = 1; k < 3; ++k) sets.join(id[f[k]], id[f[0]]);
   std::map<int, acd::TriMesh> pieces;
   std::map<int, std::map<int, int>> localIndex;  // per piece: position id -> vertex of the piece
   for (const acd::Face& f : m.faces) {
-    const int root = find(id[f[0]]);
+    const int root = sets.find(id[f[0]]);
     acd::TriMesh& piece = pieces[root];
     std::map<int, int>& local = localIndex[root];
     acd::Face face{};

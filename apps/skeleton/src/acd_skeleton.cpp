@@ -1,5 +1,6 @@
 #include "acd_skeleton.hpp"
 
+#include <acd/algo/union_find.hpp>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -37,23 +38,18 @@ std::vector<Cut> findCuts(const std::vector<acd::TriMesh>& components) {
   for (const auto& [pair, triangles] : shared) {
     // Patches: triangles joined through common corners (union-find over triangles).
     const int n = static_cast<int>(triangles.size());
-    std::vector<int> parent(n);
-    std::iota(parent.begin(), parent.end(), 0);
-    auto find = [&](int x) {
-      while (parent[x] != x) x = parent[x] = parent[parent[x]];
-      return x;
-    };
+    acd::UnionFind sets(n);
     std::map<Corner, int> firstUser;
     for (int t = 0; t < n; ++t)
       for (const Corner& c : triangles[t]) {
         auto [it, inserted] = firstUser.emplace(c, t);
-        if (!inserted) parent[find(t)] = find(it->second);
+        if (!inserted) sets.join(t, it->second);
       }
     std::map<int, Cut> patches;
     for (int t = 0; t < n; ++t) {
       const Vec3 p = pointOf(triangles[t][0]), q = pointOf(triangles[t][1]), r = pointOf(triangles[t][2]);
       const double area = 0.5 * (q - p).cross(r - p).norm();
-      Cut& cut = patches[find(t)];
+      Cut& cut = patches[sets.find(t)];
       cut.a = pair.first;
       cut.b = pair.second;
       cut.centre += area * (p + q + r) / 3.0;

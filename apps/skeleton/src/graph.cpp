@@ -1,5 +1,6 @@
 #include "graph.hpp"
 
+#include <acd/algo/union_find.hpp>
 #include <algorithm>
 #include <numeric>
 #include <set>
@@ -49,16 +50,11 @@ std::vector<char> adjacency(const Graph& g) {
 }
 
 int connectedComponents(const Graph& g) {
-  std::vector<int> parent(g.nodes.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  acd::UnionFind sets(static_cast<int>(g.nodes.size()));
   int count = g.nodeCount();
   for (const auto& [a, b] : g.edges) {
-    const int ra = find(a), rb = find(b);
-    if (ra != rb) parent[ra] = rb, --count;
+    const int ra = sets.find(a), rb = sets.find(b);
+    if (ra != rb) sets.join(ra, rb), --count;
   }
   return count;
 }

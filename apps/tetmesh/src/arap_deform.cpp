@@ -1,5 +1,6 @@
 #include "arap_deform.hpp"
 
+#include <acd/algo/union_find.hpp>
 #include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
@@ -36,10 +37,6 @@ Mat3 closestRotation(const Mat3& f) {
   return r;
 }
 
-int findRoot(std::vector<int>& parent, int v) {
-  while (parent[v] != v) v = parent[v] = parent[parent[v]];
-  return v;
-}
 
 /// The per-tet constants: F_t = [x_a x_b x_c x_d] * B_t, and the weight of the tet in E.
 struct TetOperator {
@@ -124,20 +121,19 @@ std::string applyConstraints(int n, const std::vector<int>& constrained, const s
 std::vector<int> numberUnknowns(const TetMesh& mesh, const std::vector<bool>& isConstrained, ArapResult& r) {
   const int n = static_cast<int>(mesh.points.size());
   std::vector<bool> used(n, false);
-  std::vector<int> parent(n);
-  std::iota(parent.begin(), parent.end(), 0);
+  acd::UnionFind sets(n);
   for (const auto& t : mesh.tets)
     for (int k = 0; k < 4; ++k) {
       used[t[k]] = true;
-      parent[findRoot(parent, t[k])] = findRoot(parent, t[0]);
+      sets.join(t[k], t[0]);
     }
   std::vector<bool> reached(n, false);
   for (int v = 0; v < n; ++v)
-    if (isConstrained[v]) reached[findRoot(parent, v)] = true;
+    if (isConstrained[v]) reached[sets.find(v)] = true;
   std::vector<int> unknown(n, kFixed);
   for (int v = 0; v < n; ++v) {
     if (!used[v] || isConstrained[v]) continue;
-    if (!reached[findRoot(parent, v)]) {
+    if (!reached[sets.find(v)]) {
       ++r.pinnedVertices;
       continue;
     }

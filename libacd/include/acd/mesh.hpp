@@ -62,7 +62,7 @@ TriMesh compact(const TriMesh& mesh);
 TriMesh compactFaces(const std::vector<Vec3>& vertices, const std::vector<Face>& faces, std::vector<int>& remap);
 
 /// Union-find: the root of x's set, halving the path on the way.
-int findRoot(std::vector<int>& parent, int x);
+
 
 /// True when every edge has exactly two faces that use it in opposite directions.
 bool isClosedOriented(const TriMesh& mesh);

@@ -2,6 +2,7 @@
 // Delaunay triangulation of the section, whose exact predicates make the cap
 // triangulation reliable; its no-intersection tag turns a broken section into a
 // clean failure instead of a silently wrong mesh.
+#include <acd/algo/union_find.hpp>
 #include <acd/algo/cut.hpp>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -107,32 +108,29 @@ bool triangulateSection(const std::vector<Vec3>& points, const std::vector<std::
 /// the mesh's volume (measured with compare_peers: docs/ALGORITHM.md section 10).
 constexpr double kLargePiece = 0.1;
 
-/// Cap regions: cap faces joined across shared edges (`parent`, a union-find forest over the
-/// faces). Returns their number; `keep` is the region with the corner nearest `near` (ties: the
-/// smaller root).
-int capRegions(const std::vector<Vec3>& points, const std::vector<Face>& cap, const Vec3& near, std::vector<int>& parent,
+/// Cap regions: cap faces joined across shared edges (`regions`, over the faces). Returns their
+/// number; `keep` is the region with the corner nearest `near` (ties: the smaller root).
+int capRegions(const std::vector<Vec3>& points, const std::vector<Face>& cap, const Vec3& near, UnionFind& regions,
                int& keep) {
   const int nc = static_cast<int>(cap.size());
-  parent.resize(nc);
-  std::iota(parent.begin(), parent.end(), 0);
   std::unordered_map<std::uint64_t, int> firstAt;
   for (int f = 0; f < nc; ++f)
     for (int k = 0; k < 3; ++k) {
       auto [it, inserted] = firstAt.emplace(edgeKey(cap[f][k], cap[f][(k + 1) % 3]), f);
-      if (!inserted) parent[findRoot(parent, f)] = findRoot(parent, it->second);
+      if (!inserted) regions.join(f, it->second);
     }
-  int regions = 0;
+  int count = 0;
   keep = -1;
   double best = std::numeric_limits<double>::infinity();
   for (int f = 0; f < nc; ++f) {
-    const int r = findRoot(parent, f);
-    regions += r == f;
+    const int r = regions.find(f);
+    count += r == f;
     for (int v : cap[f]) {
       const double d = (points[v] - near).squaredNorm();
       if (d < best || (d == best && r < keep)) best = d, keep = r;
     }
   }
-  return regions;
+  return count;
 }
 
 /// The cut through the cap region nearest `near`, and through the other regions between large
@@ -143,9 +141,9 @@ int capRegions(const std::vector<Vec3>& points, const std::vector<Face>& cap, co
 bool cutNear(const std::vector<Vec3>& points, const std::vector<Face>& below, const std::vector<Face>& above,
              const std::vector<Face>& cap, const Vec3& near, CutResult& result) {
   const int nc = static_cast<int>(cap.size());
-  std::vector<int> parent;
+  UnionFind regions(nc);
   int keep = -1;
-  if (capRegions(points, cap, near, parent, keep) < 2) return false;
+  if (capRegions(points, cap, near, regions, keep) < 2) return false;
   // Faces: lower surface, upper surface, then every region's cap on each side.
   std::vector<Face> faces = below;
   std::vector<signed char> sideOf(below.size(), -1);
@@ -153,7 +151,7 @@ bool cutNear(const std::vector<Vec3>& points, const std::vector<Face>& below, co
   sideOf.resize(faces.size(), 1);
   std::vector<int> regionOf(faces.size(), -1);
   for (int f = 0; f < nc; ++f) {
-    const int r = findRoot(parent, f);
+    const int r = regions.find(f);
     faces.push_back(cap[f]), sideOf.push_back(-1), regionOf.push_back(r);
     faces.push_back({cap[f][0], cap[f][2], cap[f][1]}), sideOf.push_back(1), regionOf.push_back(r);
   }
@@ -165,10 +163,10 @@ bool cutNear(const std::vector<Vec3>& points, const std::vector<Face>& below, co
   std::sort(at.begin(), at.end());
   // Pieces of the faces `in`, joined across their edges: an edge with two faces joins them; an
   // edge of a cut region (its outline or inside it) has four, joined side by side.
-  std::vector<int> piece(nf);
+  UnionFind piece(nf);
   auto pieces = [&](const std::vector<char>& in) {
-    std::iota(piece.begin(), piece.end(), 0);
-    auto join = [&](int a, int b) { piece[findRoot(piece, a)] = findRoot(piece, b); };
+    piece = UnionFind(nf);
+    auto join = [&](int a, int b) { piece.join(a, b); };
     int list[4];
     for (std::size_t i = 0, j; i < at.size(); i = j) {
       int n = 0;
@@ -204,12 +202,12 @@ bool cutNear(const std::vector<Vec3>& points, const std::vector<Face>& below, co
   double total = 0.0;
   for (int f = 0; f < nf; ++f) {
     const double v = points[faces[f][0]].dot(points[faces[f][1]].cross(points[faces[f][2]])) / 6.0;
-    volume[findRoot(piece, f)] += v;
+    volume[piece.find(f)] += v;
     if (regionOf[f] < 0) total += v;
   }
   std::vector<int> lowerPiece(nc, -1), upperPiece(nc, -1);
   for (int f = static_cast<int>(below.size() + above.size()); f < nf; ++f)
-    (sideOf[f] < 0 ? lowerPiece : upperPiece)[regionOf[f]] = findRoot(piece, f);
+    (sideOf[f] < 0 ? lowerPiece : upperPiece)[regionOf[f]] = piece.find(f);
   bool all = true;
   for (int r = 0; r < nc; ++r) {
     if (lowerPiece[r] < 0 || r == keep) continue;
@@ -223,7 +221,7 @@ bool cutNear(const std::vector<Vec3>& points, const std::vector<Face>& below, co
   if (!pieces(in)) return false;
   // A handle: some piece would meet itself across a cut region; cut them all.
   for (int f = static_cast<int>(below.size() + above.size()); f < nf; f += 2)
-    if (in[f] && findRoot(piece, f) == findRoot(piece, f + 1)) return false;
+    if (in[f] && piece.find(f) == piece.find(f + 1)) return false;
   // Pieces in the order of their first face; a piece is "below" when it holds the kept region's
   // lower cap.
   std::vector<int> index(nf, -1);
@@ -231,7 +229,7 @@ bool cutNear(const std::vector<Vec3>& points, const std::vector<Face>& below, co
   std::vector<char> lowerSide;
   for (int f = 0; f < nf; ++f) {
     if (!in[f]) continue;
-    int& g = index[findRoot(piece, f)];
+    int& g = index[piece.find(f)];
     if (g < 0) g = static_cast<int>(groups.size()), groups.emplace_back(), lowerSide.push_back(0);
     groups[g].push_back(faces[f]);
     if (regionOf[f] == keep && sideOf[f] < 0) lowerSide[g] = 1;

@@ -1,3 +1,4 @@
+#include <acd/algo/union_find.hpp>
 #include <acd/mesh.hpp>
 
 #include <algorithm>
@@ -72,16 +73,10 @@ TriMesh compact(const TriMesh& mesh) {
   return compactFaces(mesh.vertices, mesh.faces, remap);
 }
 
-int findRoot(std::vector<int>& parent, int x) {
-  while (parent[x] != x) x = parent[x] = parent[parent[x]];
-  return x;
-}
-
 std::vector<TriMesh> splitEdgeConnected(const TriMesh& mesh) {
   const int nf = static_cast<int>(mesh.faces.size());
   const int nv = static_cast<int>(mesh.vertices.size());
-  std::vector<int> parent(nf);
-  std::iota(parent.begin(), parent.end(), 0);
+  UnionFind sets(nf);
   // The faces at each edge, listed at the edge's lower vertex as (other end, face): faces that
   // share an edge are neighbours in their vertex's sorted list.
   std::vector<int> start(nv + 1, 0);
@@ -99,13 +94,13 @@ std::vector<TriMesh> splitEdgeConnected(const TriMesh& mesh) {
     const auto first = around.begin() + start[v], last = around.begin() + start[v + 1];
     std::sort(first, last);
     for (auto it = first; it != last && it + 1 != last; ++it)
-      if (it->first == (it + 1)->first) parent[findRoot(parent, (it + 1)->second)] = findRoot(parent, it->second);
+      if (it->first == (it + 1)->first) sets.join((it + 1)->second, it->second);
   }
   // Pieces in the order of their first face, faces in input order.
   std::vector<int> pieceOf(nf, -1);
   std::vector<std::vector<Face>> faces;
   for (int f = 0; f < nf; ++f) {
-    int& piece = pieceOf[findRoot(parent, f)];
+    int& piece = pieceOf[sets.find(f)];
     if (piece < 0) piece = static_cast<int>(faces.size()), faces.emplace_back();
     faces[piece].push_back(mesh.faces[f]);
   }
