@@ -64,6 +64,18 @@ struct Cfg {
 
 const double kHalfTurn = M_PI / 2;
 
+/// The problem of the robots that pass a window in the wall at x = 3.5: from (1.5, 1.5, 1.5),
+/// turned by `theta` about `axis`, to (5.5, 1.5, 1.5) unturned; the reference point in
+/// [0, 7] x [0, 3] x [0, 3]; 10 runs of 10 s.
+std::string throughTheWall(const std::string& name, const Vec3& axis, double theta) {
+  Cfg c(name);
+  c.se3("start", {1.5, 1.5, 1.5}, axis, theta);
+  c.se3("goal", {5.5, 1.5, 1.5}, {0, 0, 1}, 0);
+  c.volume({0, 0, 0}, {7, 3, 3});
+  c.benchmark(10, 10);
+  return c.text();
+}
+
 OmplAppProblem lRobot() {
   OmplAppProblem p;
   p.what = "an L-shaped robot drawn with its corner at the origin: its reference point (the vertices' mean) lies outside it";
@@ -71,12 +83,7 @@ OmplAppProblem lRobot() {
   wallWithWindow(p.scene.environment, 0.9, 2.1, 1.25, 1.75);
   p.scene.robot.add("bar", boxSurface({0, 0, 0}, {1.2, 0.2, 0.2}));
   p.scene.robot.add("foot", boxSurface({0, 0, 0}, {0.2, 0.8, 0.2}));
-  Cfg c(p.scene.name);
-  c.se3("start", {1.5, 1.5, 1.5}, {1, 0, 0}, kHalfTurn);  // the foot upright: it must lie down to pass
-  c.se3("goal", {5.5, 1.5, 1.5}, {0, 0, 1}, 0);
-  c.volume({0, 0, 0}, {7, 3, 3});
-  c.benchmark(10, 10);
-  p.cfg = c.text();
+  p.cfg = throughTheWall(p.scene.name, {1, 0, 0}, kHalfTurn);  // the foot upright: it must lie down to pass
   return p;
 }
 
@@ -86,12 +93,7 @@ OmplAppProblem ringRobot() {
   p.scene.name = "ring_robot";
   wallWithWindow(p.scene.environment, 0.8, 2.2, 1.25, 1.75);  // 0.2 to spare across the ring, lying flat
   squareRing(p.scene.robot, "ring", 1.0, 0.15, 0, turn(90, Vec3::UnitY()));  // drawn upright (in the yz-plane)
-  Cfg c(p.scene.name);
-  c.se3("start", {1.5, 1.5, 1.5}, {0, 0, 1}, 0);
-  c.se3("goal", {5.5, 1.5, 1.5}, {0, 0, 1}, 0);
-  c.volume({0, 0, 0}, {7, 3, 3});
-  c.benchmark(10, 10);
-  p.cfg = c.text();
+  p.cfg = throughTheWall(p.scene.name, {0, 0, 1}, 0);  // drawn upright: it must lie down to pass
   return p;
 }
 
@@ -102,12 +104,7 @@ OmplAppProblem twoBarRobot() {
   wallWithWindow(p.scene.environment, 0.9, 2.1, 1.3, 1.7);
   p.scene.robot.add("arm_a", moved(boxSurface({0, -0.075, -0.075}, {1.0, 0.075, 0.075}), turn(30, Vec3::UnitZ())));
   p.scene.robot.add("arm_b", moved(boxSurface({0, -0.075, -0.075}, {1.0, 0.075, 0.075}), turn(-30, Vec3::UnitZ())));
-  Cfg c(p.scene.name);
-  c.se3("start", {1.5, 1.5, 1.5}, {1, 0, 0}, kHalfTurn);  // the V upright: it must lie down to pass
-  c.se3("goal", {5.5, 1.5, 1.5}, {0, 0, 1}, 0);
-  c.volume({0, 0, 0}, {7, 3, 3});
-  c.benchmark(10, 10);
-  p.cfg = c.text();
+  p.cfg = throughTheWall(p.scene.name, {1, 0, 0}, kHalfTurn);  // the V upright: it must lie down to pass
   return p;
 }
 
