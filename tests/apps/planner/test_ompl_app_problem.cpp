@@ -178,3 +178,42 @@ TEST(OmplAppProblem, BrokenFilesAreRefusedInOneLine) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(OmplAppProblem, ValidityByTrianglesAcceptsWhatOmplAppAccepts) {
+  // A small box robot wholly inside a closed box obstacle touches none of its triangles:
+  // OMPL.app's rule (validity: triangles, every .cfg) accepts it; free_space refuses it, naming
+  // the obstacle whose solid holds it.
+  const std::string base = R"(
+workspace: {min: [0, 0, 0], max: [6, 4, 4]}
+obstacles:
+  - box: {min: [2, 1, 1], max: [4, 3, 3]}
+robot: {type: box, size: [0.2, 0.2, 0.2]}
+start: {position: [3, 2, 2]}
+goal: {position: [5, 2, 2]}
+samplers: [uniform]
+)";
+  auto refusal = [](const std::string& text) {
+    const planner::Scenario s = planner::parseScenario(text, "inside.yaml", ".");
+    const planner::Preprocessing pre = planner::preprocess(s);
+    try {
+      planner::PlanningProblem problem(s, pre.freeSpace, pre.openings, pre.solids);
+    } catch (const planner::ScenarioError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(refusal(base + "validity: triangles\n"), "");
+  const std::string solid = refusal(base);
+  EXPECT_NE(solid.find("the start pose is not valid: the robot lies outside the free space: its inside point (3, 2, 2) "
+                       "is inside obstacles[0] (box) (a box)"),
+            std::string::npos)
+      << solid;
+  // A robot that straddles the box's surface touches it, under either rule.
+  std::string across = base + "validity: triangles\n";
+  across.replace(across.find("start: {position: [3, 2, 2]}"), 28, "start: {position: [4, 2, 2]}");
+  EXPECT_NE(refusal(across).find("the robot touches obstacles[0] (box)"), std::string::npos) << refusal(across);
+}
+
+}  // namespace
