@@ -3,6 +3,7 @@
 #include "deformation_files.hpp"
 #include "mesh_quality.hpp"
 
+#include <algorithm>
 #include <appcli/exit_codes.hpp>
 
 #include <nlohmann/json.hpp>
@@ -61,6 +62,30 @@ std::string fmt(const char* f, double v) {
 }
 
 /// The figures both the summary and the JSON give.
+/// How much a component's meshed region holds beyond the component itself, relative to the
+/// component (the hulls stand off the model by up to tau by design; simplification adds more).
+double overshootOf(const HullMeshResult& r, int i) {
+  const double component = acd::signedVolume(r.decomposition.components[i].mesh);
+  const double region = r.complex.regions[i].empty() ? 0.0 : acd::signedVolume(r.complex.regions[i]);
+  return component > 0 ? region / component - 1.0 : 0.0;
+}
+
+/// One line: the median and the largest overshoot over the components, and which is largest.
+void printOvershoot(const HullMeshResult& r) {
+  const int n = static_cast<int>(r.decomposition.components.size());
+  if (n == 0 || static_cast<int>(r.complex.regions.size()) < n) return;
+  std::vector<double> all;
+  int worst = 0;
+  for (int i = 0; i < n; ++i) {
+    all.push_back(overshootOf(r, i));
+    if (all[i] > all[worst]) worst = i;
+  }
+  std::vector<double> sorted = all;
+  std::sort(sorted.begin(), sorted.end());
+  std::printf("  overshoot      region beyond its component: median %+.1f%%, largest %+.1f%% (component %d); per component: --json\n",
+              100 * sorted[n / 2], 100 * all[worst], worst + 1);
+}
+
 struct Figures {
   int unresolved = 0;
   int n = 0;  // components (hulls)
@@ -106,6 +131,7 @@ void printReport(const Args& a, TetFormat format, const HullMeshResult& r, const
                 r.separatingPlanes, r.overlappingHulls);
   std::printf("  containment    farthest component vertex outside its hull: %.3g, outside its meshed region: %.3g\n",
               r.maxOutside, r.maxOutsideRegion);
+  printOvershoot(r);
   std::printf("  complex        %d touching pairs (%d overlapping, deepest %.3g), %d contact planes, %d interface + %d boundary facets\n",
               r.complex.contactPairs, r.complex.overlappingPairs, r.complex.maxOverlapDepth, r.complex.contactPlanes,
               r.complex.interfaceFacets, r.complex.boundaryFacets);
@@ -150,7 +176,9 @@ int writeJsonReport(const Args& a, const HullMeshResult& r, const DirectMeshResu
       comps.push_back({{"label", i + 1},
                        {"hull_vertices", r.hullVertices[i]},
                        {"meshed_hull_vertices", r.hulls[i].vertices.size()},
+                       {"component_volume", acd::signedVolume(r.decomposition.components[i].mesh)},
                        {"region_volume", r.complex.regions[i].empty() ? 0.0 : acd::signedVolume(r.complex.regions[i])},
+                       {"overshoot", overshootOf(r, i)},
                        {"clipped_volume", r.complex.clippedVolume[i]},
                        {"unresolved", r.decomposition.components[i].unresolved}});
     json j = {{"model", a.model},

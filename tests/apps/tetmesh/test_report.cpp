@@ -47,6 +47,15 @@ TEST(TetmeshReport, SummaryAndJsonGiveTheMeshFigures) {
   EXPECT_EQ(j["model"], "l.off");
   EXPECT_EQ(j["hull_mesh"]["tets"], r.quality.tets);
   EXPECT_EQ(j["components"].size(), r.hulls.size());
+  // The L (three unit cubes) cut into boxes: each exact hull is its component, nothing overshoots.
+  EXPECT_NE(summary.find("overshoot      region beyond its component: median +0.0%"), std::string::npos) << summary;
+  double components = 0.0;
+  for (const auto& c : j["components"]) {
+    components += c["component_volume"].get<double>();
+    EXPECT_NEAR(c["overshoot"].get<double>(), 0.0, 1e-9) << c;
+    EXPECT_NEAR(c["region_volume"].get<double>(), c["component_volume"].get<double>(), 1e-9) << c;
+  }
+  EXPECT_NEAR(components, 3.0, 1e-9);
   EXPECT_FALSE(j.contains("original_mesh"));
   EXPECT_FALSE(j.contains("deformation"));
   a.json = dir / "missing/report.json";
