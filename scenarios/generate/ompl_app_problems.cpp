@@ -146,10 +146,7 @@ OmplAppProblem plannerList() {
   OmplAppProblem p = lRobot();
   p.what = "a [planner] section with repeated keys (one line per planner instance) and parameters";
   p.scene.name = "planner_list";
-  p.cfg.replace(p.cfg.find("l_robot"), 7, "planner_list");
-  p.cfg.replace(p.cfg.find("l_robot_env"), 11, "planner_list_env");
-  p.cfg.replace(p.cfg.find("l_robot_robot"), 13, "planner_list_robot");
-  p.cfg += "\n[planner]\nrrtconnect=\nrrtconnect=\nrrtconnect.range=0.5\nkpiece=\nsbl=\naps=\n";
+  p.cfg = throughTheWall(p.scene.name, {1, 0, 0}, kHalfTurn) + "\n[planner]\nrrtconnect=\nrrtconnect=\nrrtconnect.range=0.5\nkpiece=\nsbl=\naps=\n";
   return p;
 }
 

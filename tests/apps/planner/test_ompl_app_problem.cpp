@@ -46,6 +46,17 @@ void expectInsideSomeBox(const Vec3& p, const std::vector<acd::Box3>& boxes) {
   EXPECT_TRUE(in) << p.transpose();
 }
 
+/// Why the problem refuses its start or goal (PlanningProblem's message); empty when it does not.
+std::string refusalOf(const planner::Scenario& s) {
+  const planner::Preprocessing pre = planner::preprocess(s);
+  try {
+    planner::PlanningProblem problem(s, pre.freeSpace, pre.openings, pre.solids);
+  } catch (const planner::ScenarioError& e) {
+    return std::string(e.what());
+  }
+  return std::string();
+}
+
 TEST(OmplAppProblem, LRobotsReferencePointIsTheMeanOfItsVerticesOutsideIt) {
   const planner::Scenario s = load("l_robot");
   const std::vector<acd::Box3> boxes{{Vec3(0, 0, 0), Vec3(1.2, 0.2, 0.2)}, {Vec3(0, 0, 0), Vec3(0.2, 0.8, 0.2)}};
@@ -144,20 +155,11 @@ TEST(OmplAppProblem, AnInvalidStartIsRefusedSayingWhy) {
     u.replace(u.find(from), from.size(), to);
     return planner::parseOmplAppProblem(u, "l_robot.cfg", kProblems);
   };
-  auto refusal = [](const planner::Scenario& s) {
-    const planner::Preprocessing pre = planner::preprocess(s);
-    try {
-      planner::PlanningProblem problem(s, pre.freeSpace, pre.openings, pre.solids);
-    } catch (const planner::ScenarioError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
-  };
   // In the wall: the robot's triangles touch the world's.
-  const std::string inWall = refusal(move("start.x=1.5", "start.x=3.5"));
+  const std::string inWall = refusalOf(move("start.x=1.5", "start.x=3.5"));
   EXPECT_NE(inWall.find("the start pose is not valid: the robot touches world"), std::string::npos) << inWall;
   // Outside the volume.
-  const std::string outside = refusal(move("start.x=1.5", "start.x=-1"));
+  const std::string outside = refusalOf(move("start.x=1.5", "start.x=-1"));
   EXPECT_NE(outside.find("outside the volume"), std::string::npos) << outside;
 }
 
@@ -194,16 +196,7 @@ start: {position: [3, 2, 2]}
 goal: {position: [5, 2, 2]}
 samplers: [uniform]
 )";
-  auto refusal = [](const std::string& text) {
-    const planner::Scenario s = planner::parseScenario(text, "inside.yaml", ".");
-    const planner::Preprocessing pre = planner::preprocess(s);
-    try {
-      planner::PlanningProblem problem(s, pre.freeSpace, pre.openings, pre.solids);
-    } catch (const planner::ScenarioError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
-  };
+  auto refusal = [](const std::string& text) { return refusalOf(planner::parseScenario(text, "inside.yaml", ".")); };
   EXPECT_EQ(refusal(base + "validity: triangles\n"), "");
   const std::string solid = refusal(base);
   EXPECT_NE(solid.find("the start pose is not valid: the robot lies outside the free space: its inside point (3, 2, 2) "
