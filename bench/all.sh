@@ -8,7 +8,8 @@
 #
 #   --out   where this run's outputs go (default out/all; emptied first, except the peers' cache)
 #   --doc   the document written (default docs/BENCHMARKS.md)
-#   --existing  table only the peer runs already in the cache and start none (CoACD on a cold
+#   --existing  table only the peer runs already in the cache and start none (acd itself always
+#           runs: its runs are cached by binary, so they are this commit's; CoACD on a cold
 #           cache takes hours: run `bench/compare_peers.sh --only peers` first, in parts, or in
 #           shards with bench/compare_peers.py's --shard); the tables say how many runs each has
 #   --assemble-only  no runs: write the document again from OUT/tables (after a template edit)
@@ -30,7 +31,7 @@ while [[ $# -gt 0 ]]; do
         --doc) DOC="$2"; shift 2 ;;
         --existing) EXISTING=(--existing); shift ;;
         --assemble-only) ASSEMBLE_ONLY=1; shift ;;
-        -h|--help) sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         *) echo "all: unknown option $1" >&2; exit 2 ;;
     esac
 done

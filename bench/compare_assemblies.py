@@ -81,11 +81,8 @@ def run(args, paths):
     if args.only in ("acd", "all"):
         for name, model, _ in models:
             for tau in ACD_TAUS:
-                if not args.existing:
-                    cp.say("acd %s tau %g" % (name, tau))
-                d = cp.run_acd(paths, model, tau, args.existing)
-                if d is None:
-                    continue
+                cp.say("acd %s tau %g" % (name, tau))
+                d = cp.run_acd(paths, model, tau)  # --existing spares the peers only
                 dst = os.path.join(paths.out, name, "acd-t%g" % tau)
                 cp.publish(d, dst, ["hulls.obj", "report.json", "log.txt", "run.json"])
                 if os.path.exists(os.path.join(d, "hulls.obj")):
@@ -198,7 +195,7 @@ def main():
     ap.add_argument("--models", type=lambda s: s.split(","), default=None)
     ap.add_argument("--only", choices=["acd", "peers", "all"], default="all")
     ap.add_argument("--out", default=os.path.join(cp.ROOT, "out/compare_assemblies"))
-    ap.add_argument("--existing", action="store_true", help="publish and score only the runs already in the cache")
+    ap.add_argument("--existing", action="store_true", help="publish and score only the peer runs already in the cache (acd always runs)")
     ap.add_argument("--shard", type=lambda s: tuple(int(x) for x in s.split("/")), default=(0, 1),
                     help="I/N: run only every N-th peer run from the I-th")
     args = ap.parse_args()
