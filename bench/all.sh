@@ -2,7 +2,7 @@
 # Makes docs/BENCHMARKS.md in one run on one commit: the peers (bench/compare_peers.sh, corpus and
 # held-out models), assemblies (bench/compare_assemblies.py), speed over the corpus (bench/run_corpus.sh), tau kept (bench/tau_kept.sh) and
 # invariance under rigid motion (bench/invariance.sh), each table placed into
-# bench/BENCHMARKS.template.md with the command that made it.
+# bench/BENCHMARKS.template.md with the command that made it. Dense inputs against V-HACD: bench/dense_speed.py.
 #
 #   bench/all.sh [--out DIR] [--doc PATH] [--existing] [--assemble-only]
 #
@@ -64,6 +64,10 @@ say "assemblies"
 /usr/bin/python3 bench/compare_assemblies.py table --out "$OUT/assemblies" >"$OUT/tables/assemblies.md"
 say "speed"
 bench/run_corpus.sh --taus "0.2 0.05 0.02" --repeat 3 --out "$OUT/speed" >"$OUT/tables/speed.md" || true
+say "dense inputs"
+/usr/bin/python3 bench/dense_speed.py --tau 0.05 --repeat 3 --out "$OUT/dense" >"$OUT/tables/dense.md" || true
+/usr/bin/python3 bench/dense_speed.py --tau 0.05 --repeat 3 --acd-flags="--working-share 0.1" --out "$OUT/dense_working" \
+    >"$OUT/tables/dense_working.md" || true
 say "tau kept"
 bench/tau_kept.sh --out "$OUT/tau_kept" >"$OUT/tables/tau_kept.md" || true
 say "invariance"

@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """acd against V-HACD's defaults on time and peak memory, from the corpus up to dense inputs of
-about a million faces (issue: cost that does not grow with the input's resolution).
+about a million faces.
 
-  bench/dense_speed.py [--tau 0.05] [--repeat 3] [--models A,B] [--out DIR]   -> Markdown on stdout
+  bench/dense_speed.py [--tau 0.05] [--repeat 3] [--models A,B] [--acd-flags="--working-share 0.1"] [--out DIR]
+                                                                              -> Markdown on stdout
 
 The dense inputs are made here, by midpoint subdivision (every triangle into four, the same
 shape): armadillo x1 and x2 (208k, 832k faces), bunny00 x1 and x2 (300k, 1.2M), ChineseDragon-10kv
@@ -84,10 +85,10 @@ def faces_of(path):
         return int(f.readline().split()[1])
 
 
-def run_once(paths, tool, model, obj, tau, work):
+def run_once(paths, tool, model, obj, tau, work, acd_flags=()):
     d = tempfile.mkdtemp(dir=work)
     if tool == "acd":
-        cmd = [paths.acd, "decompose", model, "-t", str(tau), "-o", d, "-q", "--threads", "2"]
+        cmd = [paths.acd, "decompose", model, "-t", str(tau), "-o", d, "-q", "--threads", "2"] + list(acd_flags)
     else:
         os.symlink(obj, os.path.join(d, "model.obj"))
         cmd = [paths.peer("vhacd"), "model.obj"]
@@ -111,6 +112,7 @@ def main():
     ap.add_argument("--tau", type=float, default=0.05)
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--models", default="", help="comma-separated names (corpus models or the dense names above)")
+    ap.add_argument("--acd-flags", default="", help="more flags for acd decompose, written --acd-flags=\"...\"")
     ap.add_argument("--out", default=os.path.join(cp.ROOT, "out/dense_speed"))
     args = ap.parse_args()
     paths = cp.Paths(args.out)
@@ -130,9 +132,11 @@ def main():
         for r in range(args.repeat):
             for tool in ("acd", "vhacd"):
                 cp.say("%s: %s run %d/%d" % (name, tool, r + 1, args.repeat))
-                runs[tool].append(run_once(paths, tool, model, obj, args.tau, args.out))
+                runs[tool].append(run_once(paths, tool, model, obj, args.tau, args.out, args.acd_flags.split()))
         rows.append((name, faces_of(model), runs))
         json.dump(rows, open(os.path.join(args.out, "runs.json"), "w"), indent=1)
+    if args.acd_flags:
+        print("acd with `%s`.\n" % args.acd_flags)
     print("| model | faces | acd s | V-HACD s | acd / V-HACD | acd MB | V-HACD MB | acd parts | V-HACD parts |")
     print("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
     for name, faces, runs in rows:

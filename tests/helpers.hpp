@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <random>
 #include <sstream>
@@ -66,6 +67,28 @@ inline acd::Decomposition decomposed(const TriMesh& mesh, double tau) {
   acd::Decomposition d = acd::decompose(mesh, o);
   EXPECT_TRUE(d.status.ok()) << d.status.message;
   return d;
+}
+
+/// Every triangle split into four at its edges' middles: the same surface, four times the faces
+/// (how the dense inputs of the benchmarks are made).
+inline TriMesh midpointSubdivided(const TriMesh& m) {
+  TriMesh out;
+  out.vertices = m.vertices;
+  std::map<std::pair<int, int>, int> middle;
+  auto mid = [&](int a, int b) {
+    const auto key = std::minmax(a, b);
+    const auto [it, fresh] = middle.emplace(key, static_cast<int>(out.vertices.size()));
+    if (fresh) out.vertices.push_back(0.5 * (m.vertices[a] + m.vertices[b]));
+    return it->second;
+  };
+  for (const Face& f : m.faces) {
+    const int ab = mid(f[0], f[1]), bc = mid(f[1], f[2]), ca = mid(f[2], f[0]);
+    out.faces.push_back({f[0], ab, ca});
+    out.faces.push_back({ab, f[1], bc});
+    out.faces.push_back({ca, bc, f[2]});
+    out.faces.push_back({ab, bc, ca});
+  }
+  return out;
 }
 
 using acd::closestPointOnTriangle;

@@ -265,6 +265,13 @@ CLI::App* addDecomposeCommand(CLI::App& app, DecomposeArgs& a) {
   dec->add_flag("--no-repair", a.noRepair,
                 "Only the strict checks and safe repairs of earlier versions: no vertex merging, double-sided face, "
                 "non-manifold, degenerate-face repairs, no cavity handling and no wrap");
+  dec->add_option("--working-share", a.options.workingShare,
+                  "Decompose a simplified copy of the input that stands at most this share of tau off it, at tau less "
+                  "that share; the hulls are built from it and the input's own vertices and checked against the input "
+                  "(0, the default: the input's own triangles; 0.1 makes a dense scan's cost follow tau, not its "
+                  "face count, for about 15 % more parts)")
+      ->check(CLI::Range(0.0, 0.5))
+      ->capture_default_str();
   dec->add_option("--threads", a.options.threads, "Worker threads, 0 = all cores; output is identical for any value")
       ->capture_default_str();
   dec->add_option("-o,--out", a.out, "Output folder: component_NNN.off, hulls.obj (one object per hull), report.json")

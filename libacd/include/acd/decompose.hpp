@@ -47,6 +47,13 @@ struct DecomposeOptions {
   /// on coordinates rounded to the frame's grid (2.4e-7 of the model's radius), so a cut face through
   /// input vertices and points a cut made is planar to within that.
   bool invariant = true;
+  /// Detail far below tau cannot change the parts: the input is first simplified to a working mesh
+  /// that stands at most this share of tau off it (acd/algo/working_mesh.hpp), the recursion runs
+  /// on that at tau less the share, and each hull is built from the working piece and the input
+  /// vertices it stands for, its distance to the model bounded against the input. 0: decompose the
+  /// input's own triangles (the default: on the corpus the working mesh costs about 15 % more parts
+  /// at tau 0.05; docs/ALGORITHM.md, "The working mesh").
+  double workingShare = 0.0;
   int threads = 0;               // 0: all cores. The output never depends on it.
   int maxComponents = 10000;     // safety net against runaway recursion
   int maxDepth = 64;
@@ -101,6 +108,8 @@ struct DecomposeStats {
   int inputEdges = 0;
   int inputNotches = 0;       // concave edges of the input
   int holesFilled = 0;        // boundary loops closed before decomposing an open mesh
+  int workingFaces = 0;       // faces of the working meshes decomposed (inputEdges * 2 / 3 without one)
+  double workingDistance = 0.0;  // normalised units: how far the working meshes stand off the input (measured)
   double inputVolume = 0.0;   // normalised units
 };
 

@@ -16,6 +16,7 @@
 
 #include "held_to.hpp"
 #include "rounds.hpp"
+#include "working_model.hpp"
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -27,6 +28,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <numeric>
 #include <set>
 #include <sstream>
@@ -387,6 +389,8 @@ DecomposeStats& operator+=(DecomposeStats& into, const DecomposeStats& s) {
   into.inputEdges += s.inputEdges;
   into.inputNotches += s.inputNotches;
   into.inputVolume += s.inputVolume;
+  into.workingFaces += s.workingFaces;
+  into.workingDistance = std::max(into.workingDistance, s.workingDistance);
   return into;
 }
 
@@ -410,6 +414,8 @@ Status validate(const DecomposeOptions& o) {
     return bad("epsilon must lie in [0, tau]");
   if (!std::isfinite(o.delta) || (o.delta != -1.0 && (o.delta < 0 || o.delta > o.tau)))
     return bad("delta must lie in [0, tau]");
+  if (!std::isfinite(o.workingShare) || o.workingShare < 0 || o.workingShare > 0.5)
+    return bad("workingShare must lie in [0, 0.5]");
   if (o.threads < 0 || o.threads > 1024) return bad("threads must lie in [0, 1024]");
   if (o.maxComponents < 1) return bad("maxComponents must be at least 1");
   return Status::success();
@@ -432,6 +438,31 @@ int countNotches(const TriMesh& mesh, double angle) {
 }
 
 namespace {
+
+/// A component's hull distance to the model, for a working mesh: against the working model (or
+/// the working piece, MergeScope::Component) plus what the working mesh stands off the input, and
+/// where that sum exceeds tau, against the input itself (built once, when first needed).
+class ExcessAgainstInput {
+ public:
+  ExcessAgainstInput(const TriMesh& workingModel, std::vector<TriMesh> input, double standOff, double tau)
+      : working_(workingModel), input_(std::move(input)), standOff_(standOff), tau_(tau) {}
+
+  double operator()(const TriMesh& hull, const TriMesh& piece, MergeScope scope) {
+    const HullExcess e = scope == MergeScope::Model
+                             ? working_.measure(hull, tau_ - standOff_, kExcessResolution * tau_)
+                             : measureHullExcess(piece, hull, tau_ - standOff_, kExcessResolution * tau_);
+    if (!e.exceeds) return e.distance + standOff_;
+    std::call_once(built_, [&] { input_model_ = std::make_unique<ModelExcess>(concatenate(input_)); });
+    return input_model_->measure(hull, tau_, kExcessResolution * tau_).distance;
+  }
+
+ private:
+  ModelExcess working_;
+  std::vector<TriMesh> input_;
+  double standOff_, tau_;
+  std::once_flag built_;
+  std::unique_ptr<ModelExcess> input_model_;
+};
 
 /// The decomposition of a solid with repairs done; the merge pass held to the model measures
 /// against `heldTo` (input coordinates) to `mergeTau` when given, else against the solid itself.
@@ -458,16 +489,35 @@ Decomposition decomposeSolid(const TriMesh& mesh, const TriMesh* heldTo, double 
                                      : minimumSphereNormalization(concatenate(prepared.components));
   CanonicalInverse inverse(result.normalization);
   std::vector<Piece> pending = firstPieces(prepared.components, o.invariant, result, inverse);
-  std::vector<TriMesh> firstMeshes;  // the model as decomposed, for the merge pass
-  for (const Piece& p : pending) firstMeshes.push_back(p.mesh);
-  const TriMesh model = heldTo ? applyNormalization(*heldTo, result.normalization) : concatenate(firstMeshes);
-  result.times.prepare = secondsSince(t);
 
   // Every parallel loop below, nested ones included, runs on these workers only.
   tbb::task_arena arena = workerArena(o.threads);
+  bool redoAtFullResolution = false;
   arena.execute([&] {
+    // Detail below what tau can see goes first: the recursion works on the working meshes, at tau
+    // less what they may stand off the input (acd/algo/working_mesh.hpp).
+    std::vector<TriMesh> firstMeshes, inputMeshes;
+    std::map<int, int> firstOf;  // a piece's source -> its place among the first pieces
+    for (std::size_t k = 0; k < pending.size(); ++k) {
+      firstMeshes.push_back(std::move(pending[k].mesh));
+      firstOf[pending[k].source] = static_cast<int>(k);
+    }
+    WorkingModel working;
+    if (o.workingShare > 0 && !heldTo) {  // a wrap is held to its input by decomposeHeldTo's own rules
+      inputMeshes = firstMeshes;
+      working = simplifyPieces(firstMeshes, o.workingShare * o.tau);
+    }
+    for (std::size_t k = 0; k < pending.size(); ++k) pending[k].mesh = firstMeshes[k];
+    const double allowance = working.used() ? o.workingShare * o.tau : 0.0;
+    result.stats.workingFaces = working.workingFaces;
+    result.stats.workingDistance = working.distance;
+    DecomposeOptions inner = o;
+    inner.tau = o.tau - allowance;
+    const TriMesh model = heldTo ? applyNormalization(*heldTo, result.normalization) : concatenate(firstMeshes);
+    result.times.prepare = secondsSince(t);
+
     FinalPieces<Piece, Outcome> rounds = runRounds(
-        std::move(pending), o.maxComponents, [&](const Piece& piece) { return processPiece(piece, o); },
+        std::move(pending), o.maxComponents, [&](const Piece& piece) { return processPiece(piece, inner); },
         [](const Piece&, Outcome& out) { return std::move(out.children); },
         [&](const Outcome& out) {
           result.times += out.times;  // a piece's own work: concavity, grouping, cutting
@@ -481,14 +531,29 @@ Decomposition decomposeSolid(const TriMesh& mesh, const TriMesh* heldTo, double 
     std::vector<Piece> finals = std::move(rounds.pieces);
     std::vector<Component> finalInfo;
     for (Outcome& out : rounds.outcomes) finalInfo.push_back(std::move(out.component));
+    if (working.used() && std::any_of(finalInfo.begin(), finalInfo.end(), [](const Component& c) { return c.unresolved; })) {
+      redoAtFullResolution = true;  // the working mesh may have made a notch no plane can resolve
+      return;
+    }
 
     t = Clock::now();
-    DecomposeOptions mergeOptions = o;
-    mergeOptions.tau = mergeTau;
+    DecomposeOptions mergeOptions = inner;
+    mergeOptions.tau = mergeTau - allowance;
     if (o.merge) mergePieces(finals, finalInfo, model, mergeOptions, result.stats);
     result.times.merging = secondsSince(t);
 
     t = Clock::now();
+    // The input's own vertices each working piece stands for join its hull.
+    std::vector<std::vector<Vec3>> inputPoints;
+    if (working.used()) {
+      std::vector<const TriMesh*> meshes;
+      std::vector<int> sources;
+      for (const Piece& p : finals) meshes.push_back(&p.mesh), sources.push_back(firstOf.at(p.source));
+      inputPoints = inputVerticesOf(working, meshes, sources);
+    }
+    std::unique_ptr<ExcessAgainstInput> excess;
+    if (working.used())
+      excess = std::make_unique<ExcessAgainstInput>(model, std::move(inputMeshes), working.distance, mergeTau);
     result.components.resize(finals.size());
     tbb::parallel_for(std::size_t(0), finals.size(), [&](std::size_t i) {
       Component& c = result.components[i];
@@ -500,12 +565,25 @@ Decomposition decomposeSolid(const TriMesh& mesh, const TriMesh* heldTo, double 
       // order is canonical, so is the hull's triangulation). Volumes are measured on both brought to
       // the normalised frame: in the input's coordinates a model far from the origin loses digits.
       c.mesh = inverse(finals[i].mesh);
-      c.hull = convexHull(c.mesh.vertices).mesh;
+      std::vector<Vec3> points = c.mesh.vertices;
+      if (!inputPoints.empty())
+        for (const Vec3& x : inputPoints[i]) points.push_back(inverse(x));
+      c.hull = convexHull(points).mesh;
       c.volume = signedVolume(applyNormalization(c.mesh, result.normalization));
-      c.hullVolume = signedVolume(applyNormalization(c.hull, result.normalization));
+      const TriMesh hull = applyNormalization(c.hull, result.normalization);
+      c.hullVolume = signedVolume(hull);
+      if (excess) c.hullExcess = (*excess)(hull, finals[i].mesh, o.mergeScope);
     });
     result.times.hulls = secondsSince(t);
+    // The promise is kept on the input or the working mesh is not used.
+    redoAtFullResolution = excess && std::any_of(result.components.begin(), result.components.end(),
+                                                 [&](const Component& c) { return c.hullExcess > mergeTau; });
   });
+  if (redoAtFullResolution) {
+    DecomposeOptions full = options;
+    full.workingShare = 0.0;
+    return decomposeSolid(mesh, heldTo, mergeTau, full);
+  }
   result.times.total = secondsSince(start);
   return result;
 }

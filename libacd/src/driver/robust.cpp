@@ -228,6 +228,7 @@ Decomposition decomposeShell(const TriMesh& shell, int index, const DecomposeOpt
     c.source = index;
   }
   d.stats.inputVolume /= k3;
+  d.stats.workingDistance /= k;
   return d;
 }
 

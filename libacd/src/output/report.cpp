@@ -65,6 +65,7 @@ json solidReport(const ReportInput& in, const Decomposition& d) {
                      {"merge", d.options.merge},
                      {"merge_scope", d.options.mergeScope == MergeScope::Model ? "model" : "component"},
                      {"invariant", d.options.invariant},
+                     {"working_share", d.options.workingShare},
                      {"threads", d.options.threads},
                      {"units", kUnits}};
   const int edges = d.stats.inputEdges;
@@ -79,6 +80,7 @@ json solidReport(const ReportInput& in, const Decomposition& d) {
                 {"normalization", normalizationJson(d.normalization)},
                 {"repairs", d.repairs},
                 {"holes_filled", d.stats.holesFilled},
+                {"working_mesh", {{"faces", d.stats.workingFaces}, {"distance", d.stats.workingDistance}}},
                 {"wrap", {{"used", d.wrap.used},
                           {"reason", d.wrap.reason},
                           {"wrapped_pieces", d.wrap.wrappedPieces},

@@ -1,0 +1,291 @@
+// Quadric edge collapse held to a distance from the input (acd/algo/working_mesh.hpp).
+#include <acd/algo/working_mesh.hpp>
+
+#include <acd/algo/closest_point.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
+
+namespace acd {
+
+namespace {
+
+/// Garland & Heckbert's quadric: the sum of weight * (n.p + d)^2 over planes, a symmetric 4x4.
+struct Quadric {
+  double xx = 0, xy = 0, xz = 0, xw = 0, yy = 0, yz = 0, yw = 0, zz = 0, zw = 0, ww = 0;
+
+  static Quadric ofPlane(const Vec3& n, double d, double weight) {
+    Quadric q;
+    q.xx = weight * n.x() * n.x(), q.xy = weight * n.x() * n.y(), q.xz = weight * n.x() * n.z();
+    q.xw = weight * n.x() * d, q.yy = weight * n.y() * n.y(), q.yz = weight * n.y() * n.z();
+    q.yw = weight * n.y() * d, q.zz = weight * n.z() * n.z(), q.zw = weight * n.z() * d, q.ww = weight * d * d;
+    return q;
+  }
+  Quadric& operator+=(const Quadric& q) {
+    xx += q.xx, xy += q.xy, xz += q.xz, xw += q.xw, yy += q.yy, yz += q.yz, yw += q.yw, zz += q.zz, zw += q.zw;
+    ww += q.ww;
+    return *this;
+  }
+  double error(const Vec3& p) const {
+    const double x = p.x(), y = p.y(), z = p.z();
+    return std::max(0.0, xx * x * x + 2 * xy * x * y + 2 * xz * x * z + 2 * xw * x + yy * y * y + 2 * yz * y * z +
+                             2 * yw * y + zz * z * z + 2 * zw * z + ww);
+  }
+};
+
+double distanceToTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  return (closestPointOnTriangle(p, a, b, c) - p).norm();
+}
+
+/// Faces turning further than this (cosine of the angle between old and new normal) are refused: a
+/// fold would make the working surface pass through itself.
+constexpr double kLeastNormalCosine = 0.35;
+/// A closed piece keeps at least this many faces (a tetrahedron and a little more).
+constexpr int kLeastFaces = 8;
+
+class Collapser {
+ public:
+  Collapser(const TriMesh& mesh, double tolerance)
+      : input_(mesh.vertices), inputFaces_(mesh.faces), pos_(mesh.vertices), faces_(mesh.faces), tolerance_(tolerance) {
+    const std::size_t n = pos_.size();
+    faceAlive_.assign(faces_.size(), 1);
+    vertexFaces_.resize(n);
+    quadric_.resize(n);
+    version_.assign(n, 0);
+    homed_.resize(faces_.size());
+    liveFaces_ = static_cast<int>(faces_.size());
+    for (std::size_t f = 0; f < faces_.size(); ++f) {
+      const Face& t = faces_[f];
+      const Vec3 normal = (pos_[t[1]] - pos_[t[0]]).cross(pos_[t[2]] - pos_[t[0]]);
+      const double twiceArea = normal.norm();
+      for (int k = 0; k < 3; ++k) {
+        if (vertexFaces_[t[k]].empty()) homed_[f].push_back(t[k]);  // each input vertex on its first face
+        vertexFaces_[t[k]].push_back(static_cast<int>(f));
+      }
+      if (twiceArea <= 0) continue;
+      const Vec3 unit = normal / twiceArea;
+      const Quadric q = Quadric::ofPlane(unit, -unit.dot(pos_[t[0]]), 0.5 * twiceArea);
+      for (int k = 0; k < 3; ++k) quadric_[t[k]] += q;
+    }
+    inputFacesStart_.assign(n + 1, 0);
+    for (std::size_t v = 0; v < n; ++v)
+      inputFacesStart_[v + 1] = inputFacesStart_[v] + static_cast<int>(vertexFaces_[v].size());
+    for (std::size_t v = 0; v < n; ++v)
+      inputFacesOf_.insert(inputFacesOf_.end(), vertexFaces_[v].begin(), vertexFaces_[v].end());
+    for (const Face& t : faces_)
+      for (int k = 0; k < 3; ++k)
+        if (t[k] < t[(k + 1) % 3]) push(t[k], t[(k + 1) % 3]);  // each edge once (closed, oriented)
+  }
+
+  WorkingMesh run() {
+    WorkingMesh out;
+    out.tolerance = tolerance_;
+    while (!heap_.empty() && liveFaces_ > kLeastFaces) {
+      const Candidate c = heap_.top();
+      heap_.pop();
+      if (version_[c.a] != c.versionA || version_[c.b] != c.versionB) continue;  // an end changed since
+      if (collapse(c)) ++out.collapses;
+    }
+    std::vector<int> remap(pos_.size(), -1);
+    for (std::size_t f = 0; f < faces_.size(); ++f) {
+      if (!faceAlive_[f]) continue;
+      Face t = faces_[f];
+      for (int& v : t) {
+        if (remap[v] < 0) remap[v] = 0;  // marked used; numbered below in vertex order
+      }
+    }
+    int used = 0;
+    for (std::size_t v = 0; v < pos_.size(); ++v)
+      if (remap[v] >= 0) {
+        remap[v] = used++;
+        out.mesh.vertices.push_back(pos_[v]);
+      }
+    for (std::size_t f = 0; f < faces_.size(); ++f)
+      if (faceAlive_[f]) out.mesh.faces.push_back({remap[faces_[f][0]], remap[faces_[f][1]], remap[faces_[f][2]]});
+    out.inputToWorking = inputToWorking_;
+    return out;
+  }
+
+ private:
+  struct Candidate {
+    double cost;
+    int a, b;
+    unsigned versionA, versionB;
+    bool ontoB;  // the edge collapses onto b's position
+  };
+  /// The heap's order: least cost first, equal costs by vertex index (canonical, so pose-free).
+  struct Later {
+    bool operator()(const Candidate& x, const Candidate& y) const {
+      if (x.cost != y.cost) return x.cost > y.cost;
+      if (x.a != y.a) return x.a > y.a;
+      return x.b > y.b;
+    }
+  };
+
+  /// The edge's collapse onto the end of less quadric error (the lower index on a tie): the working
+  /// vertices are input vertices, so they lie on the input, and a flat region stays exactly flat.
+  void push(int a, int b) {
+    if (a > b) std::swap(a, b);
+    Quadric q = quadric_[a];
+    q += quadric_[b];
+    const double ea = q.error(pos_[a]), eb = q.error(pos_[b]);
+    heap_.push({std::min(ea, eb), a, b, version_[a], version_[b], eb < ea});
+  }
+
+  /// The live faces around v (dropping the dead ones from its list on the way).
+  const std::vector<int>& facesAround(int v) {
+    std::vector<int>& list = vertexFaces_[v];
+    list.erase(std::remove_if(list.begin(), list.end(), [&](int f) { return !faceAlive_[f]; }), list.end());
+    return list;
+  }
+
+  std::vector<int> neighbours(int v) {
+    std::vector<int> out;
+    for (int f : facesAround(v))
+      for (int u : faces_[f])
+        if (u != v) out.push_back(u);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }
+
+  bool collapse(const Candidate& c) {
+    const int a = c.a, b = c.b;
+    const Vec3 p = c.ontoB ? pos_[b] : pos_[a];
+    const std::vector<int> fa = facesAround(a), fb = facesAround(b);
+    std::vector<int> shared, kept;
+    for (int f : fa) (contains(f, b) ? shared : kept).push_back(f);
+    for (int f : fb)
+      if (!contains(f, a)) kept.push_back(f);
+    std::vector<int> changed = kept;  // every face the collapse moves or removes
+    changed.insert(changed.end(), shared.begin(), shared.end());
+    if (shared.size() != 2 || liveFaces_ - 2 < kLeastFaces) return false;
+    // The link condition: the ends' only common neighbours are the two faces' third corners, so the
+    // surface stays a manifold.
+    const std::vector<int> na = neighbours(a), nb = neighbours(b);
+    std::vector<int> common;
+    std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(common));
+    if (common.size() != 2) return false;
+
+    auto corner = [&](int v) -> const Vec3& { return v == a || v == b ? p : pos_[v]; };
+    for (int f : kept) {
+      const Face& t = faces_[f];
+      const Vec3 before = (pos_[t[1]] - pos_[t[0]]).cross(pos_[t[2]] - pos_[t[0]]);
+      const Vec3 after = (corner(t[1]) - corner(t[0])).cross(corner(t[2]) - corner(t[0]));
+      if (!(before.dot(after) > kLeastNormalCosine * before.norm() * after.norm())) return false;
+    }
+    // Held to the input: every input vertex given a face the collapse moves keeps it while it stays
+    // within the tolerance (one distance), else takes the nearest new face, which must be within.
+    double inputFar = 0.0;
+    rehomed_.clear();
+    for (int f : changed) {
+      const bool stays = !(contains(f, a) && contains(f, b));
+      for (int x : homed_[f]) {
+        double best = std::numeric_limits<double>::infinity();
+        int home = -1;
+        if (stays) {
+          const Face& t = faces_[f];
+          best = distanceToTriangle(input_[x], corner(t[0]), corner(t[1]), corner(t[2]));
+          home = f;
+        }
+        if (!(best <= tolerance_))
+          for (int g : kept) {
+            const Face& t = faces_[g];
+            const double d = distanceToTriangle(input_[x], corner(t[0]), corner(t[1]), corner(t[2]));
+            if (d < best) best = d, home = g;
+          }
+        if (!(best <= tolerance_)) return false;
+        inputFar = std::max(inputFar, best);
+        rehomed_.push_back({home, x});
+      }
+    }
+    // And the other way: each new face stays near the input at its centroid (its corners are input
+    // vertices; simplifyPieces measures more points of the result), against the input faces around its corners and around the input
+    // vertices it now stands for.
+    auto nearInput = [&](const Vec3& q, int g) {
+      auto within = [&](int x) {
+        for (int k = inputFacesStart_[x]; k < inputFacesStart_[x + 1]; ++k) {
+          const Face& i = inputFaces_[inputFacesOf_[k]];
+          if (distanceToTriangle(q, input_[i[0]], input_[i[1]], input_[i[2]]) <= tolerance_) return true;
+        }
+        return false;
+      };
+      for (int v : faces_[g])
+        if (within(v == a || v == b ? (c.ontoB ? b : a) : v)) return true;
+      // The input vertex nearest to q first: its faces hold q's nearest input point as a rule.
+      const auto from = std::lower_bound(rehomed_.begin(), rehomed_.end(), std::make_pair(g, -1));
+      auto to = from;
+      int nearest = -1;
+      double nearestDistance = std::numeric_limits<double>::infinity();
+      for (; to != rehomed_.end() && to->first == g; ++to) {
+        const double d = (input_[to->second] - q).squaredNorm();
+        if (d < nearestDistance) nearestDistance = d, nearest = to->second;
+      }
+      if (nearest >= 0 && within(nearest)) return true;
+      for (auto it = from; it != to; ++it)
+        if (it->second != nearest && within(it->second)) return true;
+      return false;
+    };
+    std::sort(rehomed_.begin(), rehomed_.end());  // by face, for nearInput
+    for (int g : kept) {
+      const Face& t = faces_[g];
+      const Vec3 u = corner(t[0]), v = corner(t[1]), w = corner(t[2]);
+      if (!nearInput((u + v + w) / 3.0, g)) return false;
+    }
+
+    pos_[a] = p;  // a stays, at b's position when collapsing onto b
+    inputToWorking_ = std::max(inputToWorking_, inputFar);
+    quadric_[a] += quadric_[b];
+    for (int f : changed) homed_[f].clear();
+    for (const auto& [home, x] : rehomed_) homed_[home].push_back(x);
+    for (int f : shared) faceAlive_[f] = 0;
+    liveFaces_ -= 2;
+    for (int f : fb)
+      if (faceAlive_[f])
+        for (int& v : faces_[f])
+          if (v == b) v = a;
+    std::vector<int>& around = vertexFaces_[a];
+    around = kept;
+    std::sort(around.begin(), around.end());
+    vertexFaces_[b].clear();
+    ++version_[a];
+    ++version_[b];
+    for (int n : neighbours(a)) push(a, n);
+    return true;
+  }
+
+  bool contains(int f, int v) const { return faces_[f][0] == v || faces_[f][1] == v || faces_[f][2] == v; }
+
+  const std::vector<Vec3> input_;
+  const std::vector<Face> inputFaces_;
+  std::vector<int> inputFacesStart_, inputFacesOf_;  // each input vertex's input faces (CSR)
+  std::vector<Vec3> pos_;
+  std::vector<Face> faces_;
+  double tolerance_;
+  std::vector<char> faceAlive_;
+  std::vector<std::vector<int>> vertexFaces_;
+  std::vector<Quadric> quadric_;
+  std::vector<unsigned> version_;
+  std::vector<std::vector<int>> homed_;       // by face: the input vertices it is nearest to (as far as known)
+  std::vector<std::pair<int, int>> rehomed_;  // a collapse's new (face, input vertex) pairs
+  std::priority_queue<Candidate, std::vector<Candidate>, Later> heap_;
+  int liveFaces_ = 0;
+  double inputToWorking_ = 0.0;
+};
+
+}  // namespace
+
+WorkingMesh simplifyWithin(const TriMesh& closed, double tolerance) {
+  if (closed.faces.size() <= static_cast<std::size_t>(kLeastFaces) || !(tolerance > 0)) {
+    WorkingMesh same;
+    same.mesh = closed;
+
+    same.tolerance = tolerance;
+    return same;
+  }
+  return Collapser(closed, tolerance).run();
+}
+
+}  // namespace acd

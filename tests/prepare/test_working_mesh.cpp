@@ -1,0 +1,86 @@
+// The working mesh: fewer faces, the same surface to within the tolerance, measured here by an
+// independent distance (the tests' own bounding-volume hierarchy), the same topology.
+#include <acd/algo/shapes.hpp>
+#include <acd/algo/working_mesh.hpp>
+#include <acd/mesh.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "../helpers.hpp"
+
+using namespace acdtest;
+
+namespace {
+
+using acd::TriMesh;
+using acd::Vec3;
+
+int eulerCharacteristic(const TriMesh& m) {
+  return static_cast<int>(m.vertices.size()) - static_cast<int>(m.faces.size()) * 3 / 2 +
+         static_cast<int>(m.faces.size());
+}
+
+/// The largest distance from the points to the surface of `to`.
+double farthest(const std::vector<Vec3>& points, const TriMesh& to) {
+  const MeshIndex index(to);
+  double worst = 0.0;
+  for (const Vec3& p : points) worst = std::max(worst, index.distance(p));
+  return worst;
+}
+
+std::vector<Vec3> surfacePoints(const TriMesh& m, int count) {
+  std::mt19937_64 rng(7);
+  return sampleSurface(m, count, rng);
+}
+
+TEST(WorkingMesh, DenseSphereBecomesFewFacesWithinTolerance) {
+  const TriMesh sphere = acd::shapes::icosphere(Vec3::Zero(), 1.0, 6);  // 81920 faces
+  const double tolerance = 0.005;
+  const acd::WorkingMesh w = acd::simplifyWithin(sphere, tolerance);
+  EXPECT_TRUE(acd::isClosedOriented(w.mesh));
+  EXPECT_EQ(eulerCharacteristic(w.mesh), 2);
+  // A triangle whose chord stands h off the sphere has circumradius sqrt(2 h): at least about 4 pi
+  // / (1.3 * 2 h) faces are needed (an upper bound on what any simplifier can reach), and a good
+  // one needs few times that.
+  const double least = 4 * M_PI / (1.3 * 2 * tolerance);
+  EXPECT_GE(static_cast<double>(w.mesh.faces.size()), 0.5 * least);
+  EXPECT_LE(static_cast<double>(w.mesh.faces.size()), 8 * least);
+  EXPECT_LE(farthest(sphere.vertices, w.mesh), tolerance);
+  EXPECT_LE(farthest(w.mesh.vertices, sphere), tolerance);
+  // Between the vertices the checks are not exhaustive: measured over the faces, with a tenth more.
+  EXPECT_LE(farthest(surfacePoints(w.mesh, 20000), sphere), 1.1 * tolerance);
+  EXPECT_LE(farthest(surfacePoints(sphere, 20000), w.mesh), 1.1 * tolerance);
+  EXPECT_NEAR(acd::signedVolume(w.mesh), acd::signedVolume(sphere), acd::surfaceArea(sphere) * tolerance);
+}
+
+TEST(WorkingMesh, TorusKeepsItsHole) {
+  const TriMesh torus = acd::shapes::torus(1.0, 0.3, 400, 120);
+  const acd::WorkingMesh w = acd::simplifyWithin(torus, 0.004);
+  EXPECT_TRUE(acd::isClosedOriented(w.mesh));
+  EXPECT_EQ(eulerCharacteristic(w.mesh), 0);
+  EXPECT_LT(w.mesh.faces.size(), torus.faces.size() / 10);
+  EXPECT_LE(farthest(torus.vertices, w.mesh), 0.004);
+  EXPECT_LE(farthest(w.mesh.vertices, torus), 0.004);
+}
+
+TEST(WorkingMesh, FlatFacesCollapseToTheirCorners) {
+  // A box whose faces are finely split: the working mesh needs little more than its 8 corners.
+  TriMesh box = acd::shapes::box(Vec3(-1, -0.5, -0.25), Vec3(1, 0.5, 0.25));
+  for (int k = 0; k < 4; ++k) box = midpointSubdivided(box);
+  const acd::WorkingMesh w = acd::simplifyWithin(box, 1e-3);
+  EXPECT_TRUE(acd::isClosedOriented(w.mesh));
+  EXPECT_LE(w.mesh.faces.size(), 40u);  // of the input's 3072
+  EXPECT_NEAR(acd::signedVolume(w.mesh), 1.0, 1e-9);
+}
+
+TEST(WorkingMesh, NothingBelowTheToleranceLeavesTheMeshAlone) {
+  const TriMesh sphere = acd::shapes::icosphere(Vec3::Zero(), 1.0, 3);
+  const acd::WorkingMesh w = acd::simplifyWithin(sphere, 1e-9);
+  EXPECT_EQ(w.mesh.faces.size(), sphere.faces.size());
+  EXPECT_EQ(w.collapses, 0);
+}
+
+}  // namespace
