@@ -1,6 +1,6 @@
-// A dense input is decomposed through its working mesh (acd/algo/working_mesh.hpp): the promise is
-// about the input, so it is checked against the input here, with the tests' own distance and inside
-// tests, never the library's figures.
+// The working model (libacd/src/driver/working_model.cpp): a dense input decomposed through its
+// working mesh (acd/algo/working_mesh.hpp). The promise is about the input, so it is checked
+// against the input here, with the tests' own distance and inside tests, never the library's figures.
 #include <acd/algo/shapes.hpp>
 #include <acd/decompose.hpp>
 #include <acd/io.hpp>
