@@ -95,7 +95,7 @@ def run_once(paths, tool, model, obj, tau, work, acd_flags=()):
     rc, sec, mb = cp.timed(cmd, d, os.path.join(d, "log.txt"), cp.PEER_TIMEOUT)
     parts = None
     if tool == "acd" and rc == 0:
-        parts = json.load(open(os.path.join(d, "report.json")))["components"]
+        parts = len(json.load(open(os.path.join(d, "report.json")))["components"])
     elif tool == "vhacd" and rc == 0:
         parts = sum(1 for line in open(os.path.join(d, "decomp.obj")) if line.startswith("o "))
     os.system("rm -rf '%s'" % d)
@@ -115,6 +115,7 @@ def main():
     ap.add_argument("--acd-flags", default="", help="more flags for acd decompose, written --acd-flags=\"...\"")
     ap.add_argument("--out", default=os.path.join(cp.ROOT, "out/dense_speed"))
     args = ap.parse_args()
+    args.out = os.path.abspath(args.out)  # the runs' working folder is their own
     paths = cp.Paths(args.out)
     cp.ensure_peers(paths)
     os.makedirs(args.out, exist_ok=True)
