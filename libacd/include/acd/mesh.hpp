@@ -61,9 +61,6 @@ TriMesh compact(const TriMesh& mesh);
 /// sized for `vertices`.
 TriMesh compactFaces(const std::vector<Vec3>& vertices, const std::vector<Face>& faces, std::vector<int>& remap);
 
-/// Union-find: the root of x's set, halving the path on the way.
-
-
 /// True when every edge has exactly two faces that use it in opposite directions.
 bool isClosedOriented(const TriMesh& mesh);
 
