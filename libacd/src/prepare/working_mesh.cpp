@@ -88,22 +88,11 @@ class Collapser {
       if (version_[c.a] != c.versionA || version_[c.b] != c.versionB) continue;  // an end changed since
       if (collapse(c)) ++out.collapses;
     }
-    std::vector<int> remap(pos_.size(), -1);
-    for (std::size_t f = 0; f < faces_.size(); ++f) {
-      if (!faceAlive_[f]) continue;
-      Face t = faces_[f];
-      for (int& v : t) {
-        if (remap[v] < 0) remap[v] = 0;  // marked used; numbered below in vertex order
-      }
-    }
-    int used = 0;
-    for (std::size_t v = 0; v < pos_.size(); ++v)
-      if (remap[v] >= 0) {
-        remap[v] = used++;
-        out.mesh.vertices.push_back(pos_[v]);
-      }
+    std::vector<Face> alive;
     for (std::size_t f = 0; f < faces_.size(); ++f)
-      if (faceAlive_[f]) out.mesh.faces.push_back({remap[faces_[f][0]], remap[faces_[f][1]], remap[faces_[f][2]]});
+      if (faceAlive_[f]) alive.push_back(faces_[f]);
+    std::vector<int> remap(pos_.size(), -1);
+    out.mesh = compactFaces(pos_, alive, remap);
     out.inputToWorking = inputToWorking_;
     return out;
   }
