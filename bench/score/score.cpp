@@ -259,7 +259,10 @@ int main(int argc, char** argv) {
   // Hull surface -> model: 0 inside the model, else the distance to its surface.
   std::vector<double> outside;
   for (const Point& p : samplesOn(hullTriangles, surfaceSamples, rng))
+  {
     outside.push_back(insideModel(p) != CGAL::ON_UNBOUNDED_SIDE ? 0.0 : std::sqrt(modelTree.squared_distance(p)) / radius);
+    if (getenv("WORST") && outside.back() > atof(getenv("WORST"))) fprintf(stderr, "%g %g %g : %g\n", p.x(), p.y(), p.z(), outside.back());
+  }
   // Model surface -> union of hulls: 0 inside some hull, else the distance to the nearest hull facet.
   std::vector<double> uncovered;
   for (const Point& p : samplesOn(modelTriangles, surfaceSamples, rng)) {

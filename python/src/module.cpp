@@ -85,6 +85,7 @@ py::tuple decompose(const Vertices& vertices, const Faces& faces, const SolidOpt
       acd::ReportInput input = acd::describeInput(model, mesh);
       input.mesh = sceneMesh;
       input.inputOutside = acd::inputOutsideHulls(mesh, d).max;
+      input.hullOffInput = acd::hullsOffInput(mesh, d).excess;
       report = acd::reportJson(input, d, post);
     }
   }

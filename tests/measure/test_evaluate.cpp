@@ -1,3 +1,4 @@
+#include <acd/decompose.hpp>
 #include <acd/evaluate.hpp>
 #include <acd/io.hpp>
 #include <acd/algo/normalize.hpp>
@@ -267,4 +268,67 @@ TEST(Evaluate, BadInput) {
 
   o.volumeSamples = 0;
   EXPECT_EQ(evaluate(model, {model}, o).status.code, StatusCode::InvalidParameter);
+}
+
+// hullsOffInput: a sealed enclosure made of two shells, a cup and its lid. The cavity between
+// them is outside the input (inside neither shell), though a repair that welds the shells would
+// make it an inner shell and fill it: a hull across it stands off the input by the distance to
+// the cavity's walls, known in closed form.
+TEST(HullsOffInput, HullAcrossTheSealedCavityOfACupAndItsLid) {
+  std::vector<std::array<int, 3>> cells;
+  for (int x = 0; x < 3; ++x)
+    for (int y = 0; y < 3; ++y)
+      for (int z = 0; z < 2; ++z)
+        if (!(x == 1 && y == 1 && z == 1)) cells.push_back({x, y, z});
+  const TriMesh cup = shapes::voxels(cells);
+  const TriMesh lid = shapes::box(Vec3(0, 0, 2), Vec3(3, 3, 2.25));
+  const TriMesh input = concatenate({cup, lid});
+  Decomposition d;
+  d.options.tau = 0.05;
+  d.normalization = minimumSphereNormalization(input);
+  Component low, whole;
+  low.hull = shapes::box(Vec3(0, 0, 0), Vec3(3, 3, 1.5));    // its top crosses the cavity's middle
+  whole.hull = shapes::box(Vec3(0, 0, 0), Vec3(3, 3, 2.25)); // on the input's outer surface
+  d.components = {whole, low};
+  const HullsOffInput off = hullsOffInput(input, d);
+  const double s = d.normalization.scale;
+  ASSERT_EQ(off.excess.size(), 2u);
+  EXPECT_LT(off.excess[0], 1e-9);
+  // The cavity is [1,2]^2 x [1,2]: its centre is 0.5 from every wall. Above tau, the value is
+  // within 5% below the excess.
+  EXPECT_LE(off.excess[1], 0.5 * s + 1e-9);
+  EXPECT_GE(off.excess[1], 0.95 * 0.5 * s);
+  EXPECT_EQ(off.component, 1);
+  EXPECT_NEAR(off.worst.z(), 1.5, 1e-9);
+  EXPECT_EQ(off.openShells, 0);
+}
+
+// A hull inside a slab: nothing off the input while the slab is closed; with one side of the
+// slab missing it bounds nothing, and the hull's side faces stand off its top and bottom.
+TEST(HullsOffInput, OpenShellsBoundNothing) {
+  const TriMesh closed = shapes::box(Vec3(0, 0, 2), Vec3(3, 3, 2.25));
+  TriMesh open = closed;
+  open.faces.erase(std::remove_if(open.faces.begin(), open.faces.end(), [&](const Face& f) {
+    return open.vertices[f[0]].x() == 3 && open.vertices[f[1]].x() == 3 && open.vertices[f[2]].x() == 3;
+  }), open.faces.end());
+  ASSERT_EQ(open.faces.size(), 10u);
+  Component c;
+  c.hull = shapes::box(Vec3(0.5, 0.5, 2.05), Vec3(2.5, 2.5, 2.2));
+  for (const TriMesh* input : {&closed, static_cast<const TriMesh*>(&open)}) {
+    Decomposition d;
+    d.options.tau = 0.05;
+    d.normalization = minimumSphereNormalization(*input);
+    d.components = {c};
+    const HullsOffInput off = hullsOffInput(*input, d);
+    const double s = d.normalization.scale;
+    if (input == &closed) {
+      EXPECT_EQ(off.openShells, 0);
+      EXPECT_EQ(off.excess[0], 0.0);
+    } else {
+      // Mid-height of a side face: 0.125 from the top and the bottom.
+      EXPECT_EQ(off.openShells, 1);
+      EXPECT_LE(off.excess[0], 0.125 * s + 1e-9);
+      EXPECT_GE(off.excess[0], 0.95 * 0.125 * s);
+    }
+  }
 }

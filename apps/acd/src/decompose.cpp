@@ -41,18 +41,21 @@ int furthestHull(const acd::Decomposition& d) {
   return worst;
 }
 
-void printSummary(const DecomposeArgs& a, const acd::Decomposition& d, double uncovered) {
+void printSummary(const DecomposeArgs& a, const acd::Decomposition& d, double uncovered, const acd::HullsOffInput& off) {
   const auto& cs = d.components;
   double volume = 0, hullVolume = 0, maxConcavity = 0;
   for (const auto& c : cs) volume += c.volume, hullVolume += c.hullVolume, maxConcavity = std::max(maxConcavity, c.concavity);
   std::printf("\n  %-5s %9s %9s %10s %10s %11s %10s\n", "part", "vertices", "faces", "volume %", "hull/vol", "hull excess",
               "concavity");
   const std::size_t shown = std::min<std::size_t>(cs.size(), 40);
+  // A hull's excess is the larger of its distances off the model decomposed and off the input as
+  // read (they differ where a repair, a wrap or a union moved the surface).
+  auto excessOf = [&](std::size_t i) { return std::max(cs[i].hullExcess, off.excess.empty() ? 0.0 : off.excess[i]); };
   for (std::size_t i = 0; i < shown; ++i) {
     const auto& c = cs[i];
     std::printf("  %-5zu %9zu %9zu %10.3f %10.3f %11.4f %10.4f%s\n", i, c.mesh.vertices.size(), c.mesh.faces.size(),
-                100.0 * c.volume / d.stats.inputVolume, c.volume > 0 ? c.hullVolume / c.volume : 0.0, c.hullExcess,
-                c.concavity, c.unresolved ? "  (unresolved)" : c.hullExcess > d.options.tau ? "  (beyond tau)" : "");
+                100.0 * c.volume / d.stats.inputVolume, c.volume > 0 ? c.hullVolume / c.volume : 0.0, excessOf(i),
+                c.concavity, c.unresolved ? "  (unresolved)" : excessOf(i) > d.options.tau ? "  (beyond tau)" : "");
   }
   if (shown < cs.size()) std::printf("  ... %zu more in report.json\n", cs.size() - shown);
   std::printf("\n  model          %s\n", a.model.c_str());
@@ -62,9 +65,13 @@ void printSummary(const DecomposeArgs& a, const acd::Decomposition& d, double un
   // The promise: every hull within tau of the model. A merged component's own concavity is not
   // promised (its pockets may lie in its neighbours), so it is shown after, as information.
   const int worst = furthestHull(d);
-  const double maxExcess = worst < 0 ? 0.0 : cs[worst].hullExcess;
+  const double modelExcess = worst < 0 ? 0.0 : cs[worst].hullExcess;
+  const double maxExcess = std::max(modelExcess, off.max);
   std::printf("  hull excess    %.4f   (how far a hull stands off the model, at most: %s)\n", maxExcess,
               maxExcess <= d.options.tau ? "within tau, as promised" : "BEYOND tau, the promise is not kept");
+  if (off.max > modelExcess)
+    std::printf("                 (off the input as read; off the model decomposed, after its repairs: %.4f)\n",
+                modelExcess);
   std::printf("  input outside  %.4f   (how far the input reaches outside every hull, at most: %s)\n", uncovered,
               uncovered == 0.0 ? "covered" : uncovered <= d.options.tau ? "within tau" : "BEYOND tau, the promise is not kept");
   std::printf("  max concavity  %.4f%s\n", maxConcavity,
@@ -140,6 +147,10 @@ int decomposeMesh(DecomposeArgs& a, const acd::TriMesh& mesh) {
   const acd::Coverage cover = acd::inputOutsideHulls(mesh, d);
   const double uncovered = cover.max;
   input.inputOutside = uncovered;
+  // And the first half on the input as read: no repair, wrap, union or dropped cavity may hide a
+  // hull that stands off what the user gave.
+  const acd::HullsOffInput off = acd::hullsOffInput(mesh, d);
+  input.hullOffInput = off.excess;
   std::ofstream report(fs::path(a.out) / "report.json");
   const bool anyUnresolved = std::any_of(d.components.begin(), d.components.end(), [](const auto& c) { return c.unresolved; });
   // The library's report with the post-passes' sections, plus the simulator files written.
@@ -147,7 +158,7 @@ int decomposeMesh(DecomposeArgs& a, const acd::TriMesh& mesh) {
   j.update(outputs);
   report << j.dump(2) << "\n";
   if (!report) return (void)fail("output", acd::Status::error(acd::StatusCode::FileUnreadable, "cannot write report.json")), kOutputFailed;
-  if (!a.quiet) printSummary(a, d, uncovered);
+  if (!a.quiet) printSummary(a, d, uncovered, off);
   if (anyUnresolved) {
     std::fprintf(stderr, "acd: warning: some components still exceed tau (marked unresolved in report.json)%s\n",
                  selfIntersections > 0 ? "; the input self-intersects" : "");
@@ -157,6 +168,13 @@ int decomposeMesh(DecomposeArgs& a, const acd::TriMesh& mesh) {
   if (const int worst = furthestHull(d); worst >= 0 && d.components[worst].hullExcess > d.options.tau && a.sim.maxHulls == 0) {
     std::fprintf(stderr, "acd: %s: tau not kept: the hull of component %d stands %.4g off the model (%.2f tau)\n",
                  a.model.c_str(), worst, d.components[worst].hullExcess, d.components[worst].hullExcess / d.options.tau);
+    return kTauNotKept;
+  }
+  if (off.max > d.options.tau && a.sim.maxHulls == 0) {
+    std::fprintf(stderr, "acd: %s: tau not kept: the hull of component %d stands %.4g off the input as read (%.2f tau), "
+                 "at (%.6g, %.6g, %.6g)%s\n", a.model.c_str(), off.component, off.max, off.max / d.options.tau,
+                 off.worst.x(), off.worst.y(), off.worst.z(),
+                 off.openShells > 0 ? "; open shells of the input bound nothing, only their surface counts" : "");
     return kTauNotKept;
   }
   if (uncovered > d.options.tau && a.sim.maxHulls == 0) {

@@ -61,6 +61,21 @@ Coverage surfaceOutsideHulls(const TriMesh& surface, const std::vector<TriMesh>&
 /// decomposition's normalised units (tau's). The second half of the promise: at most tau.
 Coverage inputOutsideHulls(const TriMesh& input, const Decomposition& d);
 
+/// The first half of the promise, on the input as read: how far each hull stands outside the
+/// input's solid (ShellsInside: inside any of its closed shells; near its open shells only their
+/// surface counts), in the decomposition's normalised units. Every repair, wrap, union and dropped
+/// cavity is thereby checked against what the user gave: at most tau (to the measure's resolution,
+/// tau/32) unless the result says otherwise. A value above tau is within 5% of the hull's excess
+/// (from below); one at most tau is a lower bound of an excess at most tau + tau/32.
+struct HullsOffInput {
+  std::vector<double> excess;  // per component, in order
+  double max = 0.0;
+  int component = -1;          // the one standing furthest off; -1 when none stands off at all
+  Vec3 worst = Vec3::Zero();   // where, in the input's coordinates
+  int openShells = 0;          // input shells that bound no solid
+};
+HullsOffInput hullsOffInput(const TriMesh& input, const Decomposition& d);
+
 /// evaluate() on a mesh as read (what `acd evaluate` does): the model is first checked and
 /// repaired by prepareSolid (open meshes refused); a model it refuses comes back in `status`.
 Evaluation evaluateModel(const TriMesh& model, const std::vector<TriMesh>& hulls,

@@ -23,6 +23,7 @@ struct ReportInput {
   MeshDiagnosis diagnosis;    // of the mesh as read, before repairs
   int selfIntersections = 0;  // face pairs (countSelfIntersections); explains unresolved components
   double inputOutside = -1.0; // inputOutsideHulls (acd/evaluate.hpp), normalised; < 0: not measured
+  std::vector<double> hullOffInput;  // hullsOffInput (acd/evaluate.hpp) per component; empty: not measured
 };
 
 /// Diagnosis and self-intersection count of a mesh as read. Call it once the decomposition has

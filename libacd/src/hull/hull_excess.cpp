@@ -4,6 +4,7 @@
 #include <acd/algo/hull_excess.hpp>
 #include <acd/algo/inside.hpp>
 #include <acd/algo/random.hpp>
+#include <acd/algo/shell_inside.hpp>
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -164,25 +165,31 @@ HullExcess measureHullExcess(const TriMesh& mesh, const TriMesh& hull, double li
 }
 
 struct ModelExcess::Impl {
-  explicit Impl(const TriMesh& model) : triangles(trianglesOf(model)), inside(model) {
+  Impl(const TriMesh& model, ModelSolid solid) : triangles(trianglesOf(model)) {
+    if (solid == ModelSolid::Whole) whole = std::make_unique<InsideTest>(model);
+    else shells = std::make_unique<ShellsInside>(model);
     tree.insert(triangles.begin(), triangles.end());
     tree.build();
     tree.accelerate_distance_queries();
   }
+  bool inside(const Vec3& q) const { return whole ? whole->inside(q) : shells->inside(q); }
   std::vector<Triangle> triangles;
   Tree tree;
-  InsideTest inside;
+  std::unique_ptr<InsideTest> whole;
+  std::unique_ptr<ShellsInside> shells;
 };
 
-ModelExcess::ModelExcess(const TriMesh& model) : impl_(std::make_unique<Impl>(model)) {}
+ModelExcess::ModelExcess(const TriMesh& model, ModelSolid solid) : impl_(std::make_unique<Impl>(model, solid)) {}
 ModelExcess::~ModelExcess() = default;
+
+int ModelExcess::openShells() const { return impl_->shells ? impl_->shells->openShells() : 0; }
 
 HullExcess ModelExcess::measure(const TriMesh& hull, double limit, double resolution) const {
   if (impl_->triangles.empty() || hull.faces.empty()) return {};
   return branchAndBound(hull, limit, resolution,
                         [&](const Vec3& q, const Patch&, double radius, Vec3& nearest, double& reach,
                             const Triangle*& face) {
-                          const bool inside = impl_->inside.inside(q);
+                          const bool inside = impl_->inside(q);
                           // Inside, the patch is within its radius of the model: no distance needed.
                           if (inside && radius <= limit) return -1.0;
                           const auto [point, primitive] = impl_->tree.closest_point_and_primitive(toPoint(q));
@@ -290,7 +297,7 @@ double ModelExcess::addedVolume(const TriMesh& hull, const std::vector<const Tri
         hidden = true;
         break;
       }
-    if (!hidden && !impl_->inside.inside(q)) ++outside;
+    if (!hidden && !impl_->inside(q)) ++outside;
   }
   return total * outside / samples;
 }

@@ -11,6 +11,8 @@
 // non-convexity is harmless), as half-spaces n.x <= d for the volume test, as triangles
 // (a canonical fan per planar facet) for surface sampling and exact point-to-hull distances.
 #include <acd/algo/closest_point.hpp>
+#include <acd/algo/cut_choice.hpp>
+#include <acd/algo/hull_excess.hpp>
 #include <acd/algo/hull_set.hpp>
 #include <acd/algo/parallel.hpp>
 #include <acd/diagnosis.hpp>
@@ -588,6 +590,38 @@ Coverage inputOutsideHulls(const TriMesh& input, const Decomposition& d) {
   Coverage c = surfaceOutsideHulls(input, hulls);
   c.max *= d.normalization.scale;
   return c;
+}
+
+HullsOffInput hullsOffInput(const TriMesh& input, const Decomposition& d) {
+  HullsOffInput out;
+  out.excess.assign(d.components.size(), 0.0);
+  if (input.faces.empty() || d.components.empty()) return out;
+  const TriMesh model = applyNormalization(input, d.normalization);
+  const ModelExcess solid(model, ModelSolid::AnyClosedShell);
+  const double tau = d.options.tau;
+  std::vector<Vec3> where(d.components.size(), Vec3::Zero());
+  tbb::task_arena arena = workerArena(d.options.threads);
+  arena.execute([&] {
+    tbb::parallel_for(std::size_t{0}, d.components.size(), [&](std::size_t i) {
+      // The search decides "beyond the limit?" and settles patches below it, so a value found
+      // under the limit is only a lower bound. At tau it decides the promise; beyond, the limit
+      // is raised past what was found until nothing exceeds it: the value is then within 5%.
+      const TriMesh hull = applyNormalization(d.components[i].hull, d.normalization);
+      HullExcess e = solid.measure(hull, tau, kExcessResolution * tau);
+      while (e.exceeds) {
+        const HullExcess above = solid.measure(hull, 1.05 * e.distance, kExcessResolution * tau);
+        if (!above.exceeds) break;
+        e = above;
+      }
+      out.excess[i] = e.distance;
+      where[i] = e.hullPoint;
+    });
+  });
+  for (std::size_t i = 0; i < out.excess.size(); ++i)
+    if (out.excess[i] > out.max) out.max = out.excess[i], out.component = static_cast<int>(i);
+  if (out.component >= 0) out.worst = d.normalization.undo(where[out.component]);
+  out.openShells = solid.openShells();
+  return out;
 }
 
 Evaluation evaluateModel(const TriMesh& model, const std::vector<TriMesh>& hulls, const EvaluateOptions& options) {

@@ -130,6 +130,10 @@ json solidReport(const ReportInput& in, const Decomposition& d) {
                  {"bridge_refinements", d.stats.refinements},
                  {"merges", d.stats.merges}};
   if (in.inputOutside >= 0.0) j["totals"]["input_outside_hulls"] = in.inputOutside;
+  if (in.hullOffInput.size() == d.components.size() && !d.components.empty()) {
+    for (std::size_t i = 0; i < d.components.size(); ++i) j["components"][i]["hull_excess_input"] = in.hullOffInput[i];
+    j["totals"]["max_hull_excess_input"] = *std::max_element(in.hullOffInput.begin(), in.hullOffInput.end());
+  }
   j["timing"] = {{"prepare_seconds", d.times.prepare},
                  {"repair_seconds", d.repairSeconds},
                  {"wrap_seconds", d.wrap.seconds},

@@ -2,6 +2,7 @@
 // CGAL's Polygon Mesh Processing provides are CGAL's; what is ours is the merge of close
 // vertices (CGAL 5.5 merges exact copies only) and the choice between the two sides of a
 // double-sided face, which needs the faces around it.
+#include <acd/algo/close_vertices.hpp>
 #include <acd/algo/face_order.hpp>
 #include <acd/algo/surface_mesh_copy.hpp>
 #include <acd/algo/union_find.hpp>
@@ -34,43 +35,6 @@ using SurfaceMesh = CGAL::Surface_mesh<Point>;
 using Polygon = std::array<std::size_t, 3>;
 
 bool finite(const Vec3& p) { return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()); }
-
-/// Per vertex, the lowest-numbered vertex within `tolerance` of it through a chain of close
-/// vertices (grid hashing: only the 27 cells around a vertex can hold its neighbours).
-std::vector<int> mergeClose(const std::vector<Vec3>& vertices, const Box3& box, double tolerance) {
-  const int n = static_cast<int>(vertices.size());
-  UnionFind sets(n);
-  if (tolerance > 0.0) {
-    // Cells no smaller than 2^-20 of the diagonal, so that a cell index fits the key's 21 bits
-    // (a smaller tolerance only means more vertices per cell to compare).
-    const double cell = std::max(tolerance, box.size().norm() * 0x1p-20);
-    auto cellOf = [&](const Vec3& p) {
-      return Eigen::Array3i(((p - box.lo) / cell).array().floor().cast<int>());
-    };
-    auto key = [](const Eigen::Array3i& c) {
-      return (static_cast<std::uint64_t>(c.x() + 1) << 42) | (static_cast<std::uint64_t>(c.y() + 1) << 21) |
-             static_cast<std::uint64_t>(c.z() + 1);
-    };
-    std::unordered_map<std::uint64_t, std::vector<int>> grid;
-    grid.reserve(vertices.size());
-    const double tolerance2 = tolerance * tolerance;
-    for (int v = 0; v < n; ++v) {
-      const Eigen::Array3i c = cellOf(vertices[v]);
-      for (int dx = -1; dx <= 1; ++dx)
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dz = -1; dz <= 1; ++dz) {
-            const auto it = grid.find(key(c + Eigen::Array3i(dx, dy, dz)));
-            if (it == grid.end()) continue;
-            for (int u : it->second)
-              if ((vertices[u] - vertices[v]).squaredNorm() <= tolerance2) sets.joinKeepingSmallest(u, v);
-          }
-      grid[key(c)].push_back(v);
-    }
-  }
-  std::vector<int> rep(n);
-  for (int v = 0; v < n; ++v) rep[v] = sets.find(v);
-  return rep;
-}
 
 struct DuplicateOutcome {
   std::vector<Face> faces;
@@ -304,7 +268,7 @@ MeshRepair repairMesh(const TriMesh& input, const RepairOptions& options) {
   const double diagonal = box.size().norm();
 
   // 1. Close vertices.
-  const std::vector<int> rep = mergeClose(used.vertices, box, options.mergeTolerance * diagonal);
+  const std::vector<int> rep = closeVertexRoots(used.vertices, box, options.mergeTolerance * diagonal);
   for (int v = 0; v < static_cast<int>(rep.size()); ++v) r.mergedVertices += rep[v] != v;
   std::vector<Face> faces;
   faces.reserve(used.faces.size());

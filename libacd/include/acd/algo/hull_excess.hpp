@@ -33,15 +33,22 @@ HullExcess measureHullExcess(const TriMesh& mesh, const TriMesh& hull, double li
 /// model count zero, points outside their distance to the model's surface. Built once per model;
 /// `measure` is thread-safe. A merged component's hull may reach into its neighbours, which are
 /// model too: only what leaves the model is what users measure.
+/// What counts as inside the model: its whole surface as one closed, oriented mesh (a repaired
+/// model), or any of its closed shells, each on its own (the input as read: ShellsInside).
+enum class ModelSolid { Whole, AnyClosedShell };
+
 class ModelExcess {
  public:
-  explicit ModelExcess(const TriMesh& model);
+  explicit ModelExcess(const TriMesh& model, ModelSolid solid = ModelSolid::Whole);
   ~ModelExcess();
   ModelExcess(const ModelExcess&) = delete;
   ModelExcess& operator=(const ModelExcess&) = delete;
 
   /// The same branch and bound as measureHullExcess, with the distance to the solid.
   HullExcess measure(const TriMesh& hull, double limit, double resolution) const;
+
+  /// With ModelSolid::AnyClosedShell, the shells that bound no solid (0 otherwise).
+  int openShells() const;
 
   /// The volume of `hull` outside the model and outside every hull in `covered` (what a merge
   /// that replaces those hulls by `hull` adds to the union of hulls beyond the model), estimated

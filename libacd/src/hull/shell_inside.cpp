@@ -1,0 +1,114 @@
+// The input's solid, shell by shell: InsideTest (exact) on every shell that bounds a solid.
+#include <acd/algo/close_vertices.hpp>
+#include <acd/algo/inside.hpp>
+#include <acd/algo/shell_inside.hpp>
+
+#include <algorithm>
+#include <array>
+#include <set>
+#include <unordered_map>
+#include <vector>
+
+namespace acd {
+
+namespace {
+
+/// Every undirected edge used as often a->b as b->a: a closed 2-cycle, whose winding number is
+/// defined everywhere off the surface.
+bool balanced(const TriMesh& shell) {
+  std::unordered_map<std::uint64_t, int> sum;
+  for (const Face& f : shell.faces)
+    for (int k = 0; k < 3; ++k) {
+      const int a = f[k], b = f[(k + 1) % 3];
+      if (a == b) continue;
+      sum[edgeKey(a, b)] += a < b ? 1 : -1;
+    }
+  return std::all_of(sum.begin(), sum.end(), [](const auto& e) { return e.second == 0; });
+}
+
+/// A closed manifold shell with some faces flipped, oriented by a walk over its edges (each edge
+/// must be used twice, in opposite directions). False when the shell is open, non-manifold or
+/// not orientable.
+bool orientConsistently(TriMesh& shell) {
+  std::unordered_map<std::uint64_t, std::vector<int>> facesOf;
+  for (int i = 0; i < static_cast<int>(shell.faces.size()); ++i)
+    for (int k = 0; k < 3; ++k) facesOf[edgeKey(shell.faces[i][k], shell.faces[i][(k + 1) % 3])].push_back(i);
+  for (const auto& e : facesOf)
+    if (e.second.size() != 2) return false;
+  // Whether face f runs a->b (true) or b->a.
+  auto runs = [&](int f, int a, int b) {
+    for (int k = 0; k < 3; ++k)
+      if (shell.faces[f][k] == a && shell.faces[f][(k + 1) % 3] == b) return true;
+    return false;
+  };
+  std::vector<int> state(shell.faces.size(), 0);  // 0 unseen, 1 kept, -1 flipped
+  std::vector<int> stack{0};
+  state[0] = 1;
+  while (!stack.empty()) {
+    const int f = stack.back();
+    stack.pop_back();
+    for (int k = 0; k < 3; ++k) {
+      int a = shell.faces[f][k], b = shell.faces[f][(k + 1) % 3];
+      if (state[f] < 0) std::swap(a, b);  // as f runs once flipped
+      const auto& pair = facesOf[edgeKey(a, b)];
+      const int g = pair[0] == f ? pair[1] : pair[0];
+      const int wanted = runs(g, b, a) ? 1 : -1;  // g must run b->a
+      if (state[g] == 0) {
+        state[g] = wanted;
+        stack.push_back(g);
+      } else if (state[g] != wanted) {
+        return false;
+      }
+    }
+  }
+  for (std::size_t i = 0; i < shell.faces.size(); ++i)
+    if (state[i] < 0) std::swap(shell.faces[i][1], shell.faces[i][2]);
+  return true;
+}
+
+}  // namespace
+
+struct ShellsInside::Impl {
+  struct Solid {
+    Box3 box;
+    std::unique_ptr<InsideTest> test;
+  };
+  std::vector<Solid> solids;
+  int open = 0;
+};
+
+ShellsInside::ShellsInside(const TriMesh& soup, double weld) : impl_(std::make_unique<Impl>()) {
+  const Box3 box = boundingBox(soup);
+  const std::vector<int> root = closeVertexRoots(soup.vertices, box, weld * box.size().norm());
+  std::set<std::array<int, 3>> seen;
+  TriMesh welded{soup.vertices, {}};
+  for (Face f : soup.faces) {
+    for (int& v : f) v = root[v];
+    if (f[0] == f[1] || f[1] == f[2] || f[2] == f[0]) continue;
+    std::array<int, 3> key{f[0], f[1], f[2]};  // the same triangle and orientation: smallest first
+    std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
+    if (seen.insert(key).second) welded.faces.push_back(f);
+  }
+  for (TriMesh& shell : splitEdgeConnected(welded)) {
+    if (!balanced(shell) && !orientConsistently(shell)) {
+      ++impl_->open;
+      continue;
+    }
+    impl_->solids.push_back({boundingBox(shell), std::make_unique<InsideTest>(shell)});
+  }
+}
+
+ShellsInside::~ShellsInside() = default;
+
+bool ShellsInside::inside(const Vec3& q) const {
+  for (const Impl::Solid& s : impl_->solids) {
+    if ((q.array() < s.box.lo.array()).any() || (q.array() > s.box.hi.array()).any()) continue;
+    if (s.test->inside(q)) return true;
+  }
+  return false;
+}
+
+int ShellsInside::solidShells() const { return static_cast<int>(impl_->solids.size()); }
+int ShellsInside::openShells() const { return impl_->open; }
+
+}  // namespace acd

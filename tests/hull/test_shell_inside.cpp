@@ -1,0 +1,91 @@
+// ShellsInside (libacd/src/hull/shell_inside.cpp): the input's solid as the union of its closed
+// shells, each on its own, against analytic boxes. Assemblies overlap, touch along edges, nest and
+// come flipped; open shells bound nothing.
+#include <acd/algo/shapes.hpp>
+#include <acd/algo/shell_inside.hpp>
+
+#include <gtest/gtest.h>
+
+#include "helpers.hpp"
+
+#include <random>
+
+using namespace acd;
+using acd::shapes::box;
+
+namespace {
+
+bool inBox(const Vec3& q, const Vec3& lo, const Vec3& hi) {
+  return (q.array() > lo.array()).all() && (q.array() < hi.array()).all();
+}
+
+TriMesh flipped(TriMesh m) {
+  for (Face& f : m.faces) std::swap(f[1], f[2]);
+  return m;
+}
+
+/// Random points in [-1, 3]^3, none within 1e-6 of a coordinate plane through a box face.
+std::vector<Vec3> probes(int n) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 3.0);
+  std::vector<Vec3> out;
+  while (static_cast<int>(out.size()) < n) {
+    const Vec3 q(u(rng), u(rng), u(rng));
+    bool nearFace = false;
+    for (int k = 0; k < 3; ++k)
+      for (double plane : {0.0, 0.5, 1.0, 1.5, 2.0, 0.25, 0.75})
+        nearFace |= std::abs(q[k] - plane) < 1e-6;
+    if (!nearFace) out.push_back(q);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(ShellsInside, OverlappingBoxesOneFlippedAreTheirUnion) {
+  // One winding number over the whole would be 1 - 1 = 0 in the overlap.
+  const Vec3 aLo(0, 0, 0), aHi(1.5, 1, 1), bLo(0.5, 0, 0), bHi(2, 1, 1);
+  const ShellsInside solid(concatenate({box(aLo, aHi), flipped(box(bLo, bHi))}));
+  EXPECT_EQ(solid.solidShells(), 2);
+  EXPECT_EQ(solid.openShells(), 0);
+  for (const Vec3& q : probes(4000))
+    ASSERT_EQ(solid.inside(q), inBox(q, aLo, aHi) || inBox(q, bLo, bHi)) << q.transpose();
+}
+
+TEST(ShellsInside, BoxesSharingAnEdgeAreOneShellThatBoundsBoth) {
+  // Merged vertices make the shared edge non-manifold (four faces): still a closed 2-cycle.
+  TriMesh a = box(Vec3(0, 0, 0), Vec3(1, 1, 1)), b = box(Vec3(1, 1, 0), Vec3(2, 2, 1));
+  TriMesh both = concatenate({a, b});
+  // Weld b's corners on the shared edge x = y = 1 onto a's.
+  for (Face& f : both.faces)
+    for (int& v : f)
+      for (int w = 0; w < 8; ++w)
+        if (v >= 8 && both.vertices[v] == both.vertices[w]) v = w;
+  both = compact(both);
+  ASSERT_EQ(splitEdgeConnected(both).size(), 1u);
+  const ShellsInside solid(both);
+  EXPECT_EQ(solid.solidShells(), 1);
+  for (const Vec3& q : probes(4000))
+    ASSERT_EQ(solid.inside(q), inBox(q, Vec3(0, 0, 0), Vec3(1, 1, 1)) || inBox(q, Vec3(1, 1, 0), Vec3(2, 2, 1)));
+}
+
+TEST(ShellsInside, ShellWithSomeFacesFlippedIsOrientedAgain) {
+  TriMesh m = box(Vec3(0, 0, 0), Vec3(2, 1, 1));
+  for (std::size_t i = 0; i < m.faces.size(); i += 3) std::swap(m.faces[i][1], m.faces[i][2]);
+  const ShellsInside solid(m);
+  EXPECT_EQ(solid.solidShells(), 1);
+  for (const Vec3& q : probes(2000)) ASSERT_EQ(solid.inside(q), inBox(q, Vec3(0, 0, 0), Vec3(2, 1, 1)));
+}
+
+TEST(ShellsInside, NestedShellsAndAnOpenOne) {
+  // A box in a box: inside either is inside. A box without its top bounds nothing.
+  TriMesh open = box(Vec3(2.25, 2.25, 2.25), Vec3(2.75, 2.75, 2.75));
+  open.faces.erase(std::remove_if(open.faces.begin(), open.faces.end(), [&](const Face& f) {
+    return open.vertices[f[0]].z() == 2.75 && open.vertices[f[1]].z() == 2.75 && open.vertices[f[2]].z() == 2.75;
+  }), open.faces.end());
+  ASSERT_EQ(open.faces.size(), 10u);
+  const ShellsInside solid(concatenate({box(Vec3(0, 0, 0), Vec3(2, 2, 2)), flipped(box(Vec3(0.5, 0.5, 0.5), Vec3(1.5, 1.5, 1.5))), open}));
+  EXPECT_EQ(solid.solidShells(), 2);
+  EXPECT_EQ(solid.openShells(), 1);
+  for (const Vec3& q : probes(4000)) ASSERT_EQ(solid.inside(q), inBox(q, Vec3(0, 0, 0), Vec3(2, 2, 2))) << q.transpose();
+}
