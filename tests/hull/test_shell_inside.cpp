@@ -78,7 +78,8 @@ TEST(ShellsInside, ShellWithSomeFacesFlippedIsOrientedAgain) {
 }
 
 TEST(ShellsInside, NestedShellsAndAnOpenOne) {
-  // A box in a box: inside either is inside. A box without its top bounds nothing.
+  // A box in a box: inside either is inside. A box without its top bounds the box (by its winding
+  // number).
   TriMesh open = box(Vec3(2.25, 2.25, 2.25), Vec3(2.75, 2.75, 2.75));
   open.faces.erase(std::remove_if(open.faces.begin(), open.faces.end(), [&](const Face& f) {
     return open.vertices[f[0]].z() == 2.75 && open.vertices[f[1]].z() == 2.75 && open.vertices[f[2]].z() == 2.75;
@@ -87,5 +88,41 @@ TEST(ShellsInside, NestedShellsAndAnOpenOne) {
   const ShellsInside solid(concatenate({box(Vec3(0, 0, 0), Vec3(2, 2, 2)), flipped(box(Vec3(0.5, 0.5, 0.5), Vec3(1.5, 1.5, 1.5))), open}));
   EXPECT_EQ(solid.solidShells(), 2);
   EXPECT_EQ(solid.openShells(), 1);
-  for (const Vec3& q : probes(4000)) ASSERT_EQ(solid.inside(q), inBox(q, Vec3(0, 0, 0), Vec3(2, 2, 2))) << q.transpose();
+  for (const Vec3& q : probes(4000))
+    ASSERT_EQ(solid.inside(q), inBox(q, Vec3(0, 0, 0), Vec3(2, 2, 2)) || inBox(q, Vec3(2.25, 2.25, 2.25), Vec3(2.75, 2.75, 2.75)))
+        << q.transpose();
+}
+
+TEST(ShellsInside, AFinWeldedToABoxIsPeeledOff) {
+  // A triangle on the box's edge from (0,0,0) to (1,0,0), standing out below it: three faces on
+  // that edge. The fin bounds nothing; the box still does.
+  TriMesh m = box(Vec3(0, 0, 0), Vec3(1, 1, 1));
+  int a = -1, b = -1;
+  for (int v = 0; v < static_cast<int>(m.vertices.size()); ++v) {
+    if (m.vertices[v] == Vec3(0, 0, 0)) a = v;
+    if (m.vertices[v] == Vec3(1, 0, 0)) b = v;
+  }
+  ASSERT_GE(a, 0);
+  ASSERT_GE(b, 0);
+  m.vertices.push_back(Vec3(0.5, -1, -1));
+  m.faces.push_back({a, b, static_cast<int>(m.vertices.size()) - 1});
+  const ShellsInside solid(m);
+  EXPECT_EQ(solid.solidShells(), 1);
+  for (const Vec3& q : probes(2000)) ASSERT_EQ(solid.inside(q), inBox(q, Vec3(0, 0, 0), Vec3(1, 1, 1)));
+}
+
+TEST(ShellsInside, ABoxWithoutItsLidBoundsTheBox) {
+  // Open: its winding number is above 1/2 inside the box and 1/2 on the missing lid.
+  TriMesh m = box(Vec3(0, 0, 0), Vec3(1, 1, 1));
+  m.faces.erase(std::remove_if(m.faces.begin(), m.faces.end(), [&](const Face& f) {
+    return m.vertices[f[0]].z() == 1 && m.vertices[f[1]].z() == 1 && m.vertices[f[2]].z() == 1;
+  }), m.faces.end());
+  const ShellsInside solid(m);
+  EXPECT_EQ(solid.solidShells(), 0);
+  EXPECT_EQ(solid.openShells(), 1);
+  for (const Vec3& q : probes(2000)) ASSERT_EQ(solid.inside(q), inBox(q, Vec3(0, 0, 0), Vec3(1, 1, 1))) << q.transpose();
+  EXPECT_TRUE(solid.inside(Vec3(0.3, 0.6, 1.0)));  // on the missing lid
+  // A flat sheet bounds nothing.
+  const ShellsInside sheet(TriMesh{{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, {{0, 1, 2}}});
+  EXPECT_FALSE(sheet.inside(Vec3(0.2, 0.2, 1e-3)));
 }

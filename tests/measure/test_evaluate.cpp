@@ -303,32 +303,41 @@ TEST(HullsOffInput, HullAcrossTheSealedCavityOfACupAndItsLid) {
   EXPECT_EQ(off.openShells, 0);
 }
 
-// A hull inside a slab: nothing off the input while the slab is closed; with one side of the
-// slab missing it bounds nothing, and the hull's side faces stand off its top and bottom.
-TEST(HullsOffInput, OpenShellsBoundNothing) {
+// A hull inside a slab: nothing off the input while the slab is closed, nor with one side of the
+// slab missing (it still winds around the hull); against the slab's top alone (a sheet, which
+// bounds nothing) the hull's bottom stands 0.2 below it.
+TEST(HullsOffInput, OpenShellsBoundWhereTheyWind) {
   const TriMesh closed = shapes::box(Vec3(0, 0, 2), Vec3(3, 3, 2.25));
-  TriMesh open = closed;
-  open.faces.erase(std::remove_if(open.faces.begin(), open.faces.end(), [&](const Face& f) {
-    return open.vertices[f[0]].x() == 3 && open.vertices[f[1]].x() == 3 && open.vertices[f[2]].x() == 3;
-  }), open.faces.end());
+  auto only = [&](auto keep) {
+    TriMesh m = closed;
+    m.faces.erase(std::remove_if(m.faces.begin(), m.faces.end(), [&](const Face& f) { return !keep(m, f); }), m.faces.end());
+    return m;
+  };
+  const TriMesh open = only([](const TriMesh& m, const Face& f) {
+    return !(m.vertices[f[0]].x() == 3 && m.vertices[f[1]].x() == 3 && m.vertices[f[2]].x() == 3);
+  });
+  const TriMesh sheet = only([](const TriMesh& m, const Face& f) {
+    return m.vertices[f[0]].z() == 2.25 && m.vertices[f[1]].z() == 2.25 && m.vertices[f[2]].z() == 2.25;
+  });
   ASSERT_EQ(open.faces.size(), 10u);
+  ASSERT_EQ(sheet.faces.size(), 2u);
   Component c;
   c.hull = shapes::box(Vec3(0.5, 0.5, 2.05), Vec3(2.5, 2.5, 2.2));
-  for (const TriMesh* input : {&closed, static_cast<const TriMesh*>(&open)}) {
+  for (const TriMesh* input : {&closed, &open, &sheet}) {
     Decomposition d;
     d.options.tau = 0.05;
-    d.normalization = minimumSphereNormalization(*input);
+    d.normalization = minimumSphereNormalization(closed);  // the same units for all three
     d.components = {c};
     const HullsOffInput off = hullsOffInput(*input, d);
     const double s = d.normalization.scale;
-    if (input == &closed) {
-      EXPECT_EQ(off.openShells, 0);
+    EXPECT_EQ(off.openShells, input == &closed ? 0 : 1);
+    if (input != &sheet) {
       EXPECT_EQ(off.excess[0], 0.0);
+      EXPECT_TRUE(off.kept);
     } else {
-      // Mid-height of a side face: 0.125 from the top and the bottom.
-      EXPECT_EQ(off.openShells, 1);
-      EXPECT_LE(off.excess[0], 0.125 * s + 1e-9);
-      EXPECT_GE(off.excess[0], 0.95 * 0.125 * s);
+      EXPECT_LE(off.excess[0], 0.2 * s + 1e-9);
+      EXPECT_GE(off.excess[0], 0.95 * 0.2 * s);
+      EXPECT_FALSE(off.kept);
     }
   }
 }

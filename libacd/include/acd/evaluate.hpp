@@ -62,8 +62,8 @@ Coverage surfaceOutsideHulls(const TriMesh& surface, const std::vector<TriMesh>&
 Coverage inputOutsideHulls(const TriMesh& input, const Decomposition& d);
 
 /// The first half of the promise, on the input as read: how far each hull stands outside the
-/// input's solid (ShellsInside: inside any of its closed shells; near its open shells only their
-/// surface counts), in the decomposition's normalised units. Every repair, wrap, union and dropped
+/// input's solid (ShellsInside: what its closed shells bound, and where its open shells wind
+/// around a point at least half way), in the decomposition's normalised units. Every repair, wrap, union and dropped
 /// cavity is thereby checked against what the user gave: at most tau (to the measure's resolution,
 /// tau/32) unless the result says otherwise. A value above tau is within 5% of the hull's excess
 /// (from below); one at most tau is a lower bound of an excess at most tau + tau/32.
@@ -72,7 +72,8 @@ struct HullsOffInput {
   double max = 0.0;
   int component = -1;          // the one standing furthest off; -1 when none stands off at all
   Vec3 worst = Vec3::Zero();   // where, in the input's coordinates
-  int openShells = 0;          // input shells that bound no solid
+  int openShells = 0;          // input shells that are open (bounding by their winding number)
+  bool kept = true;            // max at most tau, to the resolution the decomposition promises it (tau/32)
 };
 HullsOffInput hullsOffInput(const TriMesh& input, const Decomposition& d);
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <set>
 #include <unordered_map>
 #include <vector>
@@ -66,15 +67,61 @@ bool orientConsistently(TriMesh& shell) {
   return true;
 }
 
+/// The shell without its loose flaps: faces with an edge no other face uses go, again and again
+/// (a fin welded to a closed box goes; an open box goes entirely).
+TriMesh peeled(const TriMesh& shell) {
+  std::unordered_map<std::uint64_t, int> uses;
+  for (const Face& f : shell.faces)
+    for (int k = 0; k < 3; ++k) ++uses[edgeKey(f[k], f[(k + 1) % 3])];
+  std::vector<bool> gone(shell.faces.size(), false);
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (std::size_t i = 0; i < shell.faces.size(); ++i) {
+      if (gone[i]) continue;
+      const Face& f = shell.faces[i];
+      bool loose = false;
+      for (int k = 0; k < 3; ++k) loose |= uses[edgeKey(f[k], f[(k + 1) % 3])] == 1;
+      if (!loose) continue;
+      gone[i] = changed = true;
+      for (int k = 0; k < 3; ++k) --uses[edgeKey(f[k], f[(k + 1) % 3])];
+    }
+  }
+  TriMesh out{shell.vertices, {}};
+  for (std::size_t i = 0; i < shell.faces.size(); ++i)
+    if (!gone[i]) out.faces.push_back(shell.faces[i]);
+  return out;
+}
+
 }  // namespace
+
+/// The generalised winding number of an open shell around q (Jacobson et al. 2013): the sum of
+/// its triangles' signed solid angles (Van Oosterom & Strackee) over 4 pi.
+double windingNumber(const std::vector<std::array<Vec3, 3>>& triangles, const Vec3& q) {
+  double sum = 0.0;
+  for (const auto& t : triangles) {
+    const Vec3 a = t[0] - q, b = t[1] - q, c = t[2] - q;
+    const double la = a.norm(), lb = b.norm(), lc = c.norm();
+    sum += 2.0 * std::atan2(a.dot(b.cross(c)), la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb);
+  }
+  return sum / (4.0 * M_PI);
+}
+
+/// Open shells with more faces than this (all together) count as surface only: the winding
+/// number is summed face by face.
+constexpr std::size_t kWindingFaces = 50000;
 
 struct ShellsInside::Impl {
   struct Solid {
     Box3 box;
     std::unique_ptr<InsideTest> test;
   };
+  struct Open {
+    Box3 box;
+    std::vector<std::array<Vec3, 3>> triangles;
+  };
   std::vector<Solid> solids;
-  int open = 0;
+  std::vector<Open> open;  // bound by their generalised winding number
+  int surfaceOnly = 0;
 };
 
 ShellsInside::ShellsInside(const TriMesh& soup, double weld) : impl_(std::make_unique<Impl>()) {
@@ -89,11 +136,22 @@ ShellsInside::ShellsInside(const TriMesh& soup, double weld) : impl_(std::make_u
     std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
     if (seen.insert(key).second) welded.faces.push_back(f);
   }
+  std::size_t windingFaces = 0;
   for (TriMesh& shell : splitEdgeConnected(welded)) {
-    if (!balanced(shell) && !orientConsistently(shell)) {
-      ++impl_->open;
+    TriMesh closed = balanced(shell) ? shell : peeled(shell);
+    if (closed.faces.empty() || (!balanced(closed) && !orientConsistently(closed))) {
+      // Open: where its faces (a box without its lid) wind around a point at least half way.
+      windingFaces += shell.faces.size();
+      if (windingFaces > kWindingFaces) {
+        ++impl_->surfaceOnly;
+        continue;
+      }
+      Impl::Open o{boundingBox(shell), {}};
+      for (const Face& f : shell.faces) o.triangles.push_back({shell.vertices[f[0]], shell.vertices[f[1]], shell.vertices[f[2]]});
+      impl_->open.push_back(std::move(o));
       continue;
     }
+    shell = std::move(closed);
     impl_->solids.push_back({boundingBox(shell), std::make_unique<InsideTest>(shell)});
   }
 }
@@ -105,10 +163,17 @@ bool ShellsInside::inside(const Vec3& q) const {
     if ((q.array() < s.box.lo.array()).any() || (q.array() > s.box.hi.array()).any()) continue;
     if (s.test->inside(q)) return true;
   }
+  // Outside a shell's bounding box its winding number is below 1/2 (it lies in a half-space
+  // away from q); on the plane of a missing face of a box it is 1/2 exactly, to rounding.
+  for (const Impl::Open& o : impl_->open) {
+    if ((q.array() < o.box.lo.array()).any() || (q.array() > o.box.hi.array()).any()) continue;
+    if (std::abs(windingNumber(o.triangles, q)) >= 0.5 - 1e-9) return true;
+  }
   return false;
 }
 
 int ShellsInside::solidShells() const { return static_cast<int>(impl_->solids.size()); }
-int ShellsInside::openShells() const { return impl_->open; }
+int ShellsInside::openShells() const { return static_cast<int>(impl_->open.size()) + impl_->surfaceOnly; }
+int ShellsInside::surfaceOnlyShells() const { return impl_->surfaceOnly; }
 
 }  // namespace acd

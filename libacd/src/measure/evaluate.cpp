@@ -599,6 +599,8 @@ HullsOffInput hullsOffInput(const TriMesh& input, const Decomposition& d) {
   const TriMesh model = applyNormalization(input, d.normalization);
   const ModelExcess solid(model, ModelSolid::AnyClosedShell);
   const double tau = d.options.tau;
+  // The decomposition keeps tau to its measure's resolution: the same allowance here.
+  const double allowed = tau * (1.0 + kExcessResolution);
   std::vector<Vec3> where(d.components.size(), Vec3::Zero());
   tbb::task_arena arena = workerArena(d.options.threads);
   arena.execute([&] {
@@ -607,7 +609,7 @@ HullsOffInput hullsOffInput(const TriMesh& input, const Decomposition& d) {
       // under the limit is only a lower bound. At tau it decides the promise; beyond, the limit
       // is raised past what was found until nothing exceeds it: the value is then within 5%.
       const TriMesh hull = applyNormalization(d.components[i].hull, d.normalization);
-      HullExcess e = solid.measure(hull, tau, kExcessResolution * tau);
+      HullExcess e = solid.measure(hull, allowed, kExcessResolution * tau);
       while (e.exceeds) {
         const HullExcess above = solid.measure(hull, 1.05 * e.distance, kExcessResolution * tau);
         if (!above.exceeds) break;
@@ -621,6 +623,7 @@ HullsOffInput hullsOffInput(const TriMesh& input, const Decomposition& d) {
     if (out.excess[i] > out.max) out.max = out.excess[i], out.component = static_cast<int>(i);
   if (out.component >= 0) out.worst = d.normalization.undo(where[out.component]);
   out.openShells = solid.openShells();
+  out.kept = out.max <= allowed;
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <acd/algo/close_vertices.hpp>
 #include <acd/algo/face_order.hpp>
 #include <acd/algo/surface_mesh_copy.hpp>
+#include <acd/algo/touching_solids.hpp>
 #include <acd/algo/union_find.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/repair.hpp>
@@ -160,7 +161,7 @@ void repairWithCgal(const TriMesh& merged, const RepairOptions& options, double 
   try {
     const std::size_t pointsBefore = points.size();
     PMP::orient_polygon_soup(points, polygons);
-    r.splitVertices = static_cast<int>(points.size() - pointsBefore);
+    r.splitVertices += static_cast<int>(points.size() - pointsBefore);
     // orient_polygon_soup keeps the polygon order; a polygon is flipped when its positions run backwards.
     for (std::size_t i = 0; i < polygons.size(); ++i) {
       const Point& a = points[polygons[i][0]];
@@ -293,8 +294,13 @@ MeshRepair repairMesh(const TriMesh& input, const RepairOptions& options) {
     // As CGAL's Surface_mesh gives a triangle back: from its last corner.
     r.mesh = merged;
     for (Face& f : r.mesh.faces) f = {f[2], f[0], f[1]};
-  } else
-    repairWithCgal(merged, options, diagonal, r);
+  } else {
+    // Parts welded where they touch along an edge come apart first, each face glued to the one
+    // that bounds its material; CGAL's soup repair would pair them in file order.
+    const TouchingSolidsSplit parts = splitTouchingSolids(merged);
+    r.splitVertices = parts.copiedVertices;
+    repairWithCgal(parts.mesh, options, diagonal, r);
+  }
 
   describeRepairs(options, r);
   r.status = Status::success();

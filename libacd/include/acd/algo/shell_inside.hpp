@@ -10,16 +10,20 @@
 
 namespace acd {
 
-/// The solid of a triangle soup: the union of what its closed shells bound. Vertices within
-/// `weld` (a fraction of the bounding box's diagonal; the repair's own merge, which moves nothing
-/// that matters) are welded first, and a face repeated with the same orientation kept once:
-/// exporters split vertices along texture seams and repeat faces. A shell is an
-/// edge-connected piece; it bounds a solid when every edge is used as often in one direction as in
-/// the other (touching solids that share an edge included), or when it is a closed, orientable
-/// manifold with some faces flipped (oriented again here). Each shell is tested on its own and
-/// whatever its orientation (exporters flip shells; overlapping shells would cancel in one
-/// winding number over the whole). Open shells bound nothing: near them only the surface counts.
-/// Thread-safe after construction.
+/// The solid of a triangle soup: the union of what its shells bound. Vertices within `weld` (a
+/// fraction of the bounding box's diagonal: the repair's own merge, which moves nothing that
+/// matters) are welded first, and a face repeated with the same orientation is kept once
+/// (exporters split vertices along texture seams and repeat faces). A shell is an edge-connected
+/// piece. It is closed when every edge is used as often in one direction as in the other
+/// (touching solids that share an edge included), or is a closed, orientable manifold with some
+/// faces flipped (oriented again here), once loose flaps are peeled off (faces with an edge no
+/// other face uses, repeatedly: a fin welded to a box). A closed shell bounds what its exact
+/// winding number says, whatever its orientation; each shell is tested on its own (exporters
+/// flip shells, and overlapping shells would cancel in one winding number over the whole). An
+/// open shell bounds where its generalised winding number is at least 1/2 in magnitude: a box
+/// without its lid bounds the box, whose hole a hull may span; a flat sheet bounds nothing. Past
+/// 50,000 faces of open shells the rest count as surface only (the winding number is summed face
+/// by face). Thread-safe after construction.
 class ShellsInside {
  public:
   explicit ShellsInside(const TriMesh& soup, double weld = 1e-6);
@@ -29,7 +33,8 @@ class ShellsInside {
 
   bool inside(const Vec3& q) const;
   int solidShells() const;  // the shells that bound a solid
-  int openShells() const;   // the shells that do not (surface only)
+  int openShells() const;         // the shells that do not bound a solid
+  int surfaceOnlyShells() const;  // of those, the ones past the winding number's face budget
 
  private:
   struct Impl;
