@@ -6,13 +6,14 @@
 //
 // Figures, in the model's normalised units (its minimum enclosing sphere has radius 1):
 //   iou                 |model ∩ union| / |model ∪ union|, Monte Carlo in the joint bounding box;
-//                       the model's solid is what any of its shells encloses (an assembly's shells overlap)
+//                       the model's solid is what any of its shells encloses (an assembly's shells overlap);
+//                       an open shell encloses where its generalised winding number is at least 1/2
 //   hull_outside_max    largest distance from a hull-surface sample outside the model to the model
 //   hull_outside_p99    its 99th percentile over all hull-surface samples (covered ones count 0)
 //   model_to_hulls_max  largest distance from a model-surface sample to the union of hulls
 //   model_to_hulls_p99
 // Output: one JSON object on stdout; a model that is not closed gets null IoU and volumes (its
-// closed shells still have an inside for the hull distances). Exit 2 when a file cannot be read.
+// shells still have an inside for the hull distances). Exit 2 when a file cannot be read.
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -163,6 +164,30 @@ std::vector<Point> samplesOn(const std::vector<Triangle>& triangles, long count,
   return out;
 }
 
+// An open shell (a box without its lid, a scan with holes): its generalised winding number
+// (Jacobson et al. 2013), the triangles' solid angles by the formula of Van Oosterom and Strackee.
+struct OpenShell {
+  CGAL::Bbox_3 box;
+  std::vector<Triangle> triangles;
+};
+
+// At least 1/2, less a margin: on the plane of a box's missing lid the winding number is 1/2
+// exactly, and hull samples there lie a rounding off it.
+constexpr double kHalfWinding = 0.499;
+
+double windingNumber(const std::vector<Triangle>& triangles, const Point& q) {
+  double sum = 0.0;
+  for (const Triangle& t : triangles) {
+    const K::Vector_3 a = t[0] - q, b = t[1] - q, c = t[2] - q;
+    const double la = std::sqrt(a.squared_length()), lb = std::sqrt(b.squared_length()),
+                 lc = std::sqrt(c.squared_length());
+    const double num = a * CGAL::cross_product(b, c);
+    const double den = la * lb * lc + (a * b) * lc + (b * c) * la + (c * a) * lb;
+    sum += 2.0 * std::atan2(num, den);
+  }
+  return sum / (4.0 * M_PI);
+}
+
 double percentile(std::vector<double> values, double q) {
   if (values.empty()) return 0.0;
   const std::size_t k = std::min(values.size() - 1, static_cast<std::size_t>(q * values.size()));
@@ -190,8 +215,8 @@ int main(int argc, char** argv) {
 
   Mesh model;
   if (!PMP::IO::read_polygon_mesh(argv[1], model) || model.is_empty()) refuse(std::string(argv[1]) + ": cannot read");
-  // A model that is not closed has no volume to compare (IoU null); its closed shells still have
-  // an inside for the distance of the hulls, its open sheets only a surface.
+  // A model that is not closed has no volume to compare (IoU null); its shells still have an
+  // inside for the distance of the hulls (open ones by their winding number).
   const bool closed = CGAL::is_closed(model);
   if (!CGAL::is_triangle_mesh(model)) PMP::triangulate_faces(model);
   if (closed && PMP::volume(model) < 0) PMP::reverse_face_orientations(model);
@@ -221,12 +246,32 @@ int main(int argc, char** argv) {
   std::vector<Mesh> shells;
   PMP::split_connected_components(model, shells);
   std::vector<std::unique_ptr<CGAL::Side_of_triangle_mesh<Mesh, K>>> sides;
-  for (const Mesh& shell : shells)
-    if (CGAL::is_closed(shell)) sides.push_back(std::make_unique<CGAL::Side_of_triangle_mesh<Mesh, K>>(shell));
+  std::vector<OpenShell> openShells;  // bound where they wind around a point at least half way
+  for (const Mesh& shell : shells) {
+    if (CGAL::is_closed(shell)) {
+      sides.push_back(std::make_unique<CGAL::Side_of_triangle_mesh<Mesh, K>>(shell));
+      continue;
+    }
+    const CGAL::Bbox_3 b = PMP::bbox(shell);  // padded: the margin of kHalfWinding reaches past a missing face
+    const double pad = 0.01 * std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) +
+                                        CGAL::square(b.zmax() - b.zmin()));
+    OpenShell o{CGAL::Bbox_3(b.xmin() - pad, b.ymin() - pad, b.zmin() - pad, b.xmax() + pad, b.ymax() + pad, b.zmax() + pad), {}};
+    for (auto f : shell.faces()) {
+      auto h = shell.halfedge(f);
+      o.triangles.emplace_back(shell.point(shell.source(h)), shell.point(shell.target(h)),
+                               shell.point(shell.target(shell.next(h))));
+    }
+    openShells.push_back(std::move(o));
+  }
   auto insideModel = [&](const Point& p) {
     for (const auto& side : sides)
       if ((*side)(p) != CGAL::ON_UNBOUNDED_SIDE) return CGAL::ON_BOUNDED_SIDE;
     return CGAL::ON_UNBOUNDED_SIDE;
+  };
+  auto insideOpenShell = [&](const Point& p) {
+    for (const OpenShell& o : openShells)
+      if (CGAL::do_overlap(o.box, p.bbox()) && std::abs(windingNumber(o.triangles, p)) >= kHalfWinding) return true;
+    return false;
   };
   std::vector<Triangle> hullTriangles, modelTriangles;
   for (const auto& h : hulls) hullTriangles.insert(hullTriangles.end(), h.triangles.begin(), h.triangles.end());
@@ -256,12 +301,17 @@ int main(int argc, char** argv) {
   const long either = inModel + inUnion - inBoth;
   const double iou = either > 0 ? static_cast<double>(inBoth) / either : 0.0;
 
-  // Hull surface -> model: 0 inside the model, else the distance to its surface.
+  // Hull surface -> model: 0 inside the model, else the distance to its surface. The winding
+  // number of open shells (a sum over their faces) is asked only of samples farther than 0.005
+  // from the surface: nearer ones count their distance, which is below that anyway.
   std::vector<double> outside;
-  for (const Point& p : samplesOn(hullTriangles, surfaceSamples, rng))
-  {
-    outside.push_back(insideModel(p) != CGAL::ON_UNBOUNDED_SIDE ? 0.0 : std::sqrt(modelTree.squared_distance(p)) / radius);
-    if (getenv("WORST") && outside.back() > atof(getenv("WORST"))) fprintf(stderr, "%g %g %g : %g\n", p.x(), p.y(), p.z(), outside.back());
+  for (const Point& p : samplesOn(hullTriangles, surfaceSamples, rng)) {
+    double d = 0.0;
+    if (insideModel(p) == CGAL::ON_UNBOUNDED_SIDE) {
+      d = std::sqrt(modelTree.squared_distance(p)) / radius;
+      if (d > 0.005 && insideOpenShell(p)) d = 0.0;
+    }
+    outside.push_back(d);
   }
   // Model surface -> union of hulls: 0 inside some hull, else the distance to the nearest hull facet.
   std::vector<double> uncovered;

@@ -172,7 +172,9 @@ struct ModelExcess::Impl {
     tree.build();
     tree.accelerate_distance_queries();
   }
-  bool inside(const Vec3& q) const { return whole ? whole->inside(q) : shells->inside(q); }
+  bool insideClosed(const Vec3& q) const { return whole ? whole->inside(q) : shells->insideClosed(q); }
+  bool insideOpen(const Vec3& q) const { return shells && shells->insideOpen(q); }
+  bool inside(const Vec3& q) const { return insideClosed(q) || insideOpen(q); }
   std::vector<Triangle> triangles;
   Tree tree;
   std::unique_ptr<InsideTest> whole;
@@ -189,13 +191,21 @@ HullExcess ModelExcess::measure(const TriMesh& hull, double limit, double resolu
   return branchAndBound(hull, limit, resolution,
                         [&](const Vec3& q, const Patch&, double radius, Vec3& nearest, double& reach,
                             const Triangle*& face) {
-                          const bool inside = impl_->inside(q);
+                          const bool inside = impl_->insideClosed(q);
                           // Inside, the patch is within its radius of the model: no distance needed.
                           if (inside && radius <= limit) return -1.0;
                           const auto [point, primitive] = impl_->tree.closest_point_and_primitive(toPoint(q));
                           nearest = toVec(point);
                           const double d = (nearest - q).norm();
                           if (!inside) {
+                            // Inside an open shell (its winding number) counts zero, but says
+                            // nothing of q's neighbours: split on. Asked only where it matters
+                            // (the sum is costly): a distance within the limit settles anyway.
+                            if (d + radius > limit && impl_->insideOpen(q)) {
+                              nearest = q;
+                              reach = radius;
+                              return 0.0;
+                            }
                             face = &*primitive;
                             return d;
                           }

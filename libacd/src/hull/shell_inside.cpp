@@ -106,6 +106,11 @@ double windingNumber(const std::vector<std::array<Vec3, 3>>& triangles, const Ve
   return sum / (4.0 * M_PI);
 }
 
+/// An open shell bounds where its winding number reaches 1/2, less a margin: on the plane of a
+/// box's missing lid it is 1/2 exactly, and a hull there, a rounding off that plane, must not be
+/// called outside (and then measured to the rim).
+constexpr double kHalfWinding = 0.499;
+
 /// Open shells with more faces than this (all together) count as surface only: the winding
 /// number is summed face by face.
 constexpr std::size_t kWindingFaces = 50000;
@@ -146,7 +151,10 @@ ShellsInside::ShellsInside(const TriMesh& soup, double weld) : impl_(std::make_u
         ++impl_->surfaceOnly;
         continue;
       }
+      // Padded: the margin of kHalfWinding reaches a little past a missing face.
       Impl::Open o{boundingBox(shell), {}};
+      const Vec3 pad = Vec3::Constant(0.01 * o.box.size().norm());
+      o.box.lo -= pad, o.box.hi += pad;
       for (const Face& f : shell.faces) o.triangles.push_back({shell.vertices[f[0]], shell.vertices[f[1]], shell.vertices[f[2]]});
       impl_->open.push_back(std::move(o));
       continue;
@@ -158,16 +166,20 @@ ShellsInside::ShellsInside(const TriMesh& soup, double weld) : impl_(std::make_u
 
 ShellsInside::~ShellsInside() = default;
 
-bool ShellsInside::inside(const Vec3& q) const {
+bool ShellsInside::insideClosed(const Vec3& q) const {
   for (const Impl::Solid& s : impl_->solids) {
     if ((q.array() < s.box.lo.array()).any() || (q.array() > s.box.hi.array()).any()) continue;
     if (s.test->inside(q)) return true;
   }
-  // Outside a shell's bounding box its winding number is below 1/2 (it lies in a half-space
-  // away from q); on the plane of a missing face of a box it is 1/2 exactly, to rounding.
+  return false;
+}
+
+bool ShellsInside::insideOpen(const Vec3& q) const {
+  // Outside a shell's bounding box its winding number is below 1/2 (the shell lies in a
+  // half-space away from q).
   for (const Impl::Open& o : impl_->open) {
     if ((q.array() < o.box.lo.array()).any() || (q.array() > o.box.hi.array()).any()) continue;
-    if (std::abs(windingNumber(o.triangles, q)) >= 0.5 - 1e-9) return true;
+    if (std::abs(windingNumber(o.triangles, q)) >= kHalfWinding) return true;
   }
   return false;
 }

@@ -31,7 +31,12 @@ class ShellsInside {
   ShellsInside(const ShellsInside&) = delete;
   ShellsInside& operator=(const ShellsInside&) = delete;
 
-  bool inside(const Vec3& q) const;
+  bool inside(const Vec3& q) const { return insideClosed(q) || insideOpen(q); }
+  /// Inside a closed shell: a ball around q that meets no face is inside too.
+  bool insideClosed(const Vec3& q) const;
+  /// Inside an open shell by its winding number, which varies off the faces (across a missing
+  /// lid): no ball around q is known to be inside. Costs a sum over the open shells' faces.
+  bool insideOpen(const Vec3& q) const;
   int solidShells() const;  // the shells that bound a solid
   int openShells() const;         // the shells that do not bound a solid
   int surfaceOnlyShells() const;  // of those, the ones past the winding number's face budget
