@@ -180,7 +180,8 @@ int decomposeMesh(DecomposeArgs& a, const acd::TriMesh& mesh) {
     std::fprintf(stderr, "acd: %s: tau not kept: the hull of component %d stands %.4g off the input as read (%.2f tau), "
                  "at (%.6g, %.6g, %.6g)%s\n", a.model.c_str(), off.component, off.max, off.max / d.options.tau,
                  off.worst.x(), off.worst.y(), off.worst.z(),
-                 off.openShells > 0 ? "; the input has open shells, which bound where they wind around a point half way" : "");
+                 off.openShells > 0 ? "; the input is open (a hull over a hole is measured to the input's own faces; "
+                                      "--surface decomposes the open surface as it is)" : "");
     return kTauNotKept;
   }
   if (uncovered > d.options.tau && a.sim.maxHulls == 0) {
