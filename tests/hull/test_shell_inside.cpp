@@ -1,14 +1,13 @@
 // ShellsInside (libacd/src/hull/shell_inside.cpp): the input's solid as the union of its closed
 // shells, each on its own, against analytic boxes. Assemblies overlap, touch along edges, nest and
 // come flipped; open shells bound nothing.
-#include <acd/algo/shapes.hpp>
-#include <acd/algo/shell_inside.hpp>
-
 #include <gtest/gtest.h>
 
-#include "helpers.hpp"
-
+#include <acd/algo/shapes.hpp>
+#include <acd/algo/shell_inside.hpp>
 #include <random>
+
+#include "helpers.hpp"
 
 using namespace acd;
 using acd::shapes::box;
@@ -33,8 +32,7 @@ std::vector<Vec3> probes(int n) {
     const Vec3 q(u(rng), u(rng), u(rng));
     bool nearFace = false;
     for (int k = 0; k < 3; ++k)
-      for (double plane : {0.0, 0.5, 1.0, 1.5, 2.0, 0.25, 0.75})
-        nearFace |= std::abs(q[k] - plane) < 1e-6;
+      for (double plane : {0.0, 0.5, 1.0, 1.5, 2.0, 0.25, 0.75}) nearFace |= std::abs(q[k] - plane) < 1e-6;
     if (!nearFace) out.push_back(q);
   }
   return out;
@@ -81,15 +79,20 @@ TEST(ShellsInside, NestedShellsAndAnOpenOne) {
   // A box in a box: inside either is inside. A box without its top bounds the box (by its winding
   // number).
   TriMesh open = box(Vec3(2.25, 2.25, 2.25), Vec3(2.75, 2.75, 2.75));
-  open.faces.erase(std::remove_if(open.faces.begin(), open.faces.end(), [&](const Face& f) {
-    return open.vertices[f[0]].z() == 2.75 && open.vertices[f[1]].z() == 2.75 && open.vertices[f[2]].z() == 2.75;
-  }), open.faces.end());
+  open.faces.erase(std::remove_if(open.faces.begin(), open.faces.end(),
+                                  [&](const Face& f) {
+                                    return open.vertices[f[0]].z() == 2.75 && open.vertices[f[1]].z() == 2.75 &&
+                                           open.vertices[f[2]].z() == 2.75;
+                                  }),
+                   open.faces.end());
   ASSERT_EQ(open.faces.size(), 10u);
-  const ShellsInside solid(concatenate({box(Vec3(0, 0, 0), Vec3(2, 2, 2)), flipped(box(Vec3(0.5, 0.5, 0.5), Vec3(1.5, 1.5, 1.5))), open}));
+  const ShellsInside solid(
+      concatenate({box(Vec3(0, 0, 0), Vec3(2, 2, 2)), flipped(box(Vec3(0.5, 0.5, 0.5), Vec3(1.5, 1.5, 1.5))), open}));
   EXPECT_EQ(solid.solidShells(), 2);
   EXPECT_EQ(solid.openShells(), 1);
   for (const Vec3& q : probes(4000))
-    ASSERT_EQ(solid.inside(q), inBox(q, Vec3(0, 0, 0), Vec3(2, 2, 2)) || inBox(q, Vec3(2.25, 2.25, 2.25), Vec3(2.75, 2.75, 2.75)))
+    ASSERT_EQ(solid.inside(q),
+              inBox(q, Vec3(0, 0, 0), Vec3(2, 2, 2)) || inBox(q, Vec3(2.25, 2.25, 2.25), Vec3(2.75, 2.75, 2.75)))
         << q.transpose();
 }
 
@@ -114,16 +117,20 @@ TEST(ShellsInside, AFinWeldedToABoxIsPeeledOff) {
 TEST(ShellsInside, ABoxWithoutItsLidBoundsTheBox) {
   // Open: its winding number is above 1/2 inside the box and 1/2 on the missing lid.
   TriMesh m = box(Vec3(0, 0, 0), Vec3(1, 1, 1));
-  m.faces.erase(std::remove_if(m.faces.begin(), m.faces.end(), [&](const Face& f) {
-    return m.vertices[f[0]].z() == 1 && m.vertices[f[1]].z() == 1 && m.vertices[f[2]].z() == 1;
-  }), m.faces.end());
+  m.faces.erase(std::remove_if(m.faces.begin(), m.faces.end(),
+                               [&](const Face& f) {
+                                 return m.vertices[f[0]].z() == 1 && m.vertices[f[1]].z() == 1 &&
+                                        m.vertices[f[2]].z() == 1;
+                               }),
+                m.faces.end());
   const ShellsInside solid(m);
   EXPECT_EQ(solid.solidShells(), 0);
   EXPECT_EQ(solid.openShells(), 1);
   // Within a hair of the missing lid the margin of 1/2 (0.499) calls points inside.
   for (const Vec3& q : probes(2000))
-    if (std::abs(q.z() - 1.0) > 0.01) ASSERT_EQ(solid.inside(q), inBox(q, Vec3(0, 0, 0), Vec3(1, 1, 1))) << q.transpose();
-  EXPECT_TRUE(solid.inside(Vec3(0.3, 0.6, 1.0)));       // on the missing lid
+    if (std::abs(q.z() - 1.0) > 0.01)
+      ASSERT_EQ(solid.inside(q), inBox(q, Vec3(0, 0, 0), Vec3(1, 1, 1))) << q.transpose();
+  EXPECT_TRUE(solid.inside(Vec3(0.3, 0.6, 1.0)));         // on the missing lid
   EXPECT_TRUE(solid.inside(Vec3(0.3, 0.6, 1.0 + 1e-6)));  // a rounding above it
   EXPECT_FALSE(solid.inside(Vec3(0.5, 0.5, 1.1)));
   // A flat sheet bounds nothing.

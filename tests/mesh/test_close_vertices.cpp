@@ -1,10 +1,9 @@
 // closeVertexRoots (libacd/src/mesh/close_vertices.cpp) against an all-pairs oracle: chains of
 // close vertices form one group, represented by its lowest index, whatever the grid cells.
-#include <acd/algo/close_vertices.hpp>
-#include <acd/algo/union_find.hpp>
-
 #include <gtest/gtest.h>
 
+#include <acd/algo/close_vertices.hpp>
+#include <acd/algo/union_find.hpp>
 #include <random>
 
 using namespace acd;

@@ -1,10 +1,10 @@
 // splitTouchingSolids (libacd/src/prepare/touching_solids.cpp): two boxes welded along an edge (as
 // exports weld an assembly's parts) come apart into the two boxes, each closed and oriented, with
 // the volumes of the boxes; a mesh without such edges is left exactly as it is.
+#include <gtest/gtest.h>
+
 #include <acd/algo/shapes.hpp>
 #include <acd/algo/touching_solids.hpp>
-
-#include <gtest/gtest.h>
 
 #include "helpers.hpp"
 

@@ -2,7 +2,6 @@
 #include <acd/algo/close_vertices.hpp>
 #include <acd/algo/inside.hpp>
 #include <acd/algo/shell_inside.hpp>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -155,7 +154,8 @@ ShellsInside::ShellsInside(const TriMesh& soup, double weld) : impl_(std::make_u
       Impl::Open o{boundingBox(shell), {}};
       const Vec3 pad = Vec3::Constant(0.01 * o.box.size().norm());
       o.box.lo -= pad, o.box.hi += pad;
-      for (const Face& f : shell.faces) o.triangles.push_back({shell.vertices[f[0]], shell.vertices[f[1]], shell.vertices[f[2]]});
+      for (const Face& f : shell.faces)
+        o.triangles.push_back({shell.vertices[f[0]], shell.vertices[f[1]], shell.vertices[f[2]]});
       impl_->open.push_back(std::move(o));
       continue;
     }

@@ -1,7 +1,6 @@
 // Vertices closer than a tolerance, grouped by grid hashing.
 #include <acd/algo/close_vertices.hpp>
 #include <acd/algo/union_find.hpp>
-
 #include <algorithm>
 #include <cstdint>
 #include <unordered_map>
@@ -16,9 +15,7 @@ std::vector<int> closeVertexRoots(const std::vector<Vec3>& vertices, const Box3&
     // Cells no smaller than 2^-20 of the diagonal, so that a cell index fits the key's 21 bits
     // (a smaller tolerance only means more vertices per cell to compare).
     const double cell = std::max(tolerance, box.size().norm() * 0x1p-20);
-    auto cellOf = [&](const Vec3& p) {
-      return Eigen::Array3i(((p - box.lo) / cell).array().floor().cast<int>());
-    };
+    auto cellOf = [&](const Vec3& p) { return Eigen::Array3i(((p - box.lo) / cell).array().floor().cast<int>()); };
     auto key = [](const Eigen::Array3i& c) {
       return (static_cast<std::uint64_t>(c.x() + 1) << 42) | (static_cast<std::uint64_t>(c.y() + 1) << 21) |
              static_cast<std::uint64_t>(c.z() + 1);

@@ -1,7 +1,6 @@
 // Faces around a non-manifold edge sorted by angle, paired by the side their material is on.
 #include <acd/algo/touching_solids.hpp>
 #include <acd/algo/union_find.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <map>

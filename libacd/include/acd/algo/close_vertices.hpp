@@ -3,7 +3,6 @@
 #pragma once
 
 #include <acd/mesh.hpp>
-
 #include <vector>
 
 namespace acd {

@@ -5,7 +5,6 @@
 #pragma once
 
 #include <acd/mesh.hpp>
-
 #include <memory>
 
 namespace acd {
@@ -37,7 +36,7 @@ class ShellsInside {
   /// Inside an open shell by its winding number, which varies off the faces (across a missing
   /// lid): no ball around q is known to be inside. Costs a sum over the open shells' faces.
   bool insideOpen(const Vec3& q) const;
-  int solidShells() const;  // the shells that bound a solid
+  int solidShells() const;        // the shells that bound a solid
   int openShells() const;         // the shells that do not bound a solid
   int surfaceOnlyShells() const;  // of those, the ones past the winding number's face budget
 
