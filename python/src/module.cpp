@@ -85,7 +85,8 @@ py::tuple decompose(const Vertices& vertices, const Faces& faces, const SolidOpt
       acd::ReportInput input = acd::describeInput(model, mesh);
       input.mesh = sceneMesh;
       input.inputOutside = acd::inputOutsideHulls(mesh, d).max;
-      input.hullOffInput = acd::hullsOffInput(mesh, d).excess;
+      input.hullOffInput =
+          acd::hullsOffInput(mesh, d, !settings.post.maxHulls && !settings.post.maxHullVertices).excess;
       report = acd::reportJson(input, d, post);
     }
   }

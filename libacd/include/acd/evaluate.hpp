@@ -75,7 +75,11 @@ struct HullsOffInput {
   int openShells = 0;          // input shells that are open (bounding by their winding number)
   bool kept = true;            // max at most tau, to the resolution the decomposition promises it (tau/32)
 };
-HullsOffInput hullsOffInput(const TriMesh& input, const Decomposition& d);
+/// `hullsAsDecomposed`: the hulls are as decompose() made them (no post-pass enlarged them). Then,
+/// where no repair changed the input and no wrap stood in for it, the decomposition measured this
+/// same quantity against this same surface, and its figures (`hullExcess`) are returned instead
+/// of measuring again (seconds on a million faces).
+HullsOffInput hullsOffInput(const TriMesh& input, const Decomposition& d, bool hullsAsDecomposed = false);
 
 /// evaluate() on a mesh as read (what `acd evaluate` does): the model is first checked and
 /// repaired by prepareSolid (open meshes refused); a model it refuses comes back in `status`.

@@ -24,6 +24,7 @@ struct ReportInput {
   int selfIntersections = 0;  // face pairs (countSelfIntersections); explains unresolved components
   double inputOutside = -1.0; // inputOutsideHulls (acd/evaluate.hpp), normalised; < 0: not measured
   std::vector<double> hullOffInput;  // hullsOffInput (acd/evaluate.hpp) per component; empty: not measured
+  double promiseSeconds = -1.0;      // both measures on the input as read (wall); < 0: not measured
 };
 
 /// Diagnosis and self-intersection count of a mesh as read. Call it once the decomposition has

@@ -592,15 +592,23 @@ Coverage inputOutsideHulls(const TriMesh& input, const Decomposition& d) {
   return c;
 }
 
-HullsOffInput hullsOffInput(const TriMesh& input, const Decomposition& d) {
+HullsOffInput hullsOffInput(const TriMesh& input, const Decomposition& d, bool hullsAsDecomposed) {
   HullsOffInput out;
   out.excess.assign(d.components.size(), 0.0);
   if (input.faces.empty() || d.components.empty()) return out;
-  const TriMesh model = applyNormalization(input, d.normalization);
-  const ModelExcess solid(model, ModelSolid::AnyClosedShell);
   const double tau = d.options.tau;
   // The decomposition keeps tau to its measure's resolution: the same allowance here.
   const double allowed = tau * (1.0 + kExcessResolution);
+  if (hullsAsDecomposed && d.repairs.empty() && !d.wrap.used) {
+    for (std::size_t i = 0; i < d.components.size(); ++i) {
+      out.excess[i] = d.components[i].hullExcess;
+      if (out.excess[i] > out.max) out.max = out.excess[i], out.component = static_cast<int>(i);
+    }
+    out.kept = out.max <= allowed;
+    return out;
+  }
+  const TriMesh model = applyNormalization(input, d.normalization);
+  const ModelExcess solid(model, ModelSolid::AnyClosedShell);
   std::vector<Vec3> where(d.components.size(), Vec3::Zero());
   tbb::task_arena arena = workerArena(d.options.threads);
   arena.execute([&] {

@@ -143,6 +143,7 @@ json solidReport(const ReportInput& in, const Decomposition& d) {
                  {"merging_seconds", d.times.merging},
                  {"hulls_seconds", d.times.hulls},
                  {"total_seconds", d.times.total}};
+  if (in.promiseSeconds >= 0.0) j["timing"]["promise_check_seconds"] = in.promiseSeconds;
   return j;
 }
 
