@@ -74,7 +74,8 @@ void checkCase(const badmeshes::Case& c, const Decomposition& d) {
     const MeshIndex hull(hullMesh);
     double depth = 0;
     for (const Vec3& p : k.mesh.vertices) depth = std::max(depth, hull.distance(p));
-    EXPECT_LE(depth * scale, d.options.tau + 1e-9);
+    // A component that joins shells (the merge across shells) has no concavity to promise.
+    if (splitEdgeConnected(k.mesh).size() == 1) EXPECT_LE(depth * scale, d.options.tau + 1e-9);
     if (c.holes) continue;  // patch vertices lie where the hole was, off the input's surface
     const double allowed = (k.ofWrap ? d.wrap.hausdorff / scale : 0.0) + 2e-5 * diagonal;
     double far = 0;

@@ -191,12 +191,6 @@ std::vector<Piece> firstPieces(const std::vector<TriMesh>& components, bool inva
   return pending;
 }
 
-/// What a merge may add outside the model and the two hulls it replaces, as a share of the union's
-/// volume (MergeScope::Model; measured on compare_peers' models, docs/ALGORITHM.md section 11).
-constexpr double kModelMergeGrowth = 0.25;
-/// Points per union for that volume: its standard error is below 0.5 % of the hull's volume.
-constexpr int kModelMergeSamples = 4096;
-
 /// Adds to `pairs` the pairs of `more` that it does not hold yet.
 void appendNewPairs(std::vector<SharedFaces>& pairs, const std::vector<SharedFaces>& more) {
   std::set<std::pair<int, int>> have;

@@ -10,6 +10,7 @@
 #include <acd/robust.hpp>
 
 #include "held_to.hpp"
+#include "shell_merge.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -414,6 +415,12 @@ Decomposition decomposeShells(const DecomposeOptions& o, PreparedModel prepared)
     for (Component& c : d.components) c.ofWrap = prepared.isWrap[i] || redone;
     done += static_cast<int>(d.components.size());
     accumulateShell(result, std::move(d));
+  }
+  // A hull may span shells where that keeps it within tau of the solid they bound together.
+  if (o.merge && o.mergeScope == MergeScope::Model && prepared.shells.size() > 1) {
+    const auto t = Clock::now();
+    result.stats.merges += mergeAcrossShells(result.components, concatenate(prepared.shells), result.normalization, o);
+    result.times.merging += secondsSince(t);
   }
   if (result.wrap.used && !wraps.empty()) {
     const auto t = Clock::now();

@@ -8,6 +8,12 @@
 
 namespace acd {
 
+/// What a merge may add outside the model and the hulls it replaces, as a share of the union's
+/// volume (MergeScope::Model; measured on compare_peers' models, docs/ALGORITHM.md section 11).
+constexpr double kModelMergeGrowth = 0.25;
+/// Points per union for that volume: its standard error is below 0.5 % of the hull's volume.
+constexpr int kModelMergeSamples = 4096;
+
 /// Glues two closed, outward meshes along the triangles they share (same corner positions,
 /// opposite orientations), which both drop. Corners at the same position become one vertex.
 /// Returns false, leaving `out` unspecified, when they share no triangle, the result is not a
