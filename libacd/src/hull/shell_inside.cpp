@@ -91,8 +91,6 @@ TriMesh peeled(const TriMesh& shell) {
   return out;
 }
 
-}  // namespace
-
 /// The generalised winding number of an open shell around q (Jacobson et al. 2013): the sum of
 /// its triangles' signed solid angles (Van Oosterom & Strackee) over 4 pi.
 double windingNumber(const std::vector<std::array<Vec3, 3>>& triangles, const Vec3& q) {
@@ -113,6 +111,8 @@ constexpr double kHalfWinding = 0.499;
 /// Open shells with more faces than this (all together) count as surface only: the winding
 /// number is summed face by face.
 constexpr std::size_t kWindingFaces = 50000;
+
+}  // namespace
 
 struct ShellsInside::Impl {
   struct Solid {

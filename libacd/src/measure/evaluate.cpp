@@ -599,38 +599,35 @@ HullsOffInput hullsOffInput(const TriMesh& input, const Decomposition& d, bool h
   const double tau = d.options.tau;
   // The decomposition keeps tau to its measure's resolution: the same allowance here.
   const double allowed = tau * (1.0 + kExcessResolution);
-  if (hullsAsDecomposed && d.repairs.empty() && !d.wrap.used) {
-    for (std::size_t i = 0; i < d.components.size(); ++i) {
-      out.excess[i] = d.components[i].hullExcess;
-      if (out.excess[i] > out.max) out.max = out.excess[i], out.component = static_cast<int>(i);
-    }
-    out.kept = out.max <= allowed;
-    return out;
-  }
-  const TriMesh model = applyNormalization(input, d.normalization);
-  const ModelExcess solid(model, ModelSolid::AnyClosedShell);
   std::vector<Vec3> where(d.components.size(), Vec3::Zero());
-  tbb::task_arena arena = workerArena(d.options.threads);
-  arena.execute([&] {
-    tbb::parallel_for(std::size_t{0}, d.components.size(), [&](std::size_t i) {
-      // The search decides "beyond the limit?" and settles patches below it, so a value found
-      // under the limit is only a lower bound. At tau it decides the promise; beyond, the limit
-      // is raised past what was found until nothing exceeds it: the value is then within 5%.
-      const TriMesh hull = applyNormalization(d.components[i].hull, d.normalization);
-      HullExcess e = solid.measure(hull, allowed, kExcessResolution * tau);
-      while (e.exceeds) {
-        const HullExcess above = solid.measure(hull, 1.05 * e.distance, kExcessResolution * tau);
-        if (!above.exceeds) break;
-        e = above;
-      }
-      out.excess[i] = e.distance;
-      where[i] = e.hullPoint;
+  const bool measure = !(hullsAsDecomposed && d.repairs.empty() && !d.wrap.used);
+  if (!measure) {
+    for (std::size_t i = 0; i < d.components.size(); ++i) out.excess[i] = d.components[i].hullExcess;
+  } else {
+    const ModelExcess solid(applyNormalization(input, d.normalization), ModelSolid::AnyClosedShell);
+    tbb::task_arena arena = workerArena(d.options.threads);
+    arena.execute([&] {
+      tbb::parallel_for(std::size_t{0}, d.components.size(), [&](std::size_t i) {
+        // The search decides "beyond the limit?" and settles patches below it, so a value found
+        // under the limit is only a lower bound. At tau it decides the promise; beyond, the
+        // limit is raised past what was found until nothing exceeds it: the value is then
+        // within 5%.
+        const TriMesh hull = applyNormalization(d.components[i].hull, d.normalization);
+        HullExcess e = solid.measure(hull, allowed, kExcessResolution * tau);
+        while (e.exceeds) {
+          const HullExcess above = solid.measure(hull, 1.05 * e.distance, kExcessResolution * tau);
+          if (!above.exceeds) break;
+          e = above;
+        }
+        out.excess[i] = e.distance;
+        where[i] = e.hullPoint;
+      });
     });
-  });
+    out.openShells = solid.openShells();
+  }
   for (std::size_t i = 0; i < out.excess.size(); ++i)
     if (out.excess[i] > out.max) out.max = out.excess[i], out.component = static_cast<int>(i);
-  if (out.component >= 0) out.worst = d.normalization.undo(where[out.component]);
-  out.openShells = solid.openShells();
+  if (measure && out.component >= 0) out.worst = d.normalization.undo(where[out.component]);
   out.kept = out.max <= allowed;
   return out;
 }
