@@ -20,22 +20,29 @@ Vec3 pointOf(const Corner& c) { return {c[0], c[1], c[2]}; }
 }  // namespace
 
 std::vector<Cut> findCuts(const std::vector<acd::TriMesh>& components) {
-  std::map<TriangleKey, std::vector<int>> owners;
+  // Per triangle (corners sorted) its owners, each with its normal as that owner sees it.
+  std::map<TriangleKey, std::vector<std::pair<int, Vec3>>> owners;
   for (int i = 0; i < static_cast<int>(components.size()); ++i) {
     const acd::TriMesh& m = components[i];
     for (const acd::Face& f : m.faces) {
-      TriangleKey k{cornerOf(m.vertices[f[0]]), cornerOf(m.vertices[f[1]]), cornerOf(m.vertices[f[2]])};
+      const Vec3 &p = m.vertices[f[0]], &q = m.vertices[f[1]], &r = m.vertices[f[2]];
+      TriangleKey k{cornerOf(p), cornerOf(q), cornerOf(r)};
       std::sort(k.begin(), k.end());
-      owners[k].push_back(i);
+      owners[k].push_back({i, (q - p).cross(r - p)});
     }
   }
-  // Shared triangles per pair of components.
-  std::map<std::pair<int, int>, std::vector<TriangleKey>> shared;
-  for (const auto& [key, list] : owners)
-    if (list.size() == 2 && list[0] != list[1]) shared[std::minmax(list[0], list[1])].push_back(key);
+  // Shared triangles per pair of components, with their normals out of the first of the pair.
+  std::map<std::pair<int, int>, std::vector<std::pair<TriangleKey, Vec3>>> shared;
+  for (const auto& [key, list] : owners) {
+    if (list.size() != 2 || list[0].first == list[1].first) continue;
+    const bool firstIsLow = list[0].first < list[1].first;
+    shared[std::minmax(list[0].first, list[1].first)].push_back({key, list[firstIsLow ? 0 : 1].second});
+  }
 
   std::vector<Cut> cuts;
-  for (const auto& [pair, triangles] : shared) {
+  for (const auto& [pair, oriented] : shared) {
+    std::vector<TriangleKey> triangles;
+    for (const auto& [key, normal] : oriented) triangles.push_back(key);
     // Patches: triangles joined through common corners (union-find over triangles).
     const int n = static_cast<int>(triangles.size());
     acd::UnionFind sets(n);
@@ -54,11 +61,13 @@ std::vector<Cut> findCuts(const std::vector<acd::TriMesh>& components) {
       cut.b = pair.second;
       cut.centre += area * (p + q + r) / 3.0;
       cut.area += area;
+      cut.normal += oriented[t].second;  // twice the area along the normal
       ++cut.triangles;
     }
     std::vector<Cut> local;
     for (auto& [root, cut] : patches) {
       cut.centre /= cut.area > 0 ? cut.area : 1.0;
+      if (cut.normal.norm() > 0) cut.normal.normalize();
       local.push_back(cut);
     }
     std::stable_sort(local.begin(), local.end(), [](const Cut& x, const Cut& y) { return x.area > y.area; });

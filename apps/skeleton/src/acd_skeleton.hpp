@@ -16,6 +16,7 @@ namespace skeleton {
 struct Cut {
   int a = -1, b = -1;          // the two components, a < b
   Vec3 centre = Vec3::Zero();  // area-weighted centroid of the shared triangles
+  Vec3 normal = Vec3::Zero();  // their area-weighted unit normal, out of component a
   double area = 0.0;
   int triangles = 0;
 };

@@ -98,6 +98,14 @@ DeformResult runArap(const acd::TriMesh& mesh, const ArapRequest& request) {
   return out;
 }
 
+/// The first vertex furthest along `direction`.
+int extremeVertex(const acd::TriMesh& mesh, const Vec3& direction) {
+  int extreme = 0;
+  for (int v = 1; v < static_cast<int>(mesh.vertices.size()); ++v)
+    if (mesh.vertices[v].dot(direction) > mesh.vertices[extreme].dot(direction)) extreme = v;
+  return extreme;
+}
+
 DeformResult failure(const std::string& message) {
   DeformResult out;
   out.error = message;
@@ -128,9 +136,7 @@ ArapRequest bendRequest(const acd::TriMesh& mesh, const Vec3& direction, const V
   r.axis = axis;
   r.angleDegrees = degrees;
   if (mesh.vertices.empty()) return r;
-  int extreme = 0;
-  for (int v = 1; v < static_cast<int>(mesh.vertices.size()); ++v)
-    if (mesh.vertices[v].dot(direction) > mesh.vertices[extreme].dot(direction)) extreme = v;
+  const int extreme = extremeVertex(mesh, direction);
   const double diagonal = acd::boundingBox(mesh).size().norm();
   const std::vector<double> dist = edgeDistances(mesh, extreme);
   Vec3 ring = Vec3::Zero();
@@ -147,6 +153,21 @@ ArapRequest bendRequest(const acd::TriMesh& mesh, const Vec3& direction, const V
 }
 
 DeformResult applyDeformation(const acd::TriMesh& mesh, const std::string& spec) {
+  if (spec.find(';') != std::string::npos) {  // a sequence: each step applied to the last one's result
+    DeformResult out;
+    out.ok = true;
+    out.mesh = mesh;
+    std::vector<std::string> summaries;
+    for (const std::string& step : split(spec, ';')) {
+      DeformResult r = applyDeformation(out.mesh, step);
+      if (!r.ok) return r;
+      out.mesh = std::move(r.mesh);
+      out.seconds += r.seconds;
+      summaries.push_back(r.summary);
+    }
+    for (std::size_t i = 0; i < summaries.size(); ++i) out.summary += (i ? "; then " : "") + summaries[i];
+    return out;
+  }
   const auto start = std::chrono::steady_clock::now();
   const std::vector<std::string> parts = split(spec, ':');
   const std::string kind = parts.empty() ? "" : parts[0];
@@ -164,6 +185,23 @@ DeformResult applyDeformation(const acd::TriMesh& mesh, const std::string& spec)
     if (parts.size() > 5 && (!parseNumber(parts[5], region) || region <= handle || region >= 1))
       return failure("bend region radius must lie in (handle radius, 1), got '" + parts[5] + "'");
     out = runArap(mesh, bendRequest(mesh, direction, axis, degrees, handle, region));
+  } else if (kind == "twist") {
+    if (parts.size() < 3 || parts.size() > 5)
+      return failure("twist needs DIR:DEG[:HANDLE[:REGION]], got '" + spec + "'");
+    Vec3 direction;
+    double degrees = 0, handle = 0.08, region = 0.25;
+    if (!parseDirection(parts[1], direction)) return failure("twist direction must be +x, -x, +y, -y, +z or -z, got '" + parts[1] + "'");
+    if (!parseNumber(parts[2], degrees)) return failure("twist angle is not a number: '" + parts[2] + "'");
+    if (parts.size() > 3 && (!parseNumber(parts[3], handle) || handle <= 0 || handle >= 1))
+      return failure("twist handle radius must lie in (0, 1), got '" + parts[3] + "'");
+    if (parts.size() > 4 && (!parseNumber(parts[4], region) || region <= handle || region >= 1))
+      return failure("twist region radius must lie in (handle radius, 1), got '" + parts[4] + "'");
+    ArapRequest r = bendRequest(mesh, direction, Vec3::UnitZ(), degrees, handle, region);
+    // About the limb's own axis: from where it meets the body to its tip.
+    const Vec3 along = mesh.vertices[extremeVertex(mesh, direction)] - r.pivot;
+    if (!(along.norm() > 0)) return failure("twist: the limb along " + parts[1] + " has no length");
+    r.axis = along.normalized();
+    out = runArap(mesh, r);
   } else if (kind == "ids") {
     if (parts.size() != 2) return failure("ids needs one file name: ids:FILE.json, got '" + spec + "'");
     std::ifstream in(parts[1]);
@@ -200,7 +238,7 @@ DeformResult applyDeformation(const acd::TriMesh& mesh, const std::string& spec)
       << translation.y() << ", " << translation.z() << ")";
     out.summary = s.str();
   } else {
-    return failure("unknown deformation '" + kind + "' (expected bend, ids or affine)");
+    return failure("unknown deformation '" + kind + "' (expected bend, twist, ids or affine)");
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;

@@ -8,6 +8,9 @@
 //       rotated by DEG degrees about the axis AXIS (x, y or z) through the pivot = mean of the
 //       region's outer ring (vertices at path distance in [0.9 REGION, REGION]), where the
 //       limb meets the body.
+//   twist:DIR:DEG[:HANDLE[:REGION]]
+//       The same handle and region, the handle turned by DEG degrees about the limb's own axis:
+//       the line from the pivot to e.
 //   ids:FILE.json
 //       ARAP with given vertex ids: {"handle": [...], "region": [...], "pivot": [x, y, z],
 //       "axis": [x, y, z], "angle": degrees}.
@@ -15,6 +18,8 @@
 //       Non-uniform scaling by (SX, SY, SZ) about the bounding-box centre, then rotation by
 //       RX, RY, RZ degrees about x, then y, then z (through the centre), then translation by
 //       (TX, TY, TZ) in model units. A rigid motion when every S is 1.
+//   SPEC;SPEC;...
+//       Each applied to the result of the one before (a limb chain posed joint by joint).
 #pragma once
 
 #include "arap.hpp"

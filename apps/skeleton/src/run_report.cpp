@@ -80,7 +80,12 @@ int writeRunFiles(const RunParameters& p, const std::vector<Model>& models, bool
                   {"unresolved_components", m.unresolved},
                   {"repairs", m.repairs},
                   {"decompose_seconds", m.decomposeSeconds},
-                  {"acd", graphSummary(m.acd, m.acdContracted)}};
+                  {"parts", m.parts},
+                  {"part_merges", m.partMerges},
+                  {"genus", m.genus},
+                  {"dropped_adjacencies", m.droppedAdjacencies},
+                  {"acd", graphSummary(m.acd, m.acdContracted)},
+                  {"acd_components", graphSummary(m.components_, m.componentsContracted)}};
     if (!m.summary.empty()) entry["deformation"] = m.summary;
     if (i > 0) entry["mesh_file"] = m.source.find(':') != std::string::npos ? base.string() + ".off" : m.source;
     if (!noMcf) {
@@ -99,6 +104,12 @@ int writeRunFiles(const RunParameters& p, const std::vector<Model>& models, bool
     if (i > 0) {
       entry["acd"]["D"] = toJson(m.d);
       entry["acd"]["D2"] = toJson(m.d2);
+      if (m.sharesVertices) {
+        entry["acd"]["correspondence_D"] = m.correspondenceD;
+        entry["acd"]["correspondence_D2"] = m.correspondenceD2;
+      }
+      entry["acd_components"]["D"] = toJson(m.componentsD);
+      entry["acd_components"]["D2"] = toJson(m.componentsD2);
       if (m.mcfOk && original.mcfOk) {
         entry["mcf"]["D"] = toJson(m.mcfD);
         entry["mcf"]["D2"] = toJson(m.mcfD2);
@@ -118,22 +129,27 @@ int writeRunFiles(const RunParameters& p, const std::vector<Model>& models, bool
 
 void printTable(const std::vector<Model>& models) {
   const Model& original = models[0];
-    std::printf("%-12s %5s %9s %9s %14s %14s %9s %9s %14s %14s\n", "model", "comp", "ACD nodes", "ACD n(D2)", "ACD D",
-              "ACD D2", "MCF nodes", "MCF n(D2)", "MCF D", "MCF D2");
+  std::printf("%-12s %5s %5s %9s %9s %14s %14s %9s %9s %9s %14s %14s\n", "model", "comp", "parts", "ACD nodes",
+              "ACD n(D2)", "ACD D", "ACD D2", "by verts", "MCF nodes", "MCF n(D2)", "MCF D", "MCF D2");
   for (std::size_t i = 0; i < models.size(); ++i) {
     const Model& m = models[i];
     const bool mcf = m.mcfOk && original.mcfOk;
-    std::printf("%-12s %5d %9d %9d %14s %14s %9s %9s %14s %14s\n", m.name.c_str(), m.components, m.acd.nodeCount(),
-                m.acdContracted.nodeCount(), i ? distanceCell(m.d).c_str() : "-", i ? distanceCell(m.d2).c_str() : "-",
+    const std::string byVertices =
+        i && m.sharesVertices ? std::to_string(m.correspondenceD) + "/" + std::to_string(m.correspondenceD2) : "-";
+    std::printf("%-12s %5d %5d %9d %9d %14s %14s %9s %9s %9s %14s %14s\n", m.name.c_str(), m.components, m.parts,
+                m.acd.nodeCount(), m.acdContracted.nodeCount(), i ? distanceCell(m.d).c_str() : "-",
+                i ? distanceCell(m.d2).c_str() : "-", byVertices.c_str(),
                 m.mcfOk ? std::to_string(m.mcf.nodeCount()).c_str() : "-",
                 m.mcfOk ? std::to_string(m.mcfContracted.nodeCount()).c_str() : "-",
                 i && mcf ? distanceCell(m.mcfD).c_str() : "-", i && mcf ? distanceCell(m.mcfD2).c_str() : "-");
   }
   if (original.hasSecond)
-    std::printf("%-12s %5s %9s %9s %14s %14s %9d %9s %14s %14s\n", "orig. run 2", "", "", "", "", "",
+    std::printf("%-12s %5s %5s %9s %9s %14s %14s %9s %9d %9s %14s %14s\n", "orig. run 2", "", "", "", "", "", "", "",
                 original.mcfSecond.nodeCount(), "", distanceCell(original.runD).c_str(),
                 distanceCell(original.runD2).c_str());
-  std::printf("D: graph edit distance to the original's skeleton (unit costs); D2: degree-2 nodes contracted.\n"
+  std::printf("ACD: the skeleton of parts (components merged across cuts through tubes). D: graph edit distance to\n"
+              "the original's skeleton (unit costs); D2: degree-2 nodes contracted; by verts: D/D2 of the edit path\n"
+              "that matches parts by the mesh vertices they share (deformations keep them).\n"
               "A value with [>=L] is the bipartite upper bound with lower bound L; others are exact.\n");
 }
 

@@ -1,8 +1,10 @@
 #include "skeleton_run.hpp"
 
 #include "acd_skeleton.hpp"
+#include "correspondence.hpp"
 #include "deform.hpp"
 #include "mcf_skeleton.hpp"
+#include "parts.hpp"
 
 #include <appcli/exit_codes.hpp>
 
@@ -86,9 +88,16 @@ int loadModels(const RunParameters& p, std::vector<Model>& models) {
   }
   // Check every spec before the slow work starts.
   for (const std::string& spec : p.deformSpecs) {
-    const std::string kind = spec.substr(0, spec.find(':'));
-    if (kind != "bend" && kind != "ids" && kind != "affine")
-      return fail(kBadParameter, "--deform: unknown deformation '" + kind + "' (expected bend, ids or affine)");
+    std::size_t begin = 0;
+    for (;;) {  // every step of a sequence
+      const std::size_t end = spec.find(';', begin);
+      const std::string step = spec.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+      const std::string kind = step.substr(0, step.find(':'));
+      if (kind != "bend" && kind != "twist" && kind != "ids" && kind != "affine")
+        return fail(kBadParameter, "--deform: unknown deformation '" + kind + "' (expected bend, twist, ids or affine)");
+      if (end == std::string::npos) break;
+      begin = end + 1;
+    }
   }
   return kOk;
 }
@@ -140,14 +149,25 @@ int decomposeModels(const RunParameters& p, std::vector<Model>& models) {
     const acd::Decomposition d = acd::decompose(m.mesh, options);
     if (!d.status.ok()) return fail(exitFor(d.status), m.source + ": " + d.status.message);
     m.decomposeSeconds = d.times.total;
-    std::vector<acd::TriMesh> parts;
+    std::vector<acd::TriMesh> pieces, hulls;
     for (const acd::Component& c : d.components) {
-      parts.push_back(c.mesh);
+      pieces.push_back(c.mesh);
+      hulls.push_back(c.hull);
       m.unresolved += c.unresolved;
     }
-    m.components = static_cast<int>(parts.size());
-    m.acd = skeletonFromComponents(parts);
+    m.components = static_cast<int>(pieces.size());
+    m.components_ = skeletonFromComponents(pieces);
+    m.componentsContracted = contractDegreeTwo(m.components_);
+    m.genus = genusOf(m.mesh);
+    const Parts parts = groupIntoParts(pieces, m.genus);
+    m.parts = static_cast<int>(parts.members.size());
+    m.partMerges = parts.merges;
+    m.droppedAdjacencies = parts.droppedAdjacencies;
+    m.acd = skeletonFromParts(parts);
     m.acdContracted = contractDegreeTwo(m.acd);
+    m.vertexPart = componentOfVertices(m.mesh, pieces, hulls);
+    for (int& v : m.vertexPart)
+      if (v >= 0) v = parts.partOf[v];
     if (!noMcf) {
       for (int run = 0; run < mcfRuns; ++run) {
         progress(m.name + ": CGAL skeleton, run " + std::to_string(run + 1));
@@ -190,6 +210,15 @@ void compareSkeletons(const RunParameters& p, std::vector<Model>& models) {
     progress(m.name + ": graph edit distances");
     m.d = graphEditDistance(m.acd, original.acd, ged);
     m.d2 = graphEditDistance(m.acdContracted, original.acdContracted, ged);
+    m.componentsD = graphEditDistance(m.components_, original.components_, ged);
+    m.componentsD2 = graphEditDistance(m.componentsContracted, original.componentsContracted, ged);
+    m.sharesVertices = m.mesh.vertices.size() == original.mesh.vertices.size() && m.mesh.faces == original.mesh.faces;
+    if (m.sharesVertices) {
+      const std::vector<int> map = correspondenceMap(m.acd, m.vertexPart, original.acd, original.vertexPart);
+      m.correspondenceD = editPathCost(m.acd, original.acd, map);
+      const Contraction ca = contractWithChains(m.acd), cb = contractWithChains(original.acd);
+      m.correspondenceD2 = editPathCost(ca.graph, cb.graph, contractedMap(ca, cb, map, original.acd.nodeCount()));
+    }
     if (m.mcfOk && original.mcfOk) {
       m.mcfD = graphEditDistance(m.mcf, original.mcf, ged);
       m.mcfD2 = graphEditDistance(m.mcfContracted, original.mcfContracted, ged);

@@ -36,13 +36,18 @@ struct Model {
   std::string source;  // the file, or the deformation spec
   std::string summary; // what the deformation did
   acd::TriMesh mesh;
-  Graph acd, acdContracted, mcf, mcfContracted;
-  int components = 0, unresolved = 0;
+  Graph acd, acdContracted, mcf, mcfContracted;  // acd: the skeleton of parts (parts.hpp)
+  Graph components_, componentsContracted;       // the skeleton of the components themselves
+  int components = 0, unresolved = 0, parts = 0, genus = 0, partMerges = 0, droppedAdjacencies = 0;
+  std::vector<int> vertexPart;  // per mesh vertex, the part whose hulls it lies in
   bool mcfOk = false;
   std::string mcfError;
   std::vector<int> mcfRunNodes;  // node counts of repeated MCF runs
   double decomposeSeconds = 0, mcfSeconds = 0;
   GedResult d, d2, mcfD, mcfD2;
+  GedResult componentsD, componentsD2;  // of the component skeletons
+  bool sharesVertices = false;          // same vertices and faces as the original: matched by them too
+  int correspondenceD = 0, correspondenceD2 = 0;  // cost of the vertex-correspondence edit path
   Graph mcfSecond;               // second CGAL run of the same mesh, for the run-to-run distance
   bool hasSecond = false;
   GedResult runD, runD2;         // CGAL skeleton, run 1 against run 2 of the same mesh

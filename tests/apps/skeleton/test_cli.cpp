@@ -77,7 +77,7 @@ TEST(SkeletonCli, BadInputGivesAClearErrorAndExitCode) {
       {acdtest::quote(openPath) + out, 2, "broken.off"},
       {acdtest::quote(model) + " --deformed " + acdtest::quote(openPath) + out, 2, "broken.off"},
       {acdtest::quote(model) + " --tau -1" + out, 3, "--tau"},
-      {acdtest::quote(model) + " --deform twist:3" + out, 3, "unknown deformation 'twist'"},
+      {acdtest::quote(model) + " --deform shear:3" + out, 3, "unknown deformation 'shear'"},
       {acdtest::quote(model) + " --deform bend:+x:z:nope" + out, 3, "not a number"},
       {acdtest::quote(model) + " --mcf-runs 0" + out, 3, "--mcf-runs"},
       {acdtest::quote(model) + " --no-such-option" + out, 1, "no-such-option"},

@@ -79,6 +79,40 @@ TEST(Deform, BendMovesTheHandleRigidlyAndKeepsTheRestFixed) {
   EXPECT_NEAR(acd::signedVolume(r.mesh), acd::signedVolume(mesh), 0.1 * acd::signedVolume(mesh));
 }
 
+TEST(Deform, TwistTurnsTheHandleAboutTheLimbsOwnAxis) {
+  const acd::TriMesh mesh = rod();
+  const DeformResult r = applyDeformation(mesh, "twist:+z:90:0.08:0.3");
+  ASSERT_TRUE(r.ok) << r.error;
+  ASSERT_EQ(r.mesh.vertices.size(), mesh.vertices.size());
+  // The rod's axis is z and the pivot lies on it, so the twist's axis is z: every handle vertex
+  // keeps its height and its distance from the axis, and turns by 90 degrees about it.
+  const ArapRequest request = bendRequest(mesh, Vec3::UnitZ(), Vec3::UnitX(), 90.0, 0.08, 0.3);
+  int turned = 0;
+  for (int v : request.handle) {
+    const Vec3 &a = mesh.vertices[v], &b = r.mesh.vertices[v];
+    EXPECT_NEAR(a.z(), b.z(), 1e-3);
+    EXPECT_NEAR(Vec3(a.x(), a.y(), 0).norm(), Vec3(b.x(), b.y(), 0).norm(), 1e-3);
+    if (Vec3(a.x(), a.y(), 0).norm() > 0.1) {
+      EXPECT_NEAR(a.x() * b.x() + a.y() * b.y(), 0.0, 1e-3);  // a quarter turn
+      ++turned;
+    }
+  }
+  EXPECT_GT(turned, 0);
+  // Nothing bends: the bounding box stays (the rod is round).
+  EXPECT_LT((acd::boundingBox(r.mesh).size() - acd::boundingBox(mesh).size()).norm(), 0.05);
+}
+
+TEST(Deform, ASequenceAppliesEachStepToTheLastResult) {
+  const acd::TriMesh mesh = rod();
+  const DeformResult both = applyDeformation(mesh, "affine:0,0,0:2,1,1;affine:0,0,0:1,3,1");
+  ASSERT_TRUE(both.ok) << both.error;
+  EXPECT_NEAR(acd::signedVolume(both.mesh), 6 * acd::signedVolume(mesh), 1e-9);
+  EXPECT_NE(both.summary.find("; then "), std::string::npos);
+  const DeformResult bent = applyDeformation(mesh, "bend:+z:x:20:0.2:0.45;bend:+z:x:20");
+  ASSERT_TRUE(bent.ok) << bent.error;
+  EXPECT_EQ(bent.mesh.faces, mesh.faces);
+}
+
 TEST(Deform, GivenVertexIds) {
   const acd::TriMesh mesh = rod();
   const std::string path = testing::TempDir() + "skeleton_ids_" + std::to_string(::getpid()) + ".json";
@@ -101,7 +135,10 @@ TEST(Deform, BadSpecsAreNamed) {
     const char* spec;
     const char* words;
   } cases[] = {
-      {"twist:1", "unknown deformation 'twist'"},
+      {"shear:1", "unknown deformation 'shear'"},
+      {"twist:+x", "twist needs"},
+      {"twist:+q:30", "twist direction"},
+      {"bend:+x:z:30;shear:2", "unknown deformation 'shear'"},
       {"bend:+w:x:30", "bend direction"},
       {"bend:+x:q:30", "bend axis"},
       {"bend:+x:z:abc", "not a number"},

@@ -42,11 +42,11 @@ TEST(SkeletonRun, AnUnknownDeformationIsRefusedBeforeTheWork) {
   RunParameters p;
   p.modelPath = dir / "l.off";
   ASSERT_TRUE(acd::writeMesh(p.modelPath, acd::shapes::lShape()).ok());
-  p.deformSpecs = {"twist:1"};
+  p.deformSpecs = {"bend:+x:z:30;shear:1"};
   std::vector<Model> models;
   testing::internal::CaptureStderr();
   EXPECT_EQ(loadModels(p, models), appcli::kBadParameter);
-  EXPECT_NE(testing::internal::GetCapturedStderr().find("unknown deformation 'twist'"), std::string::npos);
+  EXPECT_NE(testing::internal::GetCapturedStderr().find("unknown deformation 'shear'"), std::string::npos);
   p.modelPath = dir / "missing.off";
   testing::internal::CaptureStderr();
   EXPECT_EQ(loadModels(p, models), appcli::kBadInput);

@@ -1,0 +1,211 @@
+#include "parts.hpp"
+
+#include <acd/algo/union_find.hpp>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+#include <tuple>
+
+#include "acd_skeleton.hpp"
+
+namespace skeleton {
+
+namespace {
+
+/// Cuts between two parts, summed: area, area-weighted centre, area-weighted normal out of the
+/// first of the pair.
+struct Contact {
+  double area = 0.0;
+  Vec3 moment = Vec3::Zero(), normal = Vec3::Zero();
+};
+
+/// Extent of the components `members` along `n`.
+double extentAlong(const std::vector<acd::TriMesh>& components, const std::vector<int>& members, const Vec3& n) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (int c : members)
+    for (const Vec3& v : components[c].vertices) {
+      const double t = n.dot(v);
+      lo = std::min(lo, t);
+      hi = std::max(hi, t);
+    }
+  return hi > lo ? hi - lo : 0.0;
+}
+
+}  // namespace
+
+Parts groupIntoParts(const std::vector<acd::TriMesh>& components, int genus, double tubeRatio) {
+  const int n = static_cast<int>(components.size());
+  std::vector<double> volume(n);
+  std::vector<Vec3> centroid(n);
+  for (int i = 0; i < n; ++i) {
+    volume[i] = std::abs(acd::signedVolume(components[i]));
+    centroid[i] = solidCentroid(components[i]);
+  }
+  const std::vector<Cut> cuts = findCuts(components);
+
+  // Merge, most tube-like cut first, while one is tube-like enough. Parts are named by their
+  // lowest component; ties go to the lower pair of names (components come in canonical order).
+  acd::UnionFind sets(n);
+  std::vector<std::vector<int>> members(n);
+  std::vector<double> partVolume = volume;
+  for (int i = 0; i < n; ++i) members[i] = {i};
+  int merges = 0;
+  const auto contacts = [&]() {
+    std::map<std::pair<int, int>, Contact> between;
+    for (const Cut& c : cuts) {
+      const int pa = sets.find(c.a), pb = sets.find(c.b);
+      if (pa == pb) continue;
+      const std::pair<int, int> key = std::minmax(pa, pb);
+      Contact& k = between[key];
+      k.area += c.area;
+      k.moment += c.area * c.centre;
+      k.normal += (pa == key.first ? 1.0 : -1.0) * c.area * c.normal;  // out of key.first, c.normal out of c.a
+    }
+    return between;
+  };
+  const auto join = [&](int a, int b) {
+    const int keep = sets.find(a), gone = sets.find(b);
+    sets.join(keep, gone);
+    const int root = sets.find(keep), other = root == keep ? gone : keep;
+    members[root].insert(members[root].end(), members[other].begin(), members[other].end());
+    std::sort(members[root].begin(), members[root].end());
+    members[other].clear();
+    partVolume[root] += partVolume[other];
+    ++merges;
+  };
+  for (;;) {
+    double best = -1.0;
+    std::pair<int, int> bestPair{-1, -1}, bestKey{n, n};
+    for (const auto& [pair, k] : contacts()) {
+      if (!(k.area > 0) || !(k.normal.norm() > 0)) continue;
+      const Vec3 axis = k.normal.normalized();
+      double widest = 0.0;
+      for (int p : {pair.first, pair.second}) {
+        const double extent = extentAlong(components, members[p], axis);
+        if (extent > 0) widest = std::max(widest, partVolume[p] / extent);
+      }
+      if (!(widest > 0)) continue;
+      const double ratio = k.area / widest;
+      const std::pair<int, int> key = std::minmax(members[pair.first][0], members[pair.second][0]);
+      if (ratio > best || (ratio == best && key < bestKey)) best = ratio, bestPair = pair, bestKey = key;
+    }
+    if (best < tubeRatio) break;
+    join(bestPair.first, bestPair.second);
+  }
+  // Stubs: a part that is no longer along its largest contact's normal than the contact is wide,
+  // and smaller than the part on the other side, is a wedge filling the crease where two parts
+  // meet or a bump on one; it goes into the part it shares that contact with, the flattest first.
+  for (;;) {
+    double flattest = kStubElongation;
+    std::pair<int, int> bestPair{-1, -1}, bestKey{n, n};
+    std::map<int, std::pair<double, std::pair<int, int>>> largest;  // part -> (area, contact)
+    const auto between = contacts();
+    for (const auto& [pair, k] : between)
+      for (int p : {pair.first, pair.second}) {
+        auto& l = largest[p];
+        if (k.area > l.first) l = {k.area, pair};
+      }
+    for (const auto& [p, l] : largest) {
+      const Contact& k = between.at(l.second);
+      if (!(k.area > 0) || !(k.normal.norm() > 0)) continue;
+      const double extent = extentAlong(components, members[p], k.normal.normalized());
+      const int other = l.second.first == p ? l.second.second : l.second.first;
+      if (!(extent > 0) || !(partVolume[p] < partVolume[other])) continue;
+      const double elongation = extent / std::sqrt(k.area);
+      const std::pair<int, int> key = std::minmax(members[l.second.first][0], members[l.second.second][0]);
+      if (elongation < flattest || (elongation == flattest && key < bestKey))
+        flattest = elongation, bestPair = l.second, bestKey = key;
+    }
+    if (bestPair.first < 0) break;
+    join(bestPair.first, bestPair.second);
+  }
+
+  Parts parts;
+  parts.merges = merges;
+  parts.partOf.assign(n, -1);
+  std::vector<int> partOfRoot(n, -1);
+  for (int i = 0; i < n; ++i) {  // parts in the order of their first component
+    const int root = sets.find(i);
+    if (partOfRoot[root] < 0) {
+      partOfRoot[root] = static_cast<int>(parts.members.size());
+      parts.members.push_back(members[root]);
+      double v = 0.0;
+      Vec3 moment = Vec3::Zero();
+      for (int c : members[root]) v += volume[c], moment += volume[c] * centroid[c];
+      parts.volume.push_back(v);
+      parts.centroid.push_back(v > 0 ? Vec3(moment / v) : centroid[i]);
+    }
+    parts.partOf[i] = partOfRoot[root];
+  }
+
+  // Adjacencies between parts, largest shared area first (ties: lower pair of parts).
+  std::map<std::pair<int, int>, Contact> between;
+  for (const Cut& c : cuts) {
+    const int pa = parts.partOf[c.a], pb = parts.partOf[c.b];
+    if (pa == pb) continue;
+    Contact& k = between[std::minmax(pa, pb)];
+    k.area += c.area;
+    k.moment += c.area * c.centre;
+  }
+  std::vector<Joint> adjacent;
+  for (const auto& [pair, k] : between)
+    adjacent.push_back({pair.first, pair.second, k.area, k.area > 0 ? Vec3(k.moment / k.area) : Vec3::Zero()});
+  std::stable_sort(adjacent.begin(), adjacent.end(), [](const Joint& x, const Joint& y) { return x.area > y.area; });
+  // Maximum spanning forest, then as many closing adjacencies as the solid has handles.
+  acd::UnionFind forest(static_cast<int>(parts.members.size()));
+  std::vector<char> taken(adjacent.size(), 0);
+  for (std::size_t j = 0; j < adjacent.size(); ++j) {
+    const int ra = forest.find(adjacent[j].a), rb = forest.find(adjacent[j].b);
+    if (ra != rb) forest.join(ra, rb), taken[j] = 1;
+  }
+  int cycles = 0;
+  for (std::size_t j = 0; j < adjacent.size(); ++j)
+    if (!taken[j] && cycles < genus) taken[j] = 1, ++cycles;
+  for (std::size_t j = 0; j < adjacent.size(); ++j)
+    if (taken[j])
+      parts.joints.push_back(adjacent[j]);
+    else
+      ++parts.droppedAdjacencies;
+  std::sort(parts.joints.begin(), parts.joints.end(),
+            [](const Joint& x, const Joint& y) { return std::tie(x.a, x.b) < std::tie(y.a, y.b); });
+  return parts;
+}
+
+Graph skeletonFromParts(const Parts& parts) {
+  Graph g;
+  for (int p = 0; p < static_cast<int>(parts.members.size()); ++p) g.addNode(parts.centroid[p], NodeKind::Component, p);
+  for (const Joint& j : parts.joints) {
+    const int node = g.addNode(j.centre, NodeKind::Cut);
+    g.addEdge(j.a, node);
+    g.addEdge(j.b, node);
+  }
+  return g;
+}
+
+int genusOf(const acd::TriMesh& mesh) {
+  const int nv = static_cast<int>(mesh.vertices.size());
+  acd::UnionFind shells(nv);
+  std::set<std::pair<int, int>> edges;
+  for (const acd::Face& f : mesh.faces)
+    for (int k = 0; k < 3; ++k) {
+      edges.insert(std::minmax(f[k], f[(k + 1) % 3]));
+      shells.join(shells.find(f[k]), shells.find(f[(k + 1) % 3]));
+    }
+  // Euler characteristic per shell: V - E + F over the vertices the faces use.
+  std::map<int, long long> chi;
+  std::vector<char> used(nv, 0);
+  for (const acd::Face& f : mesh.faces) {
+    ++chi[shells.find(f[0])];
+    for (int v : f) used[v] = 1;
+  }
+  for (int v = 0; v < nv; ++v)
+    if (used[v]) ++chi[shells.find(v)];
+  for (const auto& [a, b] : edges) --chi[shells.find(a)];
+  int genus = 0;
+  for (const auto& [root, x] : chi) genus += static_cast<int>(std::max(0LL, (2 - x) / 2));
+  return genus;
+}
+
+}  // namespace skeleton

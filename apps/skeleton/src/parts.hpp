@@ -1,0 +1,70 @@
+// Parts of a shape from its convex components: the level of the decomposition a skeleton is made
+// from, so that the skeleton stays put when the shape bends (paper, Section 7, Figure 21).
+//
+// A cut across the middle of a tube (a limb cut where it bends, a trunk cut in two, a rounded tip
+// cut off) has about the area of the mean cross-section of the pieces on both sides; a cut where a
+// limb meets the body, or through a neck, is small against the mean section of the wider side.
+// Bending a limb makes and moves cuts of the first kind; cuts of the second kind stay where the
+// shape narrows. So neighbouring components are merged across every cut of the first kind, the
+// most tube-like first, and a part is a limb, a trunk, a head.
+//
+//   section ratio = shared area / max(mean section of either side along the cut's normal),
+//   mean section  = volume / extent along that normal;  merged while the ratio >= kTubeRatio.
+//
+// Then the stubs (kStubElongation): wedges where two parts meet and bumps, which come and go with
+// small changes of the surface, go into the neighbour they share most with.
+//
+// The graph of parts keeps as many independent cycles as the solid has handles (its genus), as a
+// curve skeleton does: a maximum spanning forest by shared area, then the genus's worth of the
+// other adjacencies, largest first. Three parts that meet along one old cut would otherwise make a
+// triangle the shape does not have.
+#pragma once
+
+#include <acd/mesh.hpp>
+#include <vector>
+
+#include "graph.hpp"
+
+namespace skeleton {
+
+/// A cut across a tube has ratio about 1 (a cylinder cut square: exactly 1; a hemispherical tip:
+/// 1.5); a limb of half the body's width meeting the body about 0.25 or less. Half way between,
+/// on the ratio's log scale.
+constexpr double kTubeRatio = 0.5;
+
+/// A limb is longer than it is wide: a part no longer along its largest contact's normal than the
+/// square root of the contact's area (a hemispherical cap: 1/sqrt(pi) = 0.56; a limb twice as long
+/// as wide: 1.1 or more), and smaller than the part on the other side, is a stub: a wedge in the
+/// crease where two parts meet, or a bump. It goes into that neighbour.
+constexpr double kStubElongation = 1.0;
+
+struct Joint {
+  int a = -1, b = -1;          // the two parts, a < b
+  double area = 0.0;           // of all cut patches between them
+  Vec3 centre = Vec3::Zero();  // area-weighted centre of those patches
+};
+
+struct Parts {
+  std::vector<int> partOf;                // component -> part
+  std::vector<std::vector<int>> members;  // part -> its components, ascending; parts ordered by first member
+  std::vector<double> volume;             // per part
+  std::vector<Vec3> centroid;             // per part: of the solid it bounds
+  std::vector<Joint> joints;              // the adjacencies the skeleton keeps
+  int merges = 0;                         // cuts merged across
+  int droppedAdjacencies = 0;             // left out to keep the cycle count at the genus
+};
+
+/// Groups closed, outward components (pieces of one decomposition) into parts (above).
+/// `genus` = handles of the solid they make up (genusOf). Depends only on the components' shapes
+/// and order: an invariant decomposition gives the same parts in every pose.
+Parts groupIntoParts(const std::vector<acd::TriMesh>& components, int genus, double tubeRatio = kTubeRatio);
+
+/// A Component node per part (at its centroid; `source` = part index), then a Cut node per joint
+/// joined to its two parts.
+Graph skeletonFromParts(const Parts& parts);
+
+/// Handles of the solid a closed mesh bounds: the sum over its connected shells of (2 - Euler
+/// characteristic) / 2.
+int genusOf(const acd::TriMesh& closedMesh);
+
+}  // namespace skeleton
