@@ -3,22 +3,21 @@
 //
 //   skeleton MODEL [--tau 0.1] [--deformed MODEL2 ...] [--deform SPEC ...] [-o OUT]
 //
-// For the model and every deformed version: the ACD skeleton (a node per component, a node per
-// cut, edges component-cut) and CGAL's mean-curvature-flow skeleton; for every deformed
+// For the model and every deformed version: the ACD skeleton (a node per part — components
+// grouped into limbs, trunk, head — a node per cut between parts, edges part-cut), the skeleton
+// of the components themselves, and CGAL's mean-curvature-flow skeleton; for every deformed
 // version: D = graph edit distance to the original's skeleton, and D2 = the same with degree-2
 // nodes contracted. Exit codes are listed in --help.
 //
 // main.cpp is the command line; the steps are in src/skeleton_run.hpp, the files and the table
 // in src/run_report.hpp.
-#include "run_report.hpp"
-#include "skeleton_run.hpp"
-
-#include <appcli/exit_codes.hpp>
-
 #include <CLI/CLI.hpp>
-
+#include <appcli/exit_codes.hpp>
 #include <string>
 #include <vector>
+
+#include "run_report.hpp"
+#include "skeleton_run.hpp"
 
 using namespace skeleton;
 
@@ -33,18 +32,21 @@ const char* exitCodes() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Skeletons from approximate convex decomposition components, and graph edit distance under "
-               "deformation (Lien & Amato 2007, Section 7)."};
+  CLI::App app{
+      "Skeletons from approximate convex decomposition components, and graph edit distance under "
+      "deformation (Lien & Amato 2007, Section 7)."};
   app.footer(exitCodes());
   RunParameters p;
   app.add_option("model", p.modelPath, "closed mesh (.off, .obj, .ply, .stl)")->required();
   app.add_option("-t,--tau", p.tau, "concavity tolerance of the decomposition (normalised units)");
   app.add_option("--deformed", p.deformedPaths, "deformed versions of the model (files)");
   app.add_option("--deform", p.deformSpecs,
-                 "deformations to make: bend:DIR:AXIS:DEG[:HANDLE[:REGION]], ids:FILE.json, "
-                 "affine:RX,RY,RZ:SX,SY,SZ[:TX,TY,TZ] (see docs/SKELETON.md)");
+                 "deformations to make: bend:DIR:AXIS:DEG[:HANDLE[:REGION]], twist:DIR:DEG[:HANDLE[:REGION]], "
+                 "ids:FILE.json, affine:RX,RY,RZ:SX,SY,SZ[:TX,TY,TZ], or steps joined by ';' (see docs/SKELETON.md)");
   app.add_option("-o,--out", p.outDir, "output folder, created if missing");
-  app.add_option("--exact-max-nodes", p.exactMaxNodes, "exact graph edit distance when both graphs have at most this many nodes; bipartite approximation above");
+  app.add_option(
+      "--exact-max-nodes", p.exactMaxNodes,
+      "exact graph edit distance when both graphs have at most this many nodes; bipartite approximation above");
   app.add_option("--max-expansions", p.maxExpansions, "search budget of the exact graph edit distance");
   app.add_option("--mcf-runs", p.mcfRuns, "run CGAL's skeletonization this many times per model (node counts vary)");
   app.add_option("--tubes", p.tubeRadius,

@@ -1,17 +1,14 @@
 #include "run_report.hpp"
 
-#include "skeleton_io.hpp"
-
-#include <appcli/exit_codes.hpp>
-
 #include <acd/io.hpp>
-
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
+#include <appcli/exit_codes.hpp>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "skeleton_io.hpp"
 
 namespace skeleton {
 
@@ -25,8 +22,10 @@ namespace {
 int fail(int code, const std::string& message) { return kConsole.fail(code, message); }
 
 json graphSummary(const Graph& g, const Graph& contracted) {
-  return {{"nodes", g.nodeCount()},           {"edges", g.edgeCount()},
-          {"nodes_d2", contracted.nodeCount()}, {"edges_d2", contracted.edgeCount()},
+  return {{"nodes", g.nodeCount()},
+          {"edges", g.edgeCount()},
+          {"nodes_d2", contracted.nodeCount()},
+          {"edges_d2", contracted.edgeCount()},
           {"connected_components", connectedComponents(g)}};
 }
 
@@ -63,7 +62,13 @@ int writeRunFiles(const RunParameters& p, const std::vector<Model>& models, bool
     if (m.mcfOk) files.push_back({".mcf_skeleton", &m.mcf});
     for (const auto& [suffix, graph] : files) {
       std::ofstream js(base.string() + suffix + ".json");
-      js << toJson(*graph).dump(1) << '\n';
+      json j = toJson(*graph);
+      if (graph == &m.acd) {  // which components make each part, which part each mesh vertex is in
+        j["part_components"] = m.partMembers;
+        j["vertex_parts"] = m.vertexPart;
+        if (i > 0 && m.sharesVertices) j["original_part"] = m.partMatch;
+      }
+      js << j.dump(1) << '\n';
       if (!js || !writeSkeletonObj(base.string() + suffix + ".obj", *graph))
         return fail(kOutputFailed, base.string() + suffix + ": cannot write the skeleton");
       if (tubeRadius > 0) {
@@ -147,10 +152,11 @@ void printTable(const std::vector<Model>& models) {
     std::printf("%-12s %5s %5s %9s %9s %14s %14s %9s %9d %9s %14s %14s\n", "orig. run 2", "", "", "", "", "", "", "",
                 original.mcfSecond.nodeCount(), "", distanceCell(original.runD).c_str(),
                 distanceCell(original.runD2).c_str());
-  std::printf("ACD: the skeleton of parts (components merged across cuts through tubes). D: graph edit distance to\n"
-              "the original's skeleton (unit costs); D2: degree-2 nodes contracted; by verts: D/D2 of the edit path\n"
-              "that matches parts by the mesh vertices they share (deformations keep them).\n"
-              "A value with [>=L] is the bipartite upper bound with lower bound L; others are exact.\n");
+  std::printf(
+      "ACD: the skeleton of parts (components merged across cuts through tubes). D: graph edit distance to\n"
+      "the original's skeleton (unit costs); D2: degree-2 nodes contracted; by verts: D/D2 of the edit path\n"
+      "that matches parts by the mesh vertices they share (deformations keep them).\n"
+      "A value with [>=L] is the bipartite upper bound with lower bound L; others are exact.\n");
 }
 
 }  // namespace skeleton

@@ -1,20 +1,18 @@
 #include "skeleton_run.hpp"
 
+#include <unistd.h>
+
+#include <acd/decompose.hpp>
+#include <acd/diagnosis.hpp>
+#include <acd/io.hpp>
+#include <appcli/exit_codes.hpp>
+#include <filesystem>
+
 #include "acd_skeleton.hpp"
 #include "correspondence.hpp"
 #include "deform.hpp"
 #include "mcf_skeleton.hpp"
 #include "parts.hpp"
-
-#include <appcli/exit_codes.hpp>
-
-#include <acd/decompose.hpp>
-#include <acd/diagnosis.hpp>
-#include <acd/io.hpp>
-
-#include <unistd.h>
-
-#include <filesystem>
 
 namespace skeleton {
 
@@ -94,7 +92,8 @@ int loadModels(const RunParameters& p, std::vector<Model>& models) {
       const std::string step = spec.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
       const std::string kind = step.substr(0, step.find(':'));
       if (kind != "bend" && kind != "twist" && kind != "ids" && kind != "affine")
-        return fail(kBadParameter, "--deform: unknown deformation '" + kind + "' (expected bend, twist, ids or affine)");
+        return fail(kBadParameter,
+                    "--deform: unknown deformation '" + kind + "' (expected bend, twist, ids or affine)");
       if (end == std::string::npos) break;
       begin = end + 1;
     }
@@ -107,13 +106,19 @@ int makeDeformations(const RunParameters& p, std::vector<Model>& models) {
   std::error_code ec;
   fs::create_directories(outDir, ec);
   if (ec) return fail(kOutputFailed, outDir + ": cannot create the output folder: " + ec.message());
+  {  // the model as prepared: the mesh whose vertices vertex_parts and the deformations refer to
+    const std::string path = (fs::path(outDir) / "original.off").string();
+    const acd::Status w = acd::writeMesh(path, models[0].mesh);
+    if (!w.ok()) return fail(kOutputFailed, path + ": " + w.message);
+  }
 
   for (const std::string& spec : p.deformSpecs) {
     progress("deforming: " + spec);
     DeformResult r = applyDeformation(models[0].mesh, spec);
     if (!r.ok) {
       const bool specError = r.error.find("needs") != std::string::npos || r.error.find("must") != std::string::npos ||
-                             r.error.find("not a number") != std::string::npos || r.error.find("unknown") != std::string::npos;
+                             r.error.find("not a number") != std::string::npos ||
+                             r.error.find("unknown") != std::string::npos;
       return fail(specError ? kBadParameter : kBadInput, "--deform " + spec + ": " + r.error);
     }
     Model m;
@@ -142,7 +147,8 @@ int decomposeModels(const RunParameters& p, std::vector<Model>& models) {
   // One node per component at the centroid of the solid it bounds: a component must be one solid
   // (a merge held to the model may give one hull to touching pieces that do not glue into one).
   options.mergeScope = acd::MergeScope::Component;
-  if (const acd::Status s = acd::validate(acd::resolvedOptions(options)); !s.ok()) return fail(kBadParameter, s.message);
+  if (const acd::Status s = acd::validate(acd::resolvedOptions(options)); !s.ok())
+    return fail(kBadParameter, s.message);
 
   for (Model& m : models) {
     progress(m.name + ": decomposing");
@@ -161,6 +167,7 @@ int decomposeModels(const RunParameters& p, std::vector<Model>& models) {
     m.genus = genusOf(m.mesh);
     const Parts parts = groupIntoParts(pieces, m.genus);
     m.parts = static_cast<int>(parts.members.size());
+    m.partMembers = parts.members;
     m.partMerges = parts.merges;
     m.droppedAdjacencies = parts.droppedAdjacencies;
     m.acd = skeletonFromParts(parts);
@@ -216,6 +223,10 @@ void compareSkeletons(const RunParameters& p, std::vector<Model>& models) {
     if (m.sharesVertices) {
       const std::vector<int> map = correspondenceMap(m.acd, m.vertexPart, original.acd, original.vertexPart);
       m.correspondenceD = editPathCost(m.acd, original.acd, map);
+      m.partMatch.assign(m.parts, -1);
+      for (int node = 0; node < m.acd.nodeCount(); ++node)
+        if (m.acd.nodes[node].kind == NodeKind::Component && map[node] >= 0)
+          m.partMatch[m.acd.nodes[node].source] = original.acd.nodes[map[node]].source;
       const Contraction ca = contractWithChains(m.acd), cb = contractWithChains(original.acd);
       m.correspondenceD2 = editPathCost(ca.graph, cb.graph, contractedMap(ca, cb, map, original.acd.nodeCount()));
     }
@@ -224,7 +235,6 @@ void compareSkeletons(const RunParameters& p, std::vector<Model>& models) {
       m.mcfD2 = graphEditDistance(m.mcfContracted, original.mcfContracted, ged);
     }
   }
-
 }
 
 }  // namespace skeleton

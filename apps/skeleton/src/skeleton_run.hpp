@@ -39,7 +39,9 @@ struct Model {
   Graph acd, acdContracted, mcf, mcfContracted;  // acd: the skeleton of parts (parts.hpp)
   Graph components_, componentsContracted;       // the skeleton of the components themselves
   int components = 0, unresolved = 0, parts = 0, genus = 0, partMerges = 0, droppedAdjacencies = 0;
-  std::vector<int> vertexPart;  // per mesh vertex, the part whose hulls it lies in
+  std::vector<int> vertexPart;                // per mesh vertex, the part it is a corner of
+  std::vector<std::vector<int>> partMembers;  // per part, its components
+  std::vector<int> partMatch;                 // per part, the original's part it is matched to by vertices (-1: none)
   bool mcfOk = false;
   std::string mcfError;
   std::vector<int> mcfRunNodes;  // node counts of repeated MCF runs

@@ -1,17 +1,15 @@
 // Deformations: the affine one on known volumes, the ARAP bend's handle/fixed invariants,
 // spec errors.
-#include "deform.hpp"
-
-#include <acd/io.hpp>
-#include <acd/algo/shapes.hpp>
-
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <acd/algo/shapes.hpp>
+#include <acd/io.hpp>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 
-#include <unistd.h>
+#include "deform.hpp"
 
 using namespace skeleton;
 
@@ -19,8 +17,8 @@ namespace {
 
 /// A capsule-like rod along z (radius 0.3, length 4) with a fine enough mesh to bend.
 acd::TriMesh rod() {
-  return acd::shapes::revolve([](double z) { return 0.3 * std::sqrt(std::max(0.0, 1.0 - std::pow(z / 2.0, 16))) + 1e-3; },
-                              -2.0, 2.0, 80, 16);
+  return acd::shapes::revolve(
+      [](double z) { return 0.3 * std::sqrt(std::max(0.0, 1.0 - std::pow(z / 2.0, 16))) + 1e-3; }, -2.0, 2.0, 80, 16);
 }
 
 }  // namespace
