@@ -7,11 +7,12 @@
 //
 // Point-in-model test: acd::InsideTest (inside.hpp).
 //
-// Hulls: the convex hull of each input hull's vertices (so any input orientation or
-// non-convexity is harmless), as half-spaces n.x <= d for the volume test, as triangles
+// Hulls: the convex hull of each input hull's vertices (acd/algo/hull.hpp, the decomposition's own
+// builder; so any input orientation or non-convexity is harmless), as half-spaces n.x <= d for the volume test, as triangles
 // (a canonical fan per planar facet) for surface sampling and exact point-to-hull distances.
 #include <acd/algo/closest_point.hpp>
 #include <acd/algo/cut_choice.hpp>
+#include <acd/algo/hull.hpp>
 #include <acd/algo/hull_excess.hpp>
 #include <acd/algo/hull_set.hpp>
 #include <acd/algo/parallel.hpp>
@@ -19,11 +20,10 @@
 #include <acd/evaluate.hpp>
 #include <acd/algo/inside.hpp>
 #include <acd/algo/normalize.hpp>
+#include <acd/algo/quickhull.hpp>
 #include <acd/algo/random.hpp>
+#include <acd/algo/union_find.hpp>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
-#include <CGAL/convex_hull_3.h>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -33,15 +33,13 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <string>
 #include <unordered_map>
 
 namespace acd {
 namespace {
-
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using P3 = K::Point_3;
 
 // Slack of the half-space test, in normalised units: inside a hull iff n.x <= d + kHullSlack.
 constexpr double kHullSlack = 1e-10;
@@ -68,25 +66,10 @@ struct Hull {
 /// Convex hull of the points as half-spaces and triangles; false for fewer than 4 non-coplanar points.
 /// The output does not depend on the order of the points nor on the hull algorithm's internal order.
 bool buildHull(const std::vector<Vec3>& points, Hull& hull) {
-  std::vector<P3> pts;
-  pts.reserve(points.size());
-  for (const Vec3& p : points) pts.emplace_back(p.x(), p.y(), p.z());
-  // Exact full-dimensionality check.
-  std::size_t i1 = 0, i2 = 0, i3 = 0;
-  while (i1 < pts.size() && pts[i1] == pts[0]) ++i1;
-  if (i1 == pts.size()) return false;
-  while (i2 < pts.size() && CGAL::collinear(pts[0], pts[i1], pts[i2])) ++i2;
-  if (i2 == pts.size()) return false;
-  while (i3 < pts.size() && CGAL::coplanar(pts[0], pts[i1], pts[i2], pts[i3])) ++i3;
-  if (i3 == pts.size()) return false;
-
-  CGAL::Surface_mesh<P3> sm;
-  CGAL::convex_hull_3(pts.begin(), pts.end(), sm);
-  std::vector<Vec3> used;
-  for (auto v : sm.vertices()) {
-    const P3& p = sm.point(v);
-    used.emplace_back(p.x(), p.y(), p.z());
-  }
+  const ConvexHull ch = convexHull(points);  // exact predicates; corners only
+  if (ch.degenerate || ch.mesh.faces.empty()) return false;
+  const TriMesh& m = ch.mesh;
+  std::vector<Vec3> used = m.vertices;
   std::sort(used.begin(), used.end(), lexLess);
   hull.lo = hull.hi = used.front();
   Vec3 centroid = Vec3::Zero();
@@ -96,28 +79,27 @@ bool buildHull(const std::vector<Vec3>& points, Hull& hull) {
     centroid += p;
   }
   centroid /= static_cast<double>(used.size());
-  // Facets: faces joined across edges where they are exactly coplanar, so that the result does not
-  // depend on how the hull algorithm happened to triangulate a planar facet.
-  const auto nf = static_cast<int>(sm.number_of_faces());
-  std::vector<int> group(nf);
-  std::iota(group.begin(), group.end(), 0);
-  auto root = [&](int x) {
-    while (group[x] != x) x = group[x] = group[group[x]];
-    return x;
-  };
-  for (auto e : sm.edges()) {
-    const auto h = sm.halfedge(e), o = sm.opposite(h);
-    if (sm.is_border(h) || sm.is_border(o)) continue;
-    const P3 &p = sm.point(sm.source(h)), &q = sm.point(sm.target(h));
-    const P3 &r = sm.point(sm.target(sm.next(h))), &t = sm.point(sm.target(sm.next(o)));
-    if (CGAL::coplanar(p, q, r, t)) group[root(static_cast<int>(sm.face(h)))] = root(static_cast<int>(sm.face(o)));
-  }
-  std::vector<std::vector<Vec3>> facets(nf);
-  for (auto f : sm.faces())
-    for (auto v : CGAL::vertices_around_face(sm.halfedge(f), sm)) {
-      const P3& p = sm.point(v);
-      facets[root(static_cast<int>(f))].emplace_back(p.x(), p.y(), p.z());
+  // Facets: triangles joined across edges where they are exactly coplanar, so that the result does
+  // not depend on how the hull was triangulated.
+  const auto nf = static_cast<int>(m.faces.size());
+  UnionFind group(nf);
+  std::map<std::pair<int, int>, int> firstUse;  // undirected edge -> first triangle using it
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = m.faces[f][k], b = m.faces[f][(k + 1) % 3];
+      const auto [it, inserted] = firstUse.emplace(std::minmax(a, b), f);
+      if (inserted) continue;
+      const int g = it->second;
+      int apex = -1;  // the corner of g off this edge
+      for (int v : m.faces[g])
+        if (v != a && v != b) apex = v;
+      const Face& t = m.faces[f];
+      if (apex >= 0 && TriangleSide(m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]).sign(m.vertices[apex]) == 0)
+        group.join(f, g);
     }
+  std::vector<std::vector<Vec3>> facets(nf);
+  for (int f = 0; f < nf; ++f)
+    for (int v : m.faces[f]) facets[group.find(f)].push_back(m.vertices[v]);
   std::vector<std::vector<Vec3>> polygons;
   for (auto& vs : facets) {
     if (vs.size() < 3) continue;
