@@ -33,29 +33,80 @@ double extentAlong(const std::vector<acd::TriMesh>& components, const std::vecto
   return hi > lo ? hi - lo : 0.0;
 }
 
-}  // namespace
+constexpr int kNoName = std::numeric_limits<int>::max();  // after every pair of names
 
-Parts groupIntoParts(const std::vector<acd::TriMesh>& components, int genus, double tubeRatio) {
-  const int n = static_cast<int>(components.size());
-  std::vector<double> volume(n);
-  std::vector<Vec3> centroid(n);
-  for (int i = 0; i < n; ++i) {
-    volume[i] = std::abs(acd::signedVolume(components[i]));
-    centroid[i] = solidCentroid(components[i]);
+/// Components joined into parts step by step. Parts are named by their lowest component; ties go
+/// to the lower pair of names (components come in canonical order).
+class Merger {
+ public:
+  Merger(const std::vector<acd::TriMesh>& components, const std::vector<Cut>& cuts, const std::vector<double>& volume)
+      : components_(components), cuts_(cuts), sets_(static_cast<int>(components.size())), volume_(volume) {
+    for (int i = 0; i < static_cast<int>(components.size()); ++i) members_.push_back({i});
   }
-  const std::vector<Cut> cuts = findCuts(components);
 
-  // Merge, most tube-like cut first, while one is tube-like enough. Parts are named by their
-  // lowest component; ties go to the lower pair of names (components come in canonical order).
-  acd::UnionFind sets(n);
-  std::vector<std::vector<int>> members(n);
-  std::vector<double> partVolume = volume;
-  for (int i = 0; i < n; ++i) members[i] = {i};
-  int merges = 0;
-  const auto contacts = [&]() {
+  /// Merges the most tube-like contact while its section ratio is at least `tubeRatio`.
+  void mergeTubes(double tubeRatio) {
+    for (;;) {
+      double best = -1.0;
+      std::pair<int, int> bestPair{-1, -1}, bestKey{kNoName, kNoName};
+      for (const auto& [pair, k] : contacts()) {
+        if (!(k.area > 0) || !(k.normal.norm() > 0)) continue;
+        const Vec3 axis = k.normal.normalized();
+        double widest = 0.0;
+        for (int p : {pair.first, pair.second}) {
+          const double extent = extentAlong(components_, members_[p], axis);
+          if (extent > 0) widest = std::max(widest, volume_[p] / extent);
+        }
+        if (!(widest > 0)) continue;
+        const double ratio = k.area / widest;
+        const std::pair<int, int> key = nameOf(pair);
+        if (ratio > best || (ratio == best && key < bestKey)) best = ratio, bestPair = pair, bestKey = key;
+      }
+      if (best < tubeRatio) return;
+      join(bestPair.first, bestPair.second);
+    }
+  }
+
+  /// Stubs: a part that is no longer along its largest contact's normal than the contact is wide,
+  /// and smaller than the part on the other side, is a wedge filling the crease where two parts
+  /// meet or a bump on one; it goes into the part it shares that contact with, the flattest first.
+  void mergeStubs() {
+    for (;;) {
+      double flattest = kStubElongation;
+      std::pair<int, int> bestPair{-1, -1}, bestKey{kNoName, kNoName};
+      std::map<int, std::pair<double, std::pair<int, int>>> largest;  // part -> (area, contact)
+      const auto between = contacts();
+      for (const auto& [pair, k] : between)
+        for (int p : {pair.first, pair.second}) {
+          auto& l = largest[p];
+          if (k.area > l.first) l = {k.area, pair};
+        }
+      for (const auto& [p, l] : largest) {
+        const Contact& k = between.at(l.second);
+        if (!(k.area > 0) || !(k.normal.norm() > 0)) continue;
+        const double extent = extentAlong(components_, members_[p], k.normal.normalized());
+        const int other = l.second.first == p ? l.second.second : l.second.first;
+        if (!(extent > 0) || !(volume_[p] < volume_[other])) continue;
+        const double elongation = extent / std::sqrt(k.area);
+        const std::pair<int, int> key = nameOf(l.second);
+        if (elongation < flattest || (elongation == flattest && key < bestKey))
+          flattest = elongation, bestPair = l.second, bestKey = key;
+      }
+      if (bestPair.first < 0) return;
+      join(bestPair.first, bestPair.second);
+    }
+  }
+
+  int merges() const { return merges_; }
+  int root(int component) { return sets_.find(component); }
+  const std::vector<int>& members(int root) const { return members_[root]; }
+
+ private:
+  /// Contacts between parts (by union-find root), summed over the cuts between them.
+  std::map<std::pair<int, int>, Contact> contacts() {
     std::map<std::pair<int, int>, Contact> between;
-    for (const Cut& c : cuts) {
-      const int pa = sets.find(c.a), pb = sets.find(c.b);
+    for (const Cut& c : cuts_) {
+      const int pa = sets_.find(c.a), pb = sets_.find(c.b);
       if (pa == pb) continue;
       const std::pair<int, int> key = std::minmax(pa, pb);
       Contact& k = between[key];
@@ -64,83 +115,34 @@ Parts groupIntoParts(const std::vector<acd::TriMesh>& components, int genus, dou
       k.normal += (pa == key.first ? 1.0 : -1.0) * c.area * c.normal;  // out of key.first, c.normal out of c.a
     }
     return between;
-  };
-  const auto join = [&](int a, int b) {
-    const int keep = sets.find(a), gone = sets.find(b);
-    sets.join(keep, gone);
-    const int root = sets.find(keep), other = root == keep ? gone : keep;
-    members[root].insert(members[root].end(), members[other].begin(), members[other].end());
-    std::sort(members[root].begin(), members[root].end());
-    members[other].clear();
-    partVolume[root] += partVolume[other];
-    ++merges;
-  };
-  for (;;) {
-    double best = -1.0;
-    std::pair<int, int> bestPair{-1, -1}, bestKey{n, n};
-    for (const auto& [pair, k] : contacts()) {
-      if (!(k.area > 0) || !(k.normal.norm() > 0)) continue;
-      const Vec3 axis = k.normal.normalized();
-      double widest = 0.0;
-      for (int p : {pair.first, pair.second}) {
-        const double extent = extentAlong(components, members[p], axis);
-        if (extent > 0) widest = std::max(widest, partVolume[p] / extent);
-      }
-      if (!(widest > 0)) continue;
-      const double ratio = k.area / widest;
-      const std::pair<int, int> key = std::minmax(members[pair.first][0], members[pair.second][0]);
-      if (ratio > best || (ratio == best && key < bestKey)) best = ratio, bestPair = pair, bestKey = key;
-    }
-    if (best < tubeRatio) break;
-    join(bestPair.first, bestPair.second);
-  }
-  // Stubs: a part that is no longer along its largest contact's normal than the contact is wide,
-  // and smaller than the part on the other side, is a wedge filling the crease where two parts
-  // meet or a bump on one; it goes into the part it shares that contact with, the flattest first.
-  for (;;) {
-    double flattest = kStubElongation;
-    std::pair<int, int> bestPair{-1, -1}, bestKey{n, n};
-    std::map<int, std::pair<double, std::pair<int, int>>> largest;  // part -> (area, contact)
-    const auto between = contacts();
-    for (const auto& [pair, k] : between)
-      for (int p : {pair.first, pair.second}) {
-        auto& l = largest[p];
-        if (k.area > l.first) l = {k.area, pair};
-      }
-    for (const auto& [p, l] : largest) {
-      const Contact& k = between.at(l.second);
-      if (!(k.area > 0) || !(k.normal.norm() > 0)) continue;
-      const double extent = extentAlong(components, members[p], k.normal.normalized());
-      const int other = l.second.first == p ? l.second.second : l.second.first;
-      if (!(extent > 0) || !(partVolume[p] < partVolume[other])) continue;
-      const double elongation = extent / std::sqrt(k.area);
-      const std::pair<int, int> key = std::minmax(members[l.second.first][0], members[l.second.second][0]);
-      if (elongation < flattest || (elongation == flattest && key < bestKey))
-        flattest = elongation, bestPair = l.second, bestKey = key;
-    }
-    if (bestPair.first < 0) break;
-    join(bestPair.first, bestPair.second);
   }
 
-  Parts parts;
-  parts.merges = merges;
-  parts.partOf.assign(n, -1);
-  std::vector<int> partOfRoot(n, -1);
-  for (int i = 0; i < n; ++i) {  // parts in the order of their first component
-    const int root = sets.find(i);
-    if (partOfRoot[root] < 0) {
-      partOfRoot[root] = static_cast<int>(parts.members.size());
-      parts.members.push_back(members[root]);
-      double v = 0.0;
-      Vec3 moment = Vec3::Zero();
-      for (int c : members[root]) v += volume[c], moment += volume[c] * centroid[c];
-      parts.volume.push_back(v);
-      parts.centroid.push_back(v > 0 ? Vec3(moment / v) : centroid[i]);
-    }
-    parts.partOf[i] = partOfRoot[root];
+  std::pair<int, int> nameOf(const std::pair<int, int>& roots) const {
+    return std::minmax(members_[roots.first][0], members_[roots.second][0]);
   }
 
-  // Adjacencies between parts, largest shared area first (ties: lower pair of parts).
+  void join(int a, int b) {
+    const int keep = sets_.find(a), gone = sets_.find(b);
+    sets_.join(keep, gone);
+    const int root = sets_.find(keep), other = root == keep ? gone : keep;
+    members_[root].insert(members_[root].end(), members_[other].begin(), members_[other].end());
+    std::sort(members_[root].begin(), members_[root].end());
+    members_[other].clear();
+    volume_[root] += volume_[other];
+    ++merges_;
+  }
+
+  const std::vector<acd::TriMesh>& components_;
+  const std::vector<Cut>& cuts_;
+  acd::UnionFind sets_;
+  std::vector<std::vector<int>> members_;
+  std::vector<double> volume_;  // per root: the part's volume
+  int merges_ = 0;
+};
+
+/// The adjacencies of the parts a skeleton keeps: a maximum spanning forest by shared area, then as
+/// many closing adjacencies as the solid has handles, largest first (ties: lower pair of parts).
+void keepJointsAtGenus(const std::vector<Cut>& cuts, int genus, Parts& parts) {
   std::map<std::pair<int, int>, Contact> between;
   for (const Cut& c : cuts) {
     const int pa = parts.partOf[c.a], pb = parts.partOf[c.b];
@@ -153,7 +155,6 @@ Parts groupIntoParts(const std::vector<acd::TriMesh>& components, int genus, dou
   for (const auto& [pair, k] : between)
     adjacent.push_back({pair.first, pair.second, k.area, k.area > 0 ? Vec3(k.moment / k.area) : Vec3::Zero()});
   std::stable_sort(adjacent.begin(), adjacent.end(), [](const Joint& x, const Joint& y) { return x.area > y.area; });
-  // Maximum spanning forest, then as many closing adjacencies as the solid has handles.
   acd::UnionFind forest(static_cast<int>(parts.members.size()));
   std::vector<char> taken(adjacent.size(), 0);
   for (std::size_t j = 0; j < adjacent.size(); ++j) {
@@ -170,6 +171,41 @@ Parts groupIntoParts(const std::vector<acd::TriMesh>& components, int genus, dou
       ++parts.droppedAdjacencies;
   std::sort(parts.joints.begin(), parts.joints.end(),
             [](const Joint& x, const Joint& y) { return std::tie(x.a, x.b) < std::tie(y.a, y.b); });
+}
+
+}  // namespace
+
+Parts groupIntoParts(const std::vector<acd::TriMesh>& components, int genus, double tubeRatio) {
+  const int n = static_cast<int>(components.size());
+  std::vector<double> volume(n);
+  std::vector<Vec3> centroid(n);
+  for (int i = 0; i < n; ++i) {
+    volume[i] = std::abs(acd::signedVolume(components[i]));
+    centroid[i] = solidCentroid(components[i]);
+  }
+  const std::vector<Cut> cuts = findCuts(components);
+  Merger merger(components, cuts, volume);
+  merger.mergeTubes(tubeRatio);
+  merger.mergeStubs();
+
+  Parts parts;
+  parts.merges = merger.merges();
+  parts.partOf.assign(n, -1);
+  std::vector<int> partOfRoot(n, -1);
+  for (int i = 0; i < n; ++i) {  // parts in the order of their first component
+    const int root = merger.root(i);
+    if (partOfRoot[root] < 0) {
+      partOfRoot[root] = static_cast<int>(parts.members.size());
+      parts.members.push_back(merger.members(root));
+      double v = 0.0;
+      Vec3 moment = Vec3::Zero();
+      for (int c : merger.members(root)) v += volume[c], moment += volume[c] * centroid[c];
+      parts.volume.push_back(v);
+      parts.centroid.push_back(v > 0 ? Vec3(moment / v) : centroid[i]);
+    }
+    parts.partOf[i] = partOfRoot[root];
+  }
+  keepJointsAtGenus(cuts, genus, parts);
   return parts;
 }
 
