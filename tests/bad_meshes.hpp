@@ -90,6 +90,28 @@ inline TriMesh boxWithSplitEdge(double t, bool degenerate) {
   return m;
 }
 
+/// The unit box with its top face meshed apart from the sides, as CAD exporters mesh each face on
+/// its own: the top has a vertex in the middle of each of its four edges (and a centre), the side
+/// faces have those edges whole. Four cracks of zero width (T-junctions).
+inline TriMesh boxWithMeshedApartTop() {
+  TriMesh m = box(Vec3(0, 0, 0), Vec3(1, 1, 1));
+  std::vector<Face> faces;
+  for (const Face& f : m.faces)
+    if (!(m.vertices[f[0]].z() == 1 && m.vertices[f[1]].z() == 1 && m.vertices[f[2]].z() == 1)) faces.push_back(f);
+  auto index = [&](const Vec3& p) {
+    for (int v = 0; v < static_cast<int>(m.vertices.size()); ++v)
+      if (m.vertices[v] == p) return v;
+    m.vertices.push_back(p);
+    return static_cast<int>(m.vertices.size()) - 1;
+  };
+  const double ring[8][2] = {{0, 0}, {0.5, 0}, {1, 0}, {1, 0.5}, {1, 1}, {0.5, 1}, {0, 1}, {0, 0.5}};  // counter-clockwise from above
+  const int centre = index(Vec3(0.5, 0.5, 1));
+  for (int i = 0; i < 8; ++i)
+    faces.push_back({centre, index(Vec3(ring[i][0], ring[i][1], 1)), index(Vec3(ring[(i + 1) % 8][0], ring[(i + 1) % 8][1], 1))});
+  m.faces = faces;
+  return m;
+}
+
 /// A box [0,1]^3 with a triangle fin hanging off the edge from vertex 0 to vertex 2.
 inline TriMesh boxWithFin() {
   TriMesh m = box(Vec3(0, 0, 0), Vec3(1, 1, 1));
@@ -207,6 +229,8 @@ inline std::vector<Case> all() {
     m.faces.erase(m.faces.begin() + 2);
     c.push_back({"hole_patchable", "a missing face (a hole a patch closes)", m, Outcome::Input, true});
   }
+  c.push_back({"t_junctions", "a box whose top face was meshed apart: its edges split on one side of the seam only",
+               boxWithMeshedApartTop(), Outcome::Input});
   c.push_back({"hole_unpatchable", "an open terrain sheet: no patch closes it into a solid", terrain(), Outcome::Wrap});
   c.push_back({"double_sided_sheet", "a flat sheet given in both orientations", doubleSidedSheet(), Outcome::Wrap});
   c.push_back({"self_intersecting", "a sphere with a vertex pulled through its far side", foldedSphere(),

@@ -38,6 +38,8 @@ struct MeshRepair {
   int droppedDuplicateFaces = 0;      // exact copies (same orientation)
   int doubleSidedKeptOne = 0;         // a face and its reverse: the reverse dropped
   int doubleSidedDroppedBoth = 0;     // faces dropped as pairs that closed nothing
+  int tJunctionEdges = 0;             // boundary edges split at vertices lying on them (acd/algo/t_junctions.hpp)
+  int tJunctionVertices = 0;          // the vertices they were split at
   int splitVertices = 0;              // copies made to cut non-manifold edges and vertices apart
   int flippedFaces = 0;               // turned to agree with their neighbours
   int stitchedEdges = 0;              // boundary edge pairs sewn together
@@ -49,7 +51,8 @@ struct MeshRepair {
 /// Repairs, in this order: refuse empty meshes, non-finite coordinates and bad indices; merge
 /// close vertices; drop faces with a repeated vertex and exact duplicate faces; for a face and
 /// its reverse, drop the reverse when the face is needed to close its edges, or both when the
-/// two close nothing (an inner double-sided wall); cut non-manifold edges and vertices apart
+/// two close nothing (an inner double-sided wall); split boundary edges at the boundary vertices
+/// lying on them (T-junctions, acd/algo/t_junctions.hpp); cut non-manifold edges and vertices apart
 /// and orient every piece consistently (CGAL orient_polygon_soup); stitch borders; remove
 /// zero-area, needle and cap faces (CGAL remove_degenerate_faces and
 /// remove_almost_degenerate_faces); split vertices left non-manifold

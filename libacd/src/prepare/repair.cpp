@@ -5,6 +5,7 @@
 #include <acd/algo/close_vertices.hpp>
 #include <acd/algo/face_order.hpp>
 #include <acd/algo/surface_mesh_copy.hpp>
+#include <acd/algo/t_junctions.hpp>
 #include <acd/algo/touching_solids.hpp>
 #include <acd/algo/union_find.hpp>
 #include <acd/diagnosis.hpp>
@@ -229,6 +230,10 @@ void describeRepairs(const RepairOptions& options, MeshRepair& r) {
   if (r.doubleSidedDroppedBoth > 0)
     r.repairs.push_back("double-sided faces: dropped both sides of " + count(r.doubleSidedDroppedBoth, "face", "faces") +
                         " given in both orientations that close nothing (an inner wall)");
+  if (r.tJunctionEdges > 0)
+    r.repairs.push_back("T-junctions: split " + count(r.tJunctionEdges, "boundary edge", "boundary edges") + " at the " +
+                        count(r.tJunctionVertices, "vertex", "vertices") +
+                        " of the other side of the seam lying on them (a crack of zero width)");
   if (r.splitVertices > 0)
     r.repairs.push_back("split non-manifold edges and vertices: " + count(r.splitVertices, "vertex", "vertices") +
                         " copied so that each sheet has its own");
@@ -288,6 +293,11 @@ MeshRepair repairMesh(const TriMesh& input, const RepairOptions& options) {
   r.doubleSidedDroppedBoth = dup.droppedBoth;
   faces = std::move(dup.faces);
   if (faces.empty()) return refuse(StatusCode::EmptyMesh, "mesh has no faces left after dropping degenerate faces");
+  // T-junctions: cracks of zero width between faces meshed apart close edge for edge.
+  TJunctionSplit cracks = splitTJunctions(used.vertices, faces, options.mergeTolerance * diagonal);
+  r.tJunctionEdges = cracks.splitEdges;
+  r.tJunctionVertices = cracks.splitVertices;
+  faces = std::move(cracks.faces);
   const TriMesh merged = compact(TriMesh{used.vertices, faces});  // the merged-away vertices go
 
   if (options.skipWhenClean && cleanSolidSurface(merged, options)) {
