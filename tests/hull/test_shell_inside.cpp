@@ -5,6 +5,8 @@
 
 #include <acd/algo/shapes.hpp>
 #include <acd/algo/shell_inside.hpp>
+#include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "helpers.hpp"
@@ -136,4 +138,75 @@ TEST(ShellsInside, ABoxWithoutItsLidBoundsTheBox) {
   // A flat sheet bounds nothing.
   const ShellsInside sheet(TriMesh{{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, {{0, 1, 2}}});
   EXPECT_FALSE(sheet.inside(Vec3(0.2, 0.2, 0.05)));
+}
+
+namespace {
+
+/// The generalised winding number summed face by face, the tests' own: signed solid angles (Van
+/// Oosterom & Strackee) over 4 pi.
+double windingSummed(const TriMesh& m, const Vec3& q) {
+  double sum = 0.0;
+  for (const Face& f : m.faces) {
+    const Vec3 a = m.vertices[f[0]] - q, b = m.vertices[f[1]] - q, c = m.vertices[f[2]] - q;
+    const double la = a.norm(), lb = b.norm(), lc = c.norm();
+    sum += 2.0 * std::atan2(a.dot(b.cross(c)), la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb);
+  }
+  return sum / (4.0 * M_PI);
+}
+
+/// A unit sphere (icosphere of `level`) without its faces whose centroid lies above z = h.
+TriMesh cappedSphere(int level, double h) {
+  const TriMesh s = shapes::icosphere(Vec3::Zero(), 1.0, level);
+  TriMesh m{s.vertices, {}};
+  for (const Face& f : s.faces)
+    if ((s.vertices[f[0]].z() + s.vertices[f[1]].z() + s.vertices[f[2]].z()) / 3 < h) m.faces.push_back(f);
+  return compact(m);
+}
+
+}  // namespace
+
+TEST(ShellsInside, OpenShellsAgreeWithTheirWindingNumberSummedFaceByFace) {
+  // A sphere with a wide hole, and a box open at two opposite sides (two rims), one flipped.
+  TriMesh tube = box(Vec3(2, -0.5, -0.5), Vec3(3, 0.5, 0.5));
+  tube.faces.erase(std::remove_if(tube.faces.begin(), tube.faces.end(),
+                                  [&](const Face& f) {
+                                    const double x = tube.vertices[f[0]].x();
+                                    return tube.vertices[f[1]].x() == x && tube.vertices[f[2]].x() == x;
+                                  }),
+                   tube.faces.end());
+  ASSERT_EQ(tube.faces.size(), 8u);
+  const std::vector<TriMesh> shells = {cappedSphere(3, 0.3), flipped(tube)};
+  const ShellsInside solid(concatenate(shells));
+  EXPECT_EQ(solid.openShells(), 2);
+  EXPECT_EQ(solid.surfaceOnlyShells(), 0);
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1.5, 3.5);
+  int compared = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const Vec3 q(u(rng), 0.5 * u(rng) - 0.5, 0.5 * u(rng) - 0.5);
+    bool expected = false, clear = true;
+    for (const TriMesh& s : shells) {
+      const double w = std::abs(windingSummed(s, q));
+      clear = clear && std::abs(w - 0.5) > 0.01;
+      expected = expected || w >= 0.5;
+    }
+    if (!clear) continue;
+    ++compared;
+    ASSERT_EQ(solid.inside(q), expected) << q.transpose();
+  }
+  EXPECT_GT(compared, 2500);
+}
+
+TEST(ShellsInside, ADenseOpenShellStillBoundsItsSolid) {
+  // 73,724 faces (an icosphere less a cap): past what summing face by face could afford (50,000),
+  // but its rim is short.
+  const TriMesh open = cappedSphere(6, 0.8);
+  ASSERT_GT(open.faces.size(), 50000u);
+  const ShellsInside solid(open);
+  EXPECT_EQ(solid.openShells(), 1);
+  EXPECT_EQ(solid.surfaceOnlyShells(), 0);
+  for (const Vec3& q : {Vec3(0, 0, 0), Vec3(0, 0, -0.95), Vec3(0.6, 0.6, 0.1), Vec3(0, 0, 0.7)})
+    EXPECT_TRUE(solid.inside(q)) << q.transpose();
+  for (const Vec3& q : {Vec3(1.1, 0, 0), Vec3(0, 0, 1.05), Vec3(0.7, 0.7, 0.7)})
+    EXPECT_FALSE(solid.inside(q)) << q.transpose();
 }

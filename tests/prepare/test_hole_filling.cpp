@@ -1,18 +1,17 @@
 // Hole filling (libacd/src/prepare/hole_filling.cpp, acd/algo/hole_filling.hpp): open meshes for
 // solid ACD have their holes closed first, through prepareSolid's fill-holes policy and on to the
 // decomposition.
+#include <gtest/gtest.h>
+
 #include <acd/algo/hole_filling.hpp>
+#include <acd/algo/shapes.hpp>
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/io.hpp>
-#include <acd/algo/shapes.hpp>
-
-#include <gtest/gtest.h>
-
-#include "helpers.hpp"
-
 #include <cmath>
 #include <string>
+
+#include "helpers.hpp"
 
 using namespace acd;
 using acdtest::corpus;
@@ -134,7 +133,7 @@ TEST(HoleFilling, CorpusOpenModels) {
   struct Case {
     const char* model;
     int boundaryEdges;
-    int holes;      // -1: refused
+    int holes;  // -1: refused
   };
   for (const Case& c : {Case{"ChineseDragon-10kv", 6, 2}, Case{"mushroom", 64, 1}, Case{"mesh_with_border", 80, 1},
                         Case{"elephant-with-holes", 1353, -1}}) {
@@ -159,6 +158,29 @@ TEST(HoleFilling, CorpusOpenModels) {
       EXPECT_GT(signedVolume(piece), 0.0);
     }
   }
+}
+
+TEST(HoleFilling, LoopsRunningStraightThroughTheirVerticesGetNoZeroAreaFace) {
+  // The dragon subdivided twice (a dense input of the benchmarks): each edge of its two holes is
+  // now four, on a line up to rounding, and a patch triangle on three of them has no area unless
+  // it is flipped away. The patches' own faces are checked with the tests' own area.
+  const ReadResult r = readMesh(corpus("ChineseDragon-10kv"));
+  ASSERT_TRUE(r.status.ok()) << r.status.message;
+  const TriMesh dense = acdtest::midpointSubdivided(acdtest::midpointSubdivided(r.mesh));
+  ASSERT_EQ(diagnose(dense).boundaryEdges, 24);
+  const HoleFilling h = fillHoles(dense);
+  ASSERT_TRUE(h.status.ok()) << h.status.message;
+  EXPECT_EQ(h.holes, 2);
+  EXPECT_TRUE(isClosedOriented(h.mesh));
+  const double d2 = boundingBox(dense).size().squaredNorm();
+  for (std::size_t f = dense.faces.size(); f < h.mesh.faces.size(); ++f) {
+    const Face& t = h.mesh.faces[f];
+    const std::vector<Vec3>& v = h.mesh.vertices;
+    EXPECT_GT(0.5 * (v[t[1]] - v[t[0]]).cross(v[t[2]] - v[t[0]]).norm(), 1e-14 * d2) << "patch face " << f;
+  }
+  PrepareOptions o;
+  o.openMeshes = OpenMeshPolicy::FillHoles;
+  EXPECT_TRUE(prepareSolid(dense, o).status.ok());
 }
 
 TEST(Decompose, OpenMeshIsClosedThenDecomposed) {

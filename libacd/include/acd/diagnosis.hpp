@@ -67,6 +67,10 @@ struct PreparedSolid {
 /// closed by hole filling, refused, or kept open, as `options` says.
 PreparedSolid prepareSolid(const TriMesh& mesh, const PrepareOptions& options = {});
 
+/// Whether face `f` has too small an area for a usable normal: at most 1e-14 of
+/// `squaredDiagonal`, the squared bounding-box diagonal of its mesh.
+bool hasZeroArea(const std::vector<Vec3>& vertices, const Face& f, double squaredDiagonal);
+
 /// The first face whose area is too small for a usable normal (at most 1e-14 of the squared
 /// bounding-box diagonal), which prepareSolid refuses; -1 when there is none.
 int firstZeroAreaFace(const TriMesh& mesh);

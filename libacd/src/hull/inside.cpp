@@ -4,10 +4,9 @@
 // CGAL's exact fallback), and a query point lying exactly on a projected edge or vertex is moved
 // symbolically by (eps, eps^2) in xy, so every ray meets a shared edge exactly once. Triangles
 // are bucketed in an xy grid of about two cells per triangle.
-#include <acd/algo/inside.hpp>
-
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <acd/algo/inside.hpp>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -38,7 +37,7 @@ inline int orient2d(double ax, double ay, double bx, double by, double qx, doubl
 inline int orient2dPerturbed(double ax, double ay, double bx, double by, double qx, double qy) {
   const int s = orient2d(ax, ay, bx, by, qx, qy);
   if (s != 0) return s;
-  if (by != ay) return by < ay ? 1 : -1;  // d/dqx of the determinant is -(by - ay)
+  if (by != ay) return by < ay ? 1 : -1;    // d/dqx of the determinant is -(by - ay)
   return bx > ax ? 1 : (bx < ax ? -1 : 0);  // d/dqy is (bx - ax)
 }
 
@@ -83,15 +82,14 @@ class InsideTest::Impl {
               ++start_[c + 1];
             else
               items_[fill[c]++] = Item{down(tris_[t].lo.x()), up(tris_[t].hi.x()), down(tris_[t].lo.y()),
-                                       up(tris_[t].hi.y()), up(tris_[t].hi.z()), t};
+                                       up(tris_[t].hi.y()),   up(tris_[t].hi.z()), t};
           }
       }
     }
   }
 
-  bool inside(const Vec3& q) const {
-    if (!(q.x() >= lo_.x() && q.x() <= hi_.x() && q.y() >= lo_.y() && q.y() <= hi_.y() && q.z() <= hi_.z()))
-      return false;
+  int winding(const Vec3& q) const {
+    if (!(q.x() >= lo_.x() && q.x() <= hi_.x() && q.y() >= lo_.y() && q.y() <= hi_.y() && q.z() <= hi_.z())) return 0;
     const std::size_t c = static_cast<std::size_t>(cellY(q.y())) * nx_ + cellX(q.x());
     int winding = 0;
     for (int k = start_[c]; k < start_[c + 1]; ++k) {
@@ -114,7 +112,7 @@ class InsideTest::Impl {
       }
       if (above) winding += t.s;
     }
-    return winding != 0;
+    return winding;
   }
 
  private:
@@ -148,6 +146,7 @@ class InsideTest::Impl {
 
 InsideTest::InsideTest(const TriMesh& mesh) : impl_(std::make_unique<Impl>(mesh)) {}
 InsideTest::~InsideTest() = default;
-bool InsideTest::inside(const Vec3& q) const { return impl_->inside(q); }
+bool InsideTest::inside(const Vec3& q) const { return impl_->winding(q) != 0; }
+int InsideTest::winding(const Vec3& q) const { return impl_->winding(q); }
 
 }  // namespace acd

@@ -2,6 +2,7 @@
 #include <acd/algo/close_vertices.hpp>
 #include <acd/algo/inside.hpp>
 #include <acd/algo/shell_inside.hpp>
+#include <acd/algo/union_find.hpp>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -108,9 +109,59 @@ double windingNumber(const std::vector<std::array<Vec3, 3>>& triangles, const Ve
 /// called outside (and then measured to the rim).
 constexpr double kHalfWinding = 0.499;
 
-/// Open shells with more faces than this (all together) count as surface only: the winding
-/// number is summed face by face.
-constexpr std::size_t kWindingFaces = 50000;
+/// Open shells whose rims have more edges than this (all together) count as surface only: the
+/// cone closing them is summed face by face.
+constexpr std::size_t kWindingRimEdges = 50000;
+
+/// The cone that closes an open shell: for every rim edge a->b (an edge used more often a->b than
+/// b->a, as many times as the difference), the triangle (b, a, apex), with one apex per connected
+/// piece of the rim: at the mean of its vertices, moved out of the hole (against the rim's area
+/// vector) by a quarter of the rim's radius, so that the cone does not lie where hulls do (across
+/// a flat hole, where the difference below would be taken on the cone itself). Shell and cone together use every edge
+/// as often in each direction (the rim is a cycle), so their winding number is an integer that a ray counts exactly,
+/// and the shell's own is that less the cone's (Jacobson et al. 2013, closing the shell up): the cost of a query
+/// follows the rim, not the shell.
+std::vector<std::array<Vec3, 3>> closingCone(const TriMesh& shell) {
+  std::unordered_map<std::uint64_t, int> net;  // uses lo->hi less uses hi->lo
+  for (const Face& f : shell.faces)
+    for (int k = 0; k < 3; ++k) {
+      const int a = f[k], b = f[(k + 1) % 3];
+      net[edgeKey(a, b)] += a < b ? 1 : -1;
+    }
+  std::vector<std::pair<int, int>> rim;  // directed, with repeats
+  for (const auto& [key, n] : net) {
+    const int lo = static_cast<int>(key >> 32), hi = static_cast<int>(key & 0xffffffffu);
+    for (int i = 0; i < std::abs(n); ++i) rim.emplace_back(n > 0 ? lo : hi, n > 0 ? hi : lo);
+  }
+  std::sort(rim.begin(), rim.end());  // the map's order is not the input's: a canonical one
+  UnionFind pieces(static_cast<int>(shell.vertices.size()));
+  for (const auto& [a, b] : rim) pieces.joinKeepingSmallest(a, b);
+  struct Piece {
+    Vec3 sum = Vec3::Zero(), area = Vec3::Zero();
+    int n = 0;
+    double radius = 0.0;
+    Vec3 apex = Vec3::Zero();
+  };
+  std::unordered_map<int, Piece> piece;
+  std::vector<char> counted(shell.vertices.size(), 0);
+  for (const auto& [a, b] : rim) {
+    Piece& p = piece[pieces.find(a)];
+    p.area += 0.5 * shell.vertices[a].cross(shell.vertices[b]);
+    for (int v : {a, b})
+      if (!counted[v]) counted[v] = 1, p.sum += shell.vertices[v], ++p.n;
+  }
+  for (const auto& [a, b] : rim) {
+    Piece& p = piece[pieces.find(a)];
+    p.radius = std::max(p.radius, (shell.vertices[a] - p.sum / p.n).norm());
+  }
+  for (auto& [root, p] : piece) {
+    p.apex = p.sum / p.n;
+    if (p.area.norm() > 0.0) p.apex -= 0.25 * p.radius * p.area.normalized();
+  }
+  std::vector<std::array<Vec3, 3>> cone;
+  for (const auto& [a, b] : rim) cone.push_back({shell.vertices[b], shell.vertices[a], piece[pieces.find(a)].apex});
+  return cone;
+}
 
 }  // namespace
 
@@ -121,7 +172,8 @@ struct ShellsInside::Impl {
   };
   struct Open {
     Box3 box;
-    std::vector<std::array<Vec3, 3>> triangles;
+    std::unique_ptr<InsideTest> closedUp;  // the shell with its cone
+    std::vector<std::array<Vec3, 3>> cone;
   };
   std::vector<Solid> solids;
   std::vector<Open> open;  // bound by their generalised winding number
@@ -140,22 +192,27 @@ ShellsInside::ShellsInside(const TriMesh& soup, double weld) : impl_(std::make_u
     std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
     if (seen.insert(key).second) welded.faces.push_back(f);
   }
-  std::size_t windingFaces = 0;
+  std::size_t rimEdges = 0;
   for (TriMesh& shell : splitEdgeConnected(welded)) {
     TriMesh closed = balanced(shell) ? shell : peeled(shell);
     if (closed.faces.empty() || (!balanced(closed) && !orientConsistently(closed))) {
       // Open: where its faces (a box without its lid) wind around a point at least half way.
-      windingFaces += shell.faces.size();
-      if (windingFaces > kWindingFaces) {
+      Impl::Open o{boundingBox(shell), nullptr, closingCone(shell)};
+      rimEdges += o.cone.size();
+      if (rimEdges > kWindingRimEdges) {
         ++impl_->surfaceOnly;
         continue;
       }
+      TriMesh withCone = shell;
+      for (const auto& t : o.cone) {
+        const int base = static_cast<int>(withCone.vertices.size());
+        withCone.vertices.insert(withCone.vertices.end(), t.begin(), t.end());
+        withCone.faces.push_back({base, base + 1, base + 2});
+      }
+      o.closedUp = std::make_unique<InsideTest>(withCone);
       // Padded: the margin of kHalfWinding reaches a little past a missing face.
-      Impl::Open o{boundingBox(shell), {}};
       const Vec3 pad = Vec3::Constant(0.01 * o.box.size().norm());
       o.box.lo -= pad, o.box.hi += pad;
-      for (const Face& f : shell.faces)
-        o.triangles.push_back({shell.vertices[f[0]], shell.vertices[f[1]], shell.vertices[f[2]]});
       impl_->open.push_back(std::move(o));
       continue;
     }
@@ -179,7 +236,7 @@ bool ShellsInside::insideOpen(const Vec3& q) const {
   // half-space away from q).
   for (const Impl::Open& o : impl_->open) {
     if ((q.array() < o.box.lo.array()).any() || (q.array() > o.box.hi.array()).any()) continue;
-    if (std::abs(windingNumber(o.triangles, q)) >= kHalfWinding) return true;
+    if (std::abs(o.closedUp->winding(q) - windingNumber(o.cone, q)) >= kHalfWinding) return true;
   }
   return false;
 }

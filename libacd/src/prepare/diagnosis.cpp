@@ -45,10 +45,6 @@ bool indicesInRange(const Face& f, int vertexCount) {
 
 double squaredDiagonal(const Box3& box) { return box.size().squaredNorm(); }
 
-bool hasZeroArea(const std::vector<Vec3>& vertices, const Face& f, double squaredDiag) {
-  const Vec3 twiceArea = (vertices[f[1]] - vertices[f[0]]).cross(vertices[f[2]] - vertices[f[0]]);
-  return 0.5 * twiceArea.norm() <= kZeroAreaFraction * squaredDiag;
-}
 
 /// Bounding box of the finite vertices only: one NaN must not poison the scale of every test.
 Box3 finiteBoundingBox(const std::vector<Vec3>& vertices) {
@@ -598,6 +594,11 @@ PreparedSolid prepareSolid(const TriMesh& mesh, const PrepareOptions& options) {
   out.components = std::move(pieces);
   out.status = Status::success();
   return out;
+}
+
+bool hasZeroArea(const std::vector<Vec3>& vertices, const Face& f, double squaredDiagonal) {
+  const Vec3 twiceArea = (vertices[f[1]] - vertices[f[0]]).cross(vertices[f[2]] - vertices[f[0]]);
+  return 0.5 * twiceArea.norm() <= kZeroAreaFraction * squaredDiagonal;
 }
 
 int firstZeroAreaFace(const TriMesh& mesh) {

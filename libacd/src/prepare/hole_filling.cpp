@@ -1,14 +1,14 @@
 // Hole filling with CGAL Polygon Mesh Processing on a Surface_mesh copy of the input.
 #define CGAL_EIGEN3_ENABLED 1  // fairing solves a sparse system with Eigen (linked publicly by libacd)
-#include <acd/algo/hole_filling.hpp>
-
-#include <acd/algo/surface_mesh_copy.hpp>
-
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 
+#include <acd/algo/hole_filling.hpp>
+#include <acd/algo/surface_mesh_copy.hpp>
+#include <acd/diagnosis.hpp>
 #include <cmath>
 #include <iterator>
 #include <sstream>
@@ -31,7 +31,12 @@ std::string describeLoop(const Mesh& m, Mesh::Halfedge_index h, int length) {
   return s.str();
 }
 
-enum class Patch { Faired, Flat };
+/// How a loop is closed, tried in this order: a faired patch follows the surrounding curvature; a
+/// flat one (the minimum-area triangulation of the loop) stays close to the loop; a fan from a new
+/// vertex at the loop's centre needs no triangle on three loop vertices, which for loops that
+/// run straight through their vertices (a triangular hole of a subdivided model) may be all the
+/// other two can find.
+enum class Patch { Faired, Flat, Fan };
 
 struct Filled {
   Mesh mesh;
@@ -40,8 +45,62 @@ struct Filled {
   int addedVertices = 0, unfaired = 0;
 };
 
+Vec3 toVec(const Point& p) { return Vec3(p.x(), p.y(), p.z()); }
+
+bool zeroArea(const Mesh& m, Mesh::Halfedge_index h, double squaredDiag) {
+  const std::vector<Vec3> corners = {toVec(m.point(m.source(h))), toVec(m.point(m.target(h))),
+                                     toVec(m.point(m.target(m.next(h))))};
+  return hasZeroArea(corners, Face{0, 1, 2}, squaredDiag);
+}
+
+/// A patch triangle on three loop vertices that lie on a line (the loop runs straight through a
+/// vertex, as on a subdivided model) has no area, and prepareSolid would refuse it. Flipping its
+/// longest edge, which a patch triangle on the other side shares, turns the two into proper
+/// triangles covering the same surface. Faces keep their indices.
+void flipZeroAreaFaces(Mesh& m, const std::vector<Mesh::Face_index>& patch, double squaredDiag) {
+  std::vector<char> inPatch(m.number_of_faces(), 0);
+  for (Mesh::Face_index f : patch) inPatch[f.idx()] = 1;
+  for (int pass = 0; pass < 4; ++pass) {
+    bool flipped = false;
+    for (Mesh::Face_index f : patch) {
+      Mesh::Halfedge_index longest = m.halfedge(f);
+      if (!zeroArea(m, longest, squaredDiag)) continue;
+      for (Mesh::Halfedge_index h : CGAL::halfedges_around_face(m.halfedge(f), m))
+        if (CGAL::squared_distance(m.point(m.source(h)), m.point(m.target(h))) >
+            CGAL::squared_distance(m.point(m.source(longest)), m.point(m.target(longest))))
+          longest = h;
+      const Mesh::Halfedge_index across = m.opposite(longest);
+      if (m.is_border(across) || !inPatch[m.face(across).idx()]) continue;
+      const Mesh::Vertex_index apex = m.target(m.next(longest)), otherApex = m.target(m.next(across));
+      if (CGAL::halfedge(apex, otherApex, m).second) continue;  // that edge exists: no flip
+      CGAL::Euler::flip_edge(longest, m);
+      if (zeroArea(m, longest, squaredDiag) || zeroArea(m, across, squaredDiag)) {
+        CGAL::Euler::flip_edge(longest, m);  // no better: back
+        continue;
+      }
+      flipped = true;
+    }
+    if (!flipped) return;
+  }
+}
+
+/// Closes the loop of `border` with a fan from a new vertex at the mean of its vertices.
+std::vector<Mesh::Face_index> fanFromCentre(Mesh& m, Mesh::Halfedge_index border) {
+  Kernel::Vector_3 sum(0, 0, 0);
+  int n = 0;
+  for (Mesh::Halfedge_index h : CGAL::halfedges_around_face(border, m))
+    sum = sum + (m.point(m.target(h)) - CGAL::ORIGIN), ++n;
+  CGAL::Euler::fill_hole(border, m);
+  const Mesh::Halfedge_index spoke = CGAL::Euler::add_center_vertex(border, m);
+  m.point(m.target(spoke)) = CGAL::ORIGIN + sum / n;
+  std::vector<Mesh::Face_index> faces;
+  for (Mesh::Face_index f : CGAL::faces_around_target(spoke, m)) faces.push_back(f);
+  return faces;
+}
+
 /// Fills every loop (one border halfedge each, valid in a fresh copy of the input) in the given way.
-Filled fillLoops(const Mesh& input, const std::vector<Mesh::Halfedge_index>& loops, const std::vector<Patch>& how) {
+Filled fillLoops(const Mesh& input, const std::vector<Mesh::Halfedge_index>& loops, const std::vector<Patch>& how,
+                 double squaredDiag) {
   Filled out;
   out.mesh = input;
   out.loopOfFace.assign(input.number_of_faces(), -1);
@@ -52,13 +111,17 @@ Filled fillLoops(const Mesh& input, const std::vector<Mesh::Halfedge_index>& loo
       const auto result = PMP::triangulate_refine_and_fair_hole(out.mesh, loops[i], std::back_inserter(faces),
                                                                 std::back_inserter(vertices));
       if (!std::get<0>(result)) ++out.unfaired;
-    } else {
+    } else if (how[i] == Patch::Flat) {
       PMP::triangulate_hole(out.mesh, loops[i], std::back_inserter(faces));
+    } else {
+      faces = fanFromCentre(out.mesh, loops[i]);
+      ++out.addedVertices;
     }
     if (faces.empty()) {
       out.failedLoop = static_cast<int>(i);
       return out;
     }
+    flipZeroAreaFaces(out.mesh, faces, squaredDiag);
     out.addedVertices += static_cast<int>(vertices.size());
     out.loopOfFace.resize(out.mesh.number_of_faces(), -1);
     for (Mesh::Face_index f : faces) out.loopOfFace[f.idx()] = static_cast<int>(i);
@@ -66,15 +129,22 @@ Filled fillLoops(const Mesh& input, const std::vector<Mesh::Halfedge_index>& loo
   return out;
 }
 
-/// Holes whose patch intersects any other face (intersections among input faces are the input's own).
-std::vector<char> intersectingLoops(const Filled& filled, std::size_t loops) {
+enum class Flaw : char { None, ZeroArea, Crossing };
+
+/// Per hole, what is wrong with its patch: a face that intersects any other face (intersections
+/// among input faces are the input's own), or else a face with no area.
+std::vector<Flaw> flawedLoops(const Filled& filled, std::size_t loops, double squaredDiag) {
+  std::vector<Flaw> flaw(loops, Flaw::None);
+  for (Mesh::Face_index f : filled.mesh.faces())
+    if (f.idx() < filled.loopOfFace.size() && filled.loopOfFace[f.idx()] >= 0 &&
+        zeroArea(filled.mesh, filled.mesh.halfedge(f), squaredDiag))
+      flaw[filled.loopOfFace[f.idx()]] = Flaw::ZeroArea;
   std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> pairs;
   PMP::self_intersections(filled.mesh, std::back_inserter(pairs));
-  std::vector<char> bad(loops, 0);
   for (const auto& [a, b] : pairs)
     for (Mesh::Face_index f : {a, b})
-      if (filled.loopOfFace[f.idx()] >= 0) bad[filled.loopOfFace[f.idx()]] = 1;
-  return bad;
+      if (filled.loopOfFace[f.idx()] >= 0) flaw[filled.loopOfFace[f.idx()]] = Flaw::Crossing;
+  return flaw;
 }
 
 }  // namespace
@@ -88,8 +158,7 @@ HoleFilling fillHoles(const TriMesh& input) {
   };
   Mesh m;
   if (const long badFace = copyToSurfaceMesh(input, m); badFace >= 0)
-    return refuse("cannot fill holes: face " + std::to_string(badFace) +
-                  " does not fit an oriented manifold surface");
+    return refuse("cannot fill holes: face " + std::to_string(badFace) + " does not fit an oriented manifold surface");
 
   // One halfedge per boundary loop, collected before any patch changes the mesh.
   std::vector<Mesh::Halfedge_index> loops;
@@ -104,28 +173,31 @@ HoleFilling fillHoles(const TriMesh& input) {
       lengths.push_back(length);
     }
   }
-  // Faired patches first (they follow the surrounding curvature); a faired patch that cuts through
-  // the model is replaced by the minimum-area triangulation of its loop, which stays close to the loop.
+  // Each loop's patch in the first way of `Patch` that gives it neither a face through the model
+  // nor one without area.
   std::vector<Patch> how(loops.size(), Patch::Faired);
+  const double squaredDiag = boundingBox(input).size().squaredNorm();
   Filled filled;
-  for (int round = 0; round < 2; ++round) {
-    filled = fillLoops(m, loops, how);
+  for (int round = 0;; ++round) {
+    filled = fillLoops(m, loops, how, squaredDiag);
     if (filled.failedLoop >= 0)
       return refuse("cannot fill " + describeLoop(m, loops[filled.failedLoop], lengths[filled.failedLoop]) +
                     ": no triangulation found");
-    const std::vector<char> bad = intersectingLoops(filled, loops.size());
-    int badCount = 0, first = -1;
+    const std::vector<Flaw> flaw = flawedLoops(filled, loops.size(), squaredDiag);
+    int flawed = 0, first = -1;
+    bool crossing = false;
     for (std::size_t i = 0; i < loops.size(); ++i)
-      if (bad[i]) {
-        ++badCount;
+      if (flaw[i] != Flaw::None) {
+        ++flawed;
         if (first < 0) first = static_cast<int>(i);
-        how[i] = Patch::Flat;
+        crossing = crossing || flaw[i] == Flaw::Crossing;
+        how[i] = how[i] == Patch::Faired ? Patch::Flat : Patch::Fan;
       }
-    if (badCount == 0) break;
-    if (round == 1)
-      return refuse("cannot close " + std::to_string(badCount) + " of the " + std::to_string(loops.size()) +
-                    " holes without the patch passing through the surface (first: " +
-                    describeLoop(m, loops[first], lengths[first]) + ")");
+    if (flawed == 0) break;
+    if (round == 2)
+      return refuse("cannot close " + std::to_string(flawed) + " of the " + std::to_string(loops.size()) + " holes " +
+                    (crossing ? "without the patch passing through the surface" : "without a patch face of no area") +
+                    " (first: " + describeLoop(m, loops[first], lengths[first]) + ")");
   }
   for (Mesh::Halfedge_index h : filled.mesh.halfedges())
     if (filled.mesh.is_border(h)) return refuse("hole filling left boundary edges (a hole touches itself at a vertex)");
@@ -142,7 +214,8 @@ HoleFilling fillHoles(const TriMesh& input) {
     if (f.idx() < input.faces.size()) continue;
     Face t{};
     int k = 0;
-    for (Mesh::Vertex_index v : filled.mesh.vertices_around_face(filled.mesh.halfedge(f))) t[k++] = static_cast<int>(v.idx());
+    for (Mesh::Vertex_index v : filled.mesh.vertices_around_face(filled.mesh.halfedge(f)))
+      t[k++] = static_cast<int>(v.idx());
     out.mesh.faces.push_back(t);
   }
   out.holes = static_cast<int>(loops.size());

@@ -2,7 +2,6 @@
 #pragma once
 
 #include <acd/mesh.hpp>
-
 #include <memory>
 
 namespace acd {
@@ -18,6 +17,9 @@ class InsideTest {
   InsideTest& operator=(const InsideTest&) = delete;
 
   bool inside(const Vec3& q) const;
+  /// The winding number itself (outward-oriented shells count +1 inside): exact for any mesh
+  /// whose every edge is used as often in one direction as in the other, self-crossing or not.
+  int winding(const Vec3& q) const;
 
  private:
   class Impl;
