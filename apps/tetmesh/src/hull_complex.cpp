@@ -1,18 +1,14 @@
 // The conforming complex of a set of convex hulls; see hull_complex.hpp for the method.
 #include "hull_complex.hpp"
 
-#include "separation.hpp"
-
-#include <acd/algo/convex_polytope.hpp>
-#include <acd/algo/hull.hpp>
-
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Constrained_triangulation_plus_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <Eigen/Dense>
-
+#include <acd/algo/convex_polytope.hpp>
+#include <acd/algo/hull.hpp>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -20,6 +16,8 @@
 #include <set>
 #include <string>
 #include <unordered_map>
+
+#include "separation.hpp"
 
 namespace tetmesh {
 
@@ -142,7 +140,8 @@ struct VertexInfo {
 using Vb = CGAL::Triangulation_vertex_base_with_info_2<VertexInfo, K>;
 using Fb = CGAL::Constrained_triangulation_face_base_2<K>;
 using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
-using Cdt = CGAL::Constrained_triangulation_plus_2<CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>>;
+using Cdt = CGAL::Constrained_triangulation_plus_2<
+    CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>>;
 
 struct PlaneFrame {
   Vec3 origin, u, v;
@@ -299,20 +298,27 @@ struct PlaneItems {
 /// What the steps of buildHullComplex share: the hulls, the tolerance, the contact planes and
 /// which side of them each region keeps, the welded points and the triangles of each region.
 struct ComplexBuild {
-  ComplexBuild(const std::vector<TriMesh>& h, double tolerance) : hulls(h), n(static_cast<int>(h.size())), tol(tolerance), welder(tolerance) {}
+  ComplexBuild(const std::vector<TriMesh>& h, double tolerance, double closedGap)
+      : hulls(h),
+        n(static_cast<int>(h.size())),
+        tol(tolerance),
+        gap(std::max(tolerance, closedGap)),
+        welder(tolerance) {}
 
   const std::vector<TriMesh>& hulls;
   int n;
   double tol;
+  double gap;  // hulls apart by less are in contact: the gap is closed
   std::vector<ContactPlane> planes;
+  std::vector<double> reach;                             // per plane: vertices this near go onto it
   std::vector<std::vector<SideConstraint>> constraints;  // per region
   PointWelder welder;
-  std::vector<std::vector<Face>> regionTris;            // per region, in global numbering
+  std::vector<std::vector<Face>> regionTris;              // per region, in global numbering
   std::vector<std::vector<std::vector<Face>>> planeTris;  // per plane, per region: its face on the plane
-  std::vector<std::vector<Face>> freeTris;              // per region: the rest
-  std::vector<std::vector<int>> touching;               // per region: the planes it touches
-  std::vector<PlaneItems> items;                        // per plane
-  std::map<std::uint64_t, std::set<int>> splits;        // edge -> points strictly inside it
+  std::vector<std::vector<Face>> freeTris;                // per region: the rest
+  std::vector<std::vector<int>> touching;                 // per region: the planes it touches
+  std::vector<PlaneItems> items;                          // per plane
+  std::map<std::uint64_t, std::set<int>> splits;          // edge -> points strictly inside it
   std::vector<Plc::Facet> overlayFacets;
 
   int planeCount() const { return static_cast<int>(planes.size()); }
@@ -349,11 +355,14 @@ void findContacts(ComplexBuild& b, const std::vector<acd::Box3>& boxes, HullComp
   for (int i = 0; i < n; ++i) normals[i] = uniqueFacetNormals(hulls[i]);
   for (int i = 0; i < n; ++i)
     for (int j = i + 1; j < n; ++j) {
-      const bool apart = ((boxes[i].lo.array() - tol > boxes[j].hi.array()) ||
-                          (boxes[j].lo.array() - tol > boxes[i].hi.array())).any();
+      const bool apart =
+          ((boxes[i].lo.array() - b.gap > boxes[j].hi.array()) || (boxes[j].lo.array() - b.gap > boxes[i].hi.array()))
+              .any();
       if (apart) continue;
       const Contact ct = findContact(hulls[i].vertices, hulls[j].vertices, normals[i], normals[j], tol);
-      if (ct.gap > tol) continue;
+      if (ct.gap > b.gap) continue;
+      // A gap narrower than b.gap is closed: both sides go onto the plane half way across it.
+      const double halfGap = std::max(0.0, 0.5 * ct.gap);
       const Vec3 best = ct.normal;
       const double depth = maxAlong(hulls[i].vertices, best) - minAlong(hulls[j].vertices, best);
       ++out.contactPairs;
@@ -367,22 +376,24 @@ void findContacts(ComplexBuild& b, const std::vector<acd::Box3>& boxes, HullComp
       // and a plane found twice would be overlaid twice (overlapping facets).
       std::vector<Vec3> touching;
       for (const Vec3& p : hulls[i].vertices)
-        if (std::abs(pl.distance(p)) <= 2 * tol) touching.push_back(p);
+        if (std::abs(pl.distance(p)) <= 2 * tol + halfGap) touching.push_back(p);
       for (const Vec3& p : hulls[j].vertices)
-        if (std::abs(pl.distance(p)) <= 2 * tol) touching.push_back(p);
+        if (std::abs(pl.distance(p)) <= 2 * tol + halfGap) touching.push_back(p);
       int id = -1;
       double sideI = 1.0;
       for (int k = 0; k < static_cast<int>(planes.size()) && id < 0; ++k) {
         const double dot = planes[k].normal.dot(pl.normal);
         if (std::abs(dot) < 1.0 - 1e-6) continue;
         bool same = !touching.empty();
-        for (const Vec3& p : touching) same = same && std::abs(planes[k].distance(p)) <= 10 * tol;
+        for (const Vec3& p : touching) same = same && std::abs(planes[k].distance(p)) <= 10 * tol + halfGap;
         if (same) id = k, sideI = dot > 0 ? 1.0 : -1.0;
       }
       if (id < 0) {
         id = static_cast<int>(planes.size());
         planes.push_back(pl);
+        b.reach.push_back(tol);
       }
+      b.reach[id] = std::max(b.reach[id], tol + halfGap);
       auto addConstraint = [&](int r, double side) {
         for (const SideConstraint& s : constraints[r])
           if (s.plane == id) return;
@@ -415,7 +426,7 @@ void clipRegions(const ComplexBuild& b, HullComplex& out) {
     for (std::size_t q = 0; q < pts.size(); ++q) {
       std::vector<const ContactPlane*> near;
       for (const SideConstraint& s : constraints[i])
-        if (std::abs(planes[s.plane].distance(pts[q])) <= tol) near.push_back(&planes[s.plane]);
+        if (std::abs(planes[s.plane].distance(pts[q])) <= b.reach[s.plane]) near.push_back(&planes[s.plane]);
       if (!near.empty()) pts[q] = projectOnto(pts[q], near);
       onPlanes[q] = static_cast<int>(near.size());
     }
@@ -458,7 +469,8 @@ void weldRegions(ComplexBuild& b, const HullComplex& out) {
         entries.push_back({i, v, count});
       }
     }
-    std::stable_sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) { return a.planes > b.planes; });
+    std::stable_sort(entries.begin(), entries.end(),
+                     [](const Entry& a, const Entry& b) { return a.planes > b.planes; });
     for (const Entry& e : entries) regionIds[e.region][e.vertex] = welder.add(out.regions[e.region].vertices[e.vertex]);
   }
   for (int i = 0; i < n; ++i)
@@ -507,7 +519,6 @@ void classifyTriangles(ComplexBuild& b) {
       else
         freeTris[i].push_back(f);
     }
-
 }
 
 /// Constraints and points of each plane: boundary edges of each region's face there, and the
@@ -549,7 +560,6 @@ void collectPlaneItems(ComplexBuild& b) {
     for (const auto& e : items[k].edges) pts.insert(e.first), pts.insert(e.second);
     items[k].points.assign(pts.begin(), pts.end());
   }
-
 }
 
 /// One plane of one overlay pass: its constraints triangulated (splitting edges where points
@@ -700,7 +710,7 @@ HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComple
   out.status = boxesOf(hulls, boxes, box);
   if (!out.status.ok()) return out;
   const double scale = 0.5 * box.size().norm();
-  ComplexBuild b(hulls, options.tolerance * scale);
+  ComplexBuild b(hulls, options.tolerance * scale, options.closedGap * scale);
 
   findContacts(b, boxes, out);  // 1. contacts between pairs, on clustered planes
   clipRegions(b, out);          // 2. regions: overlaps clipped, near-plane vertices snapped
@@ -720,9 +730,9 @@ HullComplex buildHullComplex(const std::vector<TriMesh>& hulls, const HullComple
     for (int k = 0; k < b.planeCount(); ++k) changed = overlayPlane(b, k, emitted, changed);
   }
   if (changed) {
-    out.status = acd::Status::error(acd::StatusCode::InternalError,
-                                    "the interfaces between hulls did not settle after " +
-                                        std::to_string(out.overlayPasses) + " overlay passes");
+    out.status =
+        acd::Status::error(acd::StatusCode::InternalError, "the interfaces between hulls did not settle after " +
+                                                               std::to_string(out.overlayPasses) + " overlay passes");
     return out;
   }
   assemblePlc(b, scale, out);

@@ -1,18 +1,22 @@
 // The tetmesh pipeline; see hull_mesher.hpp.
 #include "hull_mesher.hpp"
 
-#include "hull_simplify.hpp"
-
-#include <acd/diagnosis.hpp>
 #include <acd/algo/hull.hpp>
-
+#include <acd/diagnosis.hpp>
 #include <chrono>
 #include <cmath>
 #include <limits>
 
+#include "hull_simplify.hpp"
+
 namespace tetmesh {
 
 namespace {
+
+/// Gaps between hulls narrower than this times tau (of the half-diagonal) are closed: far below
+/// what tau resolves (hulls stand up to tau off the model), and a gap that thin between two
+/// regions would give TetGen two faces a hair apart, or a mesh in two pieces where the model is one.
+constexpr double kClosedGapPerTau = 1e-3;
 
 double since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -23,8 +27,9 @@ double since(std::chrono::steady_clock::time_point start) {
 HullMeshResult meshHulls(const acd::TriMesh& model, const HullMeshOptions& options) {
   HullMeshResult r;
   if (options.simplify != 0 && options.simplify < 4) {
-    r.status = acd::Status::error(acd::StatusCode::InvalidParameter,
-                                  "--simplify must be at least 4 (a tetrahedron), got " + std::to_string(options.simplify));
+    r.status =
+        acd::Status::error(acd::StatusCode::InvalidParameter,
+                           "--simplify must be at least 4 (a tetrahedron), got " + std::to_string(options.simplify));
     return r;
   }
   auto t0 = std::chrono::steady_clock::now();
@@ -61,12 +66,14 @@ HullMeshResult meshHulls(const acd::TriMesh& model, const HullMeshOptions& optio
     r.hulls = std::move(hulls);
     r.maxOutside = 0.0;
     for (std::size_t i = 0; i < r.hulls.size(); ++i)
-      r.maxOutside = std::max(r.maxOutside, maxOutsideDistance(r.hulls[i], r.decomposition.components[i].mesh.vertices));
+      r.maxOutside =
+          std::max(r.maxOutside, maxOutsideDistance(r.hulls[i], r.decomposition.components[i].mesh.vertices));
     for (int attempt = 0; attempt < 3 && !r.tetgen.ok; ++attempt) {
       const double tolerance = options.tolerance * std::pow(10.0, attempt);
       t0 = std::chrono::steady_clock::now();
       HullComplexOptions copt;
       copt.tolerance = tolerance;
+      copt.closedGap = kClosedGapPerTau * options.tau;
       r.complex = buildHullComplex(r.hulls, copt);
       r.times.complex += since(t0);
       r.toleranceUsed = tolerance;
@@ -79,8 +86,7 @@ HullMeshResult meshHulls(const acd::TriMesh& model, const HullMeshOptions& optio
   // Simplified hulls: when TetGen refuses every complex, smaller budgets give other regions, and
   // one of them is often accepted; the exact hulls come last.
   const int lowestBudget = std::min(options.simplify, std::max(8, options.simplify - 8));
-  for (int budget = options.simplify; options.simplify > 0 && !r.tetgen.ok && budget >= lowestBudget;
-       budget -= 4) {
+  for (int budget = options.simplify; options.simplify > 0 && !r.tetgen.ok && budget >= lowestBudget; budget -= 4) {
     t0 = std::chrono::steady_clock::now();
     HullSimplifyOptions sopt;
     sopt.maxVertices = budget;
@@ -106,10 +112,11 @@ HullMeshResult meshHulls(const acd::TriMesh& model, const HullMeshOptions& optio
     if (!region.empty()) r.hullsVolume += acd::signedVolume(region);
   // Containment where it matters: each component inside the region that was meshed for it.
   for (std::size_t i = 0; i < r.complex.regions.size(); ++i)
-    r.maxOutsideRegion = std::max(r.maxOutsideRegion, r.complex.regions[i].empty()
-                                                          ? std::numeric_limits<double>::infinity()
-                                                          : maxOutsideDistance(r.complex.regions[i],
-                                                                               r.decomposition.components[i].mesh.vertices));
+    r.maxOutsideRegion =
+        std::max(r.maxOutsideRegion,
+                 r.complex.regions[i].empty()
+                     ? std::numeric_limits<double>::infinity()
+                     : maxOutsideDistance(r.complex.regions[i], r.decomposition.components[i].mesh.vertices));
   if (!r.tetgen.ok) {
     // Say which facets were at fault: TetGen's own intersection check (`d`) on the same input.
     TetGenOptions check = options.tetgen;
@@ -139,7 +146,8 @@ DirectMeshResult meshModelDirectly(const acd::TriMesh& model, const TetGenOption
   for (const acd::TriMesh& piece : solid.components) {
     const int base = static_cast<int>(plc.points.size());
     plc.points.insert(plc.points.end(), piece.vertices.begin(), piece.vertices.end());
-    for (const acd::Face& f : piece.faces) plc.facets.push_back({{base + f[0], base + f[1], base + f[2]}, kBoundaryFacet});
+    for (const acd::Face& f : piece.faces)
+      plc.facets.push_back({{base + f[0], base + f[1], base + f[2]}, kBoundaryFacet});
   }
   // TetGen cannot recover from intersecting facets; refuse them here, by name.
   acd::TriMesh all;

@@ -1,15 +1,15 @@
 // The complex of hulls: contacts, overlap clipping and interface overlay on boxes with known answers.
+#include <gtest/gtest.h>
+
+#include <acd/algo/shapes.hpp>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <set>
+
 #include "hull_complex.hpp"
 #include "tet_checks.hpp"
 #include "tetgen_run.hpp"
-
-#include <acd/algo/shapes.hpp>
-
-#include <gtest/gtest.h>
-
-#include <algorithm>
-#include <array>
-#include <set>
 
 using namespace tetmesh;
 
@@ -39,11 +39,90 @@ double interfaceArea(const TetMesh& m) {
   return area;
 }
 
+/// Smallest dihedral angle of any tet, in degrees, from the angles between outward face normals
+/// (computed here, not by the mesher's own quality measure).
+double smallestDihedral(const TetMesh& m) {
+  double smallest = 180.0;
+  for (const auto& t : m.tets) {
+    std::array<Vec3, 4> normal;
+    for (int k = 0; k < 4; ++k) {
+      const Vec3 &a = m.points[t[(k + 1) % 4]], &b = m.points[t[(k + 2) % 4]], &c = m.points[t[(k + 3) % 4]];
+      Vec3 n = (b - a).cross(c - a).normalized();
+      if (n.dot(m.points[t[k]] - a) > 0) n = -n;  // away from the opposite corner
+      normal[k] = n;
+    }
+    for (int x = 0; x < 4; ++x)
+      for (int y = x + 1; y < 4; ++y)
+        smallest =
+            std::min(smallest, 180.0 - std::acos(std::clamp(normal[x].dot(normal[y]), -1.0, 1.0)) * 180.0 / M_PI);
+  }
+  return smallest;
+}
+
+/// Tets that cannot be reached from the first one through shared faces.
+int unreachableTets(const TetMesh& m) {
+  std::vector<std::vector<int>> next(m.tets.size());
+  for (const auto& [face, tets] : tmtest::tetFaces(m))
+    if (tets.size() == 2) next[tets[0]].push_back(tets[1]), next[tets[1]].push_back(tets[0]);
+  std::vector<char> seen(m.tets.size(), 0);
+  std::vector<int> stack{0};
+  int reached = 0;
+  while (!stack.empty() && !m.tets.empty()) {
+    const int t = stack.back();
+    stack.pop_back();
+    if (seen[t]) continue;
+    seen[t] = 1, ++reached;
+    for (int u : next[t]) stack.push_back(u);
+  }
+  return static_cast<int>(m.tets.size()) - reached;
+}
+
 }  // namespace
 
+TEST(HullComplex, TwoBoxesFaceToFaceShareOneInterfaceAndMakeNoSlivers) {
+  const HullComplex c = buildHullComplex(
+      {acd::shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1)), acd::shapes::box(Vec3(1, 0, 0), Vec3(2, 1, 1))});
+  ASSERT_TRUE(c.status.ok()) << c.status.message;
+  EXPECT_EQ(c.contactPairs, 1);
+  EXPECT_EQ(c.contactPlanes, 1);
+  const TetMesh m = meshOf(c);
+  EXPECT_NEAR(interfaceArea(m), 1.0, 1e-12);
+  EXPECT_EQ(unreachableTets(m), 0);
+  // Cubes cut into tets without Steiner points: every dihedral angle is 45 degrees or more.
+  EXPECT_GE(smallestDihedral(m), 30.0);
+  EXPECT_LE(m.tets.size(), 14u);
+}
+
+TEST(HullComplex, AGapNarrowerThanTheClosedGapIsClosed) {
+  // An L of two boxes 1e-6 apart (of a half-diagonal of about 1.6): closed at closedGap 2e-4,
+  // both faces moved half way; left open without it.
+  const std::vector<acd::TriMesh> l{acd::shapes::box(Vec3(0, 0, 0), Vec3(2, 1, 1)),
+                                    acd::shapes::box(Vec3(0, 1 + 1e-6, 0), Vec3(1, 2, 1))};
+  HullComplexOptions closing;
+  closing.closedGap = 2e-4;
+  const HullComplex c = buildHullComplex(l, closing);
+  ASSERT_TRUE(c.status.ok()) << c.status.message;
+  EXPECT_EQ(c.contactPairs, 1);
+  EXPECT_EQ(c.contactPlanes, 1);
+  const TetMesh m = meshOf(c);
+  EXPECT_NEAR(interfaceArea(m), 1.0, 1e-9);
+  EXPECT_EQ(unreachableTets(m), 0);  // one piece
+  const auto v = volumePerLabel(m, 2);
+  EXPECT_NEAR(v[1], 2.0 * (1 + 0.5e-6), 1e-9);
+  EXPECT_NEAR(v[2], 1.0 - 0.5e-6, 1e-9);
+  EXPECT_GE(smallestDihedral(m), 29.9);  // 30 degrees, less what the half-gap shift takes off
+
+  const HullComplex open = buildHullComplex(l);
+  ASSERT_TRUE(open.status.ok()) << open.status.message;
+  EXPECT_EQ(open.contactPairs, 0);
+  const TetMesh apart = meshOf(open);
+  EXPECT_NEAR(interfaceArea(apart), 0.0, 1e-12);
+  EXPECT_GT(unreachableTets(apart), 0);  // two pieces
+}
+
 TEST(HullComplex, SeparateHullsHaveNoContact) {
-  const HullComplex c = buildHullComplex({acd::shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1)),
-                                          acd::shapes::box(Vec3(2, 0, 0), Vec3(3, 1, 1))});
+  const HullComplex c = buildHullComplex(
+      {acd::shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1)), acd::shapes::box(Vec3(2, 0, 0), Vec3(3, 1, 1))});
   ASSERT_TRUE(c.status.ok()) << c.status.message;
   EXPECT_EQ(c.contactPairs, 0);
   EXPECT_EQ(c.interfaceFacets, 0);
@@ -56,8 +135,8 @@ TEST(HullComplex, SeparateHullsHaveNoContact) {
 TEST(HullComplex, PartlyOverlappingFacesBecomeOneInterface) {
   // A unit cube on a 2 x 2 x 1 slab, half over its edge: it stands at z = 1 on
   // [1.5, 2.5] x [0.5, 1.5], so the faces share [1.5, 2] x [0.5, 1.5], area 0.5.
-  const HullComplex c = buildHullComplex({acd::shapes::box(Vec3(0, 0, 0), Vec3(2, 2, 1)),
-                                          acd::shapes::box(Vec3(1.5, 0.5, 1), Vec3(2.5, 1.5, 2))});
+  const HullComplex c = buildHullComplex(
+      {acd::shapes::box(Vec3(0, 0, 0), Vec3(2, 2, 1)), acd::shapes::box(Vec3(1.5, 0.5, 1), Vec3(2.5, 1.5, 2))});
   ASSERT_TRUE(c.status.ok()) << c.status.message;
   EXPECT_EQ(c.contactPairs, 1);
   EXPECT_EQ(c.overlappingPairs, 0);
@@ -73,8 +152,8 @@ TEST(HullComplex, PartlyOverlappingFacesBecomeOneInterface) {
 TEST(HullComplex, OverlappingHullsAreSplitAtOnePlane) {
   // Two unit-section bars overlapping over x in [1, 1.5]: the overlap goes to one side of a
   // plane x = const in [1, 1.5]; together they fill the union, volume 2 * 1.5 - 0.5 = 2.5.
-  const HullComplex c = buildHullComplex({acd::shapes::box(Vec3(0, 0, 0), Vec3(1.5, 1, 1)),
-                                          acd::shapes::box(Vec3(1, 0, 0), Vec3(2.5, 1, 1))});
+  const HullComplex c = buildHullComplex(
+      {acd::shapes::box(Vec3(0, 0, 0), Vec3(1.5, 1, 1)), acd::shapes::box(Vec3(1, 0, 0), Vec3(2.5, 1, 1))});
   ASSERT_TRUE(c.status.ok()) << c.status.message;
   EXPECT_EQ(c.overlappingPairs, 1);
   EXPECT_NEAR(c.maxOverlapDepth, 0.5, 1e-12);
@@ -89,9 +168,10 @@ TEST(HullComplex, OverlappingHullsAreSplitAtOnePlane) {
 TEST(HullComplex, FourBoxesMeetingAtAnEdgeConform) {
   // Four unit cubes around the z axis; a fifth across the top of two of them. Interfaces
   // cross each other (T-junctions where the top slab meets the vertical interface).
-  std::vector<acd::TriMesh> hulls{acd::shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1)), acd::shapes::box(Vec3(-1, 0, 0), Vec3(0, 1, 1)),
-                                  acd::shapes::box(Vec3(-1, -1, 0), Vec3(0, 0, 1)), acd::shapes::box(Vec3(0, -1, 0), Vec3(1, 0, 1)),
-                                  acd::shapes::box(Vec3(-0.5, -0.25, 1), Vec3(0.75, 0.5, 1.5))};
+  std::vector<acd::TriMesh> hulls{
+      acd::shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1)), acd::shapes::box(Vec3(-1, 0, 0), Vec3(0, 1, 1)),
+      acd::shapes::box(Vec3(-1, -1, 0), Vec3(0, 0, 1)), acd::shapes::box(Vec3(0, -1, 0), Vec3(1, 0, 1)),
+      acd::shapes::box(Vec3(-0.5, -0.25, 1), Vec3(0.75, 0.5, 1.5))};
   const HullComplex c = buildHullComplex(hulls);
   ASSERT_TRUE(c.status.ok()) << c.status.message;
   const TetMesh m = meshOf(c);
