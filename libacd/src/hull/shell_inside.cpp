@@ -68,27 +68,41 @@ bool orientConsistently(TriMesh& shell) {
 }
 
 /// The shell without its loose flaps: faces with an edge no other face uses go, again and again
-/// (a fin welded to a closed box goes; an open box goes entirely).
+/// (a fin welded to a closed box goes; an open box goes entirely). A work list of the faces whose
+/// edge just became loose, so that peeling a scan ring by ring from its holes costs its size once.
 TriMesh peeled(const TriMesh& shell) {
-  std::unordered_map<std::uint64_t, int> uses;
-  for (const Face& f : shell.faces)
-    for (int k = 0; k < 3; ++k) ++uses[edgeKey(f[k], f[(k + 1) % 3])];
-  std::vector<bool> gone(shell.faces.size(), false);
-  for (bool changed = true; changed;) {
-    changed = false;
-    for (std::size_t i = 0; i < shell.faces.size(); ++i) {
-      if (gone[i]) continue;
-      const Face& f = shell.faces[i];
-      bool loose = false;
-      for (int k = 0; k < 3; ++k) loose |= uses[edgeKey(f[k], f[(k + 1) % 3])] == 1;
-      if (!loose) continue;
-      gone[i] = changed = true;
-      for (int k = 0; k < 3; ++k) --uses[edgeKey(f[k], f[(k + 1) % 3])];
+  const int nf = static_cast<int>(shell.faces.size());
+  std::vector<std::pair<std::uint64_t, int>> sides(3 * static_cast<std::size_t>(nf));  // (edge, 3 * face + k)
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) sides[3 * f + k] = {edgeKey(shell.faces[f][k], shell.faces[f][(k + 1) % 3]), 3 * f + k};
+  std::sort(sides.begin(), sides.end());
+  std::vector<int> edgeOfSide(sides.size()), start{0}, uses;  // sides[start[e]..start[e+1]) lie on edge e
+  for (std::size_t i = 0; i < sides.size(); ++i) {
+    if (i > 0 && sides[i].first != sides[i - 1].first) start.push_back(static_cast<int>(i));
+    edgeOfSide[sides[i].second] = static_cast<int>(start.size()) - 1;
+  }
+  start.push_back(static_cast<int>(sides.size()));
+  for (std::size_t e = 0; e + 1 < start.size(); ++e) uses.push_back(start[e + 1] - start[e]);
+  std::vector<char> gone(nf, 0);
+  std::vector<int> work;
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k)
+      if (uses[edgeOfSide[3 * f + k]] == 1) work.push_back(f);
+  while (!work.empty()) {
+    const int f = work.back();
+    work.pop_back();
+    if (gone[f]) continue;
+    gone[f] = 1;
+    for (int k = 0; k < 3; ++k) {
+      const int e = edgeOfSide[3 * f + k];
+      if (--uses[e] != 1) continue;
+      for (int i = start[e]; i < start[e + 1]; ++i)
+        if (!gone[sides[i].second / 3]) work.push_back(sides[i].second / 3);
     }
   }
   TriMesh out{shell.vertices, {}};
-  for (std::size_t i = 0; i < shell.faces.size(); ++i)
-    if (!gone[i]) out.faces.push_back(shell.faces[i]);
+  for (int f = 0; f < nf; ++f)
+    if (!gone[f]) out.faces.push_back(shell.faces[f]);
   return out;
 }
 
