@@ -92,6 +92,7 @@ void printSummary(const DecomposeArgs& a, const acd::Decomposition& d, double un
   if (d.wrap.used)
     std::printf("  wrap           %d pieces wrapped (alpha %g, offset %g); Hausdorff distance to the input %.4f\n",
                 d.wrap.wrappedPieces, d.wrap.alpha, d.wrap.offset, d.wrap.hausdorff);
+  std::fflush(stdout);  // before the warnings on stderr: with both sent to one file, no line is cut
 }
 
 int decomposeMesh(DecomposeArgs& a, const acd::TriMesh& mesh) {

@@ -54,6 +54,7 @@ void printSummary(const SurfaceArgs& a, const acd::SurfaceDecomposition& d, std:
               d.times.total, d.times.prepare, d.times.merging, d.times.hulls, d.times.concavity, d.times.splitting);
   std::printf("  output         %s (patches.obj %ju bytes)\n", a.out.c_str(), bytes);
   for (const auto& line : d.repairs) std::printf("  repaired       %s\n", line.c_str());
+  std::fflush(stdout);  // before the warnings on stderr: with both sent to one file, no line is cut
 }
 
 }  // namespace
