@@ -52,6 +52,20 @@ TEST(HoleFilling, OpenBoxGetsItsSideBack) {
   for (std::size_t v = 0; v < open.vertices.size(); ++v) EXPECT_EQ(h.mesh.vertices[v], open.vertices[v]);
 }
 
+TEST(HoleFilling, APlanarLoopIsClosedFlat) {
+  // The open box subdivided twice: its hole is the missing side, 16 edges in one plane. Faired,
+  // the patch would bulge out towards the box's corners (2.044 instead of 2).
+  const TriMesh open = acdtest::midpointSubdivided(acdtest::midpointSubdivided(openBox()));
+  ASSERT_EQ(diagnose(open).boundaryEdges, 16);
+  const HoleFilling h = fillHoles(open);
+  ASSERT_TRUE(h.status.ok()) << h.status.message;
+  EXPECT_TRUE(isClosedOriented(h.mesh));
+  EXPECT_EQ(h.addedVertices, 0);
+  EXPECT_NEAR(signedVolume(h.mesh), 2.0, 1e-12);
+  for (std::size_t f = open.faces.size(); f < h.mesh.faces.size(); ++f)
+    for (int v : h.mesh.faces[f]) EXPECT_EQ(h.mesh.vertices[v].x(), 2.0);  // the missing side lies at x = 2
+}
+
 TEST(HoleFilling, FairedPatchFollowsTheSphere) {
   const TriMesh open = cappedSphere(0.5);
   const HoleFilling h = fillHoles(open);

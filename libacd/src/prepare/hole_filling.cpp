@@ -6,6 +6,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 
+#include <Eigen/Eigenvalues>
 #include <acd/algo/hole_filling.hpp>
 #include <acd/algo/surface_mesh_copy.hpp>
 #include <acd/diagnosis.hpp>
@@ -31,12 +32,36 @@ std::string describeLoop(const Mesh& m, Mesh::Halfedge_index h, int length) {
   return s.str();
 }
 
+Vec3 toVec(const Point& p) { return Vec3(p.x(), p.y(), p.z()); }
+
 /// How a loop is closed, tried in this order: a faired patch follows the surrounding curvature; a
 /// flat one (the minimum-area triangulation of the loop) stays close to the loop; a fan from a new
 /// vertex at the loop's centre needs no triangle on three loop vertices, which for loops that
 /// run straight through their vertices (a triangular hole of a subdivided model) may be all the
-/// other two can find.
+/// other two can find. A loop that lies in a plane starts flat: a missing face of a CAD part is
+/// closed by that face, where fairing would bulge it out towards the curvature of the corners
+/// around it.
 enum class Patch { Faired, Flat, Fan };
+
+/// A loop lies in a plane when its vertices stand off their least-squares plane by at most this
+/// share of the loop's extent: exactly planar up to the rounding of a file's coordinates.
+constexpr double kPlanarLoop = 1e-6;
+
+bool planarLoop(const Mesh& m, Mesh::Halfedge_index border) {
+  std::vector<Vec3> points;
+  for (Mesh::Halfedge_index h : CGAL::halfedges_around_face(border, m)) points.push_back(toVec(m.point(m.target(h))));
+  Vec3 mean = Vec3::Zero();
+  Box3 box;
+  box.lo = box.hi = points.front();
+  for (const Vec3& p : points) mean += p, box.lo = box.lo.cwiseMin(p), box.hi = box.hi.cwiseMax(p);
+  mean /= static_cast<double>(points.size());
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (const Vec3& p : points) covariance += (p - mean) * (p - mean).transpose();
+  const Vec3 normal = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance).eigenvectors().col(0);
+  double off = 0.0;
+  for (const Vec3& p : points) off = std::max(off, std::abs(normal.dot(p - mean)));
+  return off <= kPlanarLoop * box.size().norm();
+}
 
 struct Filled {
   Mesh mesh;
@@ -44,8 +69,6 @@ struct Filled {
   int failedLoop = -1;          // a hole that found no triangulation
   int addedVertices = 0, unfaired = 0;
 };
-
-Vec3 toVec(const Point& p) { return Vec3(p.x(), p.y(), p.z()); }
 
 bool zeroArea(const Mesh& m, Mesh::Halfedge_index h, double squaredDiag) {
   const std::vector<Vec3> corners = {toVec(m.point(m.source(h))), toVec(m.point(m.target(h))),
@@ -176,6 +199,8 @@ HoleFilling fillHoles(const TriMesh& input) {
   // Each loop's patch in the first way of `Patch` that gives it neither a face through the model
   // nor one without area.
   std::vector<Patch> how(loops.size(), Patch::Faired);
+  for (std::size_t i = 0; i < loops.size(); ++i)
+    if (planarLoop(m, loops[i])) how[i] = Patch::Flat;
   const double squaredDiag = boundingBox(input).size().squaredNorm();
   Filled filled;
   for (int round = 0;; ++round) {
