@@ -210,3 +210,13 @@ TEST(ShellsInside, ADenseOpenShellStillBoundsItsSolid) {
   for (const Vec3& q : {Vec3(1.1, 0, 0), Vec3(0, 0, 1.05), Vec3(0.7, 0.7, 0.7)})
     EXPECT_FALSE(solid.inside(q)) << q.transpose();
 }
+
+TEST(ShellsInside, AShellGivenOnBothSidesBoundsItsSolid) {
+  // Each face of the box twice, once per orientation (as some exporters write every shell):
+  // one side is the box; both together would wind around nothing.
+  const TriMesh b = box(Vec3(0, 0, 0), Vec3(1, 1, 1));
+  const ShellsInside solid(concatenate({flipped(b), b}));
+  EXPECT_EQ(solid.solidShells(), 1);
+  for (const Vec3& q : probes(2000))
+    ASSERT_EQ(solid.inside(q), inBox(q, Vec3(0, 0, 0), Vec3(1, 1, 1))) << q.transpose();
+}

@@ -1,12 +1,12 @@
 // The input's solid, shell by shell: InsideTest (exact) on every shell that bounds a solid.
 #include <acd/algo/close_vertices.hpp>
+#include <acd/algo/duplicate_faces.hpp>
 #include <acd/algo/inside.hpp>
 #include <acd/algo/shell_inside.hpp>
 #include <acd/algo/union_find.hpp>
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <set>
 #include <unordered_map>
 #include <vector>
 
@@ -197,15 +197,14 @@ struct ShellsInside::Impl {
 ShellsInside::ShellsInside(const TriMesh& soup, double weld) : impl_(std::make_unique<Impl>()) {
   const Box3 box = boundingBox(soup);
   const std::vector<int> root = closeVertexRoots(soup.vertices, box, weld * box.size().norm());
-  std::set<std::array<int, 3>> seen;
-  TriMesh welded{soup.vertices, {}};
+  std::vector<Face> faces;
   for (Face f : soup.faces) {
     for (int& v : f) v = root[v];
-    if (f[0] == f[1] || f[1] == f[2] || f[2] == f[0]) continue;
-    std::array<int, 3> key{f[0], f[1], f[2]};  // the same triangle and orientation: smallest first
-    std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
-    if (seen.insert(key).second) welded.faces.push_back(f);
+    if (f[0] != f[1] && f[1] != f[2] && f[2] != f[0]) faces.push_back(f);
   }
+  // Copies and double-sided faces as the repair resolves them (neither moves a point): a closed
+  // shell an exporter wrote on both sides bounds what one side does, not nothing.
+  TriMesh welded{soup.vertices, resolveDuplicates(faces).faces};
   std::size_t rimEdges = 0;
   for (TriMesh& shell : splitEdgeConnected(welded)) {
     TriMesh closed = balanced(shell) ? shell : peeled(shell);

@@ -2,15 +2,6 @@
 // CGAL's Polygon Mesh Processing provides are CGAL's; what is ours is the merge of close
 // vertices (CGAL 5.5 merges exact copies only) and the choice between the two sides of a
 // double-sided face, which needs the faces around it.
-#include <acd/algo/close_vertices.hpp>
-#include <acd/algo/face_order.hpp>
-#include <acd/algo/surface_mesh_copy.hpp>
-#include <acd/algo/t_junctions.hpp>
-#include <acd/algo/touching_solids.hpp>
-#include <acd/algo/union_find.hpp>
-#include <acd/diagnosis.hpp>
-#include <acd/repair.hpp>
-
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -20,6 +11,13 @@
 #include <CGAL/Polygon_mesh_processing/stitch_borders.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <acd/algo/close_vertices.hpp>
+#include <acd/algo/duplicate_faces.hpp>
+#include <acd/algo/surface_mesh_copy.hpp>
+#include <acd/algo/t_junctions.hpp>
+#include <acd/algo/touching_solids.hpp>
+#include <acd/diagnosis.hpp>
+#include <acd/repair.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -37,88 +35,6 @@ using SurfaceMesh = CGAL::Surface_mesh<Point>;
 using Polygon = std::array<std::size_t, 3>;
 
 bool finite(const Vec3& p) { return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()); }
-
-struct DuplicateOutcome {
-  std::vector<Face> faces;
-  int exactCopies = 0, keptOne = 0, droppedBoth = 0;
-};
-
-/// Exact copies go. A face present in both orientations is a double-sided face: a connected set
-/// of them (joined across edges no other face uses) whose outer edges all lie where the rest of
-/// the mesh is already closed (an even, non-zero number of other faces) is an inner wall that
-/// closes nothing, and goes entirely; otherwise one side of each stays (it closes a hole, or it
-/// is a sheet that is part of the shape), the one the file gives first.
-DuplicateOutcome resolveDuplicates(const std::vector<Face>& faces) {
-  DuplicateOutcome out;
-  const int nf = static_cast<int>(faces.size());
-  std::vector<std::pair<Face, int>> keyed(nf);
-  for (int f = 0; f < nf; ++f) {
-    keyed[f] = {faces[f], f};
-    std::sort(keyed[f].first.begin(), keyed[f].first.end());
-  }
-  std::sort(keyed.begin(), keyed.end());
-  std::vector<char> keep(nf, 0);
-  std::vector<char> doubleSided(nf, 0);  // on the kept face of a pair
-  for (int i = 0; i < nf;) {
-    int j = i;
-    while (j < nf && keyed[j].first == keyed[i].first) ++j;
-    const int first = keyed[i].second;  // lowest face number of the group
-    int reverse = -1;
-    for (int k = i + 1; k < j; ++k) {
-      const int g = keyed[k].second;
-      if (!sameCyclicOrder(faces[g], faces[first]) && reverse < 0) reverse = g;
-    }
-    keep[first] = 1;
-    out.exactCopies += (j - i) - (reverse >= 0 ? 2 : 1);
-    if (reverse >= 0) doubleSided[first] = 1;
-    i = j;
-  }
-  // Edge uses: by single faces (c) and by double-sided pairs (p).
-  std::unordered_map<std::uint64_t, std::pair<int, int>> uses;
-  for (int f = 0; f < nf; ++f)
-    if (keep[f])
-      for (int k = 0; k < 3; ++k) {
-        auto& u = uses[edgeKey(faces[f][k], faces[f][(k + 1) % 3])];
-        (doubleSided[f] ? u.second : u.first) += 1;
-      }
-  UnionFind sets(nf);
-  std::unordered_map<std::uint64_t, int> firstPairOnEdge;
-  for (int f = 0; f < nf; ++f)
-    if (doubleSided[f])
-      for (int k = 0; k < 3; ++k) {
-        const std::uint64_t e = edgeKey(faces[f][k], faces[f][(k + 1) % 3]);
-        if (uses[e].second < 2) continue;
-        auto [it, inserted] = firstPairOnEdge.emplace(e, f);
-        if (!inserted) sets.joinKeepingSmallest(it->second, f);
-      }
-  std::unordered_map<int, char> setClosesNothing;  // root -> every outer edge where the rest is closed
-  for (int f = 0; f < nf; ++f)
-    if (doubleSided[f]) setClosesNothing.emplace(sets.find(f), 0);
-  std::unordered_map<int, int> outerEdges;
-  for (int f = 0; f < nf; ++f)
-    if (doubleSided[f]) {
-      const int root = sets.find(f);
-      for (int k = 0; k < 3; ++k) {
-        const auto& u = uses[edgeKey(faces[f][k], faces[f][(k + 1) % 3])];
-        if (u.second >= 2) continue;  // inside the set
-        ++outerEdges[root];
-        if (u.first == 0 || u.first % 2 != 0) setClosesNothing[root] = 2;  // needed, or a free border
-      }
-    }
-  for (int f = 0; f < nf; ++f) {
-    if (!keep[f]) continue;
-    if (doubleSided[f]) {
-      const int root = sets.find(f);
-      if (setClosesNothing[root] != 2 && outerEdges[root] > 0) {
-        ++out.droppedBoth;
-        continue;
-      }
-      ++out.keptOne;
-    }
-    out.faces.push_back(faces[f]);
-  }
-  return out;
-}
 
 std::string count(int n, const char* singular, const char* plural) {
   return std::to_string(n) + " " + (n == 1 ? singular : plural);
@@ -170,7 +86,8 @@ void repairWithCgal(const TriMesh& merged, const RepairOptions& options, double 
       const int at = points[b[0]] == a ? 0 : points[b[1]] == a ? 1 : 2;
       if (points[polygons[i][1]] != points[b[(at + 1) % 3]]) ++r.flippedFaces;
     }
-    if (!PMP::is_polygon_soup_a_polygon_mesh(polygons)) throw std::runtime_error("the oriented soup is not a polygon mesh");
+    if (!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+      throw std::runtime_error("the oriented soup is not a polygon mesh");
     PMP::polygon_soup_to_polygon_mesh(points, polygons, sm);
     // 4. Borders that run along each other.
     r.stitchedEdges = static_cast<int>(PMP::stitch_borders(sm));
@@ -228,21 +145,24 @@ void describeRepairs(const RepairOptions& options, MeshRepair& r) {
     r.repairs.push_back("double-sided faces: dropped the reverse side of " +
                         count(r.doubleSidedKeptOne, "face", "faces") + " given in both orientations");
   if (r.doubleSidedDroppedBoth > 0)
-    r.repairs.push_back("double-sided faces: dropped both sides of " + count(r.doubleSidedDroppedBoth, "face", "faces") +
+    r.repairs.push_back("double-sided faces: dropped both sides of " +
+                        count(r.doubleSidedDroppedBoth, "face", "faces") +
                         " given in both orientations that close nothing (an inner wall)");
   if (r.tJunctionEdges > 0)
-    r.repairs.push_back("T-junctions: split " + count(r.tJunctionEdges, "boundary edge", "boundary edges") + " at the " +
-                        count(r.tJunctionVertices, "vertex", "vertices") +
+    r.repairs.push_back("T-junctions: split " + count(r.tJunctionEdges, "boundary edge", "boundary edges") +
+                        " at the " + count(r.tJunctionVertices, "vertex", "vertices") +
                         " of the other side of the seam lying on them (a crack of zero width)");
   if (r.splitVertices > 0)
     r.repairs.push_back("split non-manifold edges and vertices: " + count(r.splitVertices, "vertex", "vertices") +
                         " copied so that each sheet has its own");
   if (r.flippedFaces > 0)
-    r.repairs.push_back("oriented: flipped " + count(r.flippedFaces, "face", "faces") + " to agree with their neighbours");
+    r.repairs.push_back("oriented: flipped " + count(r.flippedFaces, "face", "faces") +
+                        " to agree with their neighbours");
   if (r.stitchedEdges > 0)
     r.repairs.push_back("stitched " + count(r.stitchedEdges, "pair", "pairs") + " of boundary edges");
   if (r.removedDegenerateFaces > 0)
-    r.repairs.push_back("removed " + count(r.removedDegenerateFaces, "zero-area or needle face", "zero-area or needle faces") +
+    r.repairs.push_back("removed " +
+                        count(r.removedDegenerateFaces, "zero-area or needle face", "zero-area or needle faces") +
                         " by edge collapse or flip");
   if (r.leftDegenerateFaces > 0)
     r.repairs.push_back(count(r.leftDegenerateFaces, "zero-area face", "zero-area faces") + " could not be removed");

@@ -11,8 +11,10 @@ namespace acd {
 
 /// The solid of a triangle soup: the union of what its shells bound. Vertices within `weld` (a
 /// fraction of the bounding box's diagonal: the repair's own merge, which moves nothing that
-/// matters) are welded first, and a face repeated with the same orientation is kept once
-/// (exporters split vertices along texture seams and repeat faces). A shell is an edge-connected
+/// matters) are welded first, and faces given twice are resolved as the repair resolves them
+/// (acd/algo/duplicate_faces.hpp: a copy goes; of a face given in both orientations one side
+/// stays, or neither when the two form an inner wall): exporters split vertices along texture
+/// seams, repeat faces and write closed shells on both sides. A shell is an edge-connected
 /// piece. It is closed when every edge is used as often in one direction as in the other
 /// (touching solids that share an edge included), or is a closed, orientable manifold with some
 /// faces flipped (oriented again here), once loose flaps are peeled off (faces with an edge no
