@@ -34,7 +34,7 @@ struct PreparedModel {
 /// through, touch or lie in another (options.uniteShells; acd/algo/shell_union.hpp) and wraps the pieces that
 /// still are not clean solids (options.wrap; otherwise refuses them as prepareSolid does). Wrap
 /// parameters follow options.tau (wrapParametersFor). With `buildWrap` off only the reason is
-/// given (acd info). Never throws.
+/// given (acd info), and the status is ok when the wrap would make the solid. Never throws.
 PreparedModel prepareModel(const TriMesh& mesh, const DecomposeOptions& options, bool buildWrap = true);
 
 /// prepareModel (which unites the shells that meet, unless options.uniteShells is off), then each

@@ -197,8 +197,11 @@ PreparedModel prepareModel(const TriMesh& mesh, const DecomposeOptions& options,
   dropCavities(out);
   if (options.uniteShells) uniteShells(out, options.invariant);
   out.overlappingShells = classifyShells(out.shells).overlapping;
-  out.status = out.shells.empty() ? Status::error(StatusCode::EmptyMesh, "no solid left after the repairs")
-                                  : Status::success();
+  // Without the wrap built (acd info), pieces waiting for it still make a solid.
+  const bool wrapToCome = !buildWrap && !unclosable.empty();
+  out.status = out.shells.empty() && !wrapToCome
+                   ? Status::error(StatusCode::EmptyMesh, "no solid left after the repairs")
+                   : Status::success();
   out.seconds = secondsSince(start);
   return out;
 }

@@ -411,6 +411,18 @@ TEST_F(Cli, InfoOnTheL) {
   EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(volume\s+3\b)"))) << r.out;
 }
 
+TEST_F(Cli, InfoSaysAModelOnlyTheWrapCanCloseIsDecomposedThroughIt) {
+  // An open terrain sheet: no patch closes it; decompose wraps it, and info must say so, not
+  // that the solid decomposition is refused.
+  const std::string model = writeModel("terrain.off", badmeshes::byName("hole_unpatchable"));
+  const acdtest::ToolRun r = acd("info " + quote(model));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("solid decomposition   possible, through a watertight wrap"), std::string::npos) << r.out;
+  const acdtest::ToolRun d = acd("decompose " + quote(model) + " -q -o " + quote(path("terrain")));
+  EXPECT_TRUE(d.code == 0 || d.code == 8) << d.err;  // decomposed (8: a hull beyond tau, said)
+  EXPECT_TRUE(std::filesystem::exists(path("terrain") + "/report.json"));
+}
+
 TEST_F(Cli, InfoOnATorusAndAnOpenMesh) {
   const acdtest::ToolRun t = acd("info " + quote(writeModel("torus.off", shapes::torus(2.0, 0.5, 24, 12))));
   ASSERT_EQ(t.code, 0) << t.err;
