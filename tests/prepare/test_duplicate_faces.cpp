@@ -1,9 +1,9 @@
 // Faces given twice (libacd/src/prepare/duplicate_faces.cpp): copies, double-sided sheets and the
 // inner walls between cells, each with the faces that must stay.
-#include <gtest/gtest.h>
-
 #include <acd/algo/duplicate_faces.hpp>
 #include <acd/algo/shapes.hpp>
+
+#include <gtest/gtest.h>
 
 using namespace acd;
 

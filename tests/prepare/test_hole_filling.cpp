@@ -1,17 +1,18 @@
 // Hole filling (libacd/src/prepare/hole_filling.cpp, acd/algo/hole_filling.hpp): open meshes for
 // solid ACD have their holes closed first, through prepareSolid's fill-holes policy and on to the
 // decomposition.
-#include <gtest/gtest.h>
-
 #include <acd/algo/hole_filling.hpp>
-#include <acd/algo/shapes.hpp>
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/io.hpp>
-#include <cmath>
-#include <string>
+#include <acd/algo/shapes.hpp>
+
+#include <gtest/gtest.h>
 
 #include "helpers.hpp"
+
+#include <cmath>
+#include <string>
 
 using namespace acd;
 using acdtest::corpus;

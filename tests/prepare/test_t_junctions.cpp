@@ -1,10 +1,11 @@
 // T-junctions (libacd/src/prepare/t_junctions.cpp): boundary edges split at the vertices lying on
 // them, checked against the shapes' known areas, volumes and edges.
-#include <gtest/gtest.h>
-
 #include <acd/algo/t_junctions.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/repair.hpp>
+
+#include <gtest/gtest.h>
+
 #include <set>
 
 #include "bad_meshes.hpp"

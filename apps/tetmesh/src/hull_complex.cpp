@@ -1,14 +1,18 @@
 // The conforming complex of a set of convex hulls; see hull_complex.hpp for the method.
 #include "hull_complex.hpp"
 
+#include "separation.hpp"
+
+#include <acd/algo/convex_polytope.hpp>
+#include <acd/algo/hull.hpp>
+
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Constrained_triangulation_plus_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <Eigen/Dense>
-#include <acd/algo/convex_polytope.hpp>
-#include <acd/algo/hull.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -16,8 +20,6 @@
 #include <set>
 #include <string>
 #include <unordered_map>
-
-#include "separation.hpp"
 
 namespace tetmesh {
 

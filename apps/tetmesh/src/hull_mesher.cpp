@@ -1,13 +1,14 @@
 // The tetmesh pipeline; see hull_mesher.hpp.
 #include "hull_mesher.hpp"
 
-#include <acd/algo/hull.hpp>
+#include "hull_simplify.hpp"
+
 #include <acd/diagnosis.hpp>
+#include <acd/algo/hull.hpp>
+
 #include <chrono>
 #include <cmath>
 #include <limits>
-
-#include "hull_simplify.hpp"
 
 namespace tetmesh {
 

@@ -4,9 +4,10 @@
 // CGAL's exact fallback), and a query point lying exactly on a projected edge or vertex is moved
 // symbolically by (eps, eps^2) in xy, so every ray meets a shared edge exactly once. Triangles
 // are bucketed in an xy grid of about two cells per triangle.
+#include <acd/algo/inside.hpp>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
-#include <acd/algo/inside.hpp>
 #include <algorithm>
 #include <cmath>
 #include <limits>

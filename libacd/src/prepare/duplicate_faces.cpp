@@ -1,6 +1,9 @@
+// Faces given twice: copies, double-sided faces and inner walls (acd/algo/duplicate_faces.hpp).
 #include <acd/algo/duplicate_faces.hpp>
+
 #include <acd/algo/face_order.hpp>
 #include <acd/algo/union_find.hpp>
+
 #include <algorithm>
 #include <unordered_map>
 

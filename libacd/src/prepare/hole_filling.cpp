@@ -1,5 +1,10 @@
 // Hole filling with CGAL Polygon Mesh Processing on a Surface_mesh copy of the input.
 #define CGAL_EIGEN3_ENABLED 1  // fairing solves a sparse system with Eigen (linked publicly by libacd)
+#include <acd/algo/hole_filling.hpp>
+
+#include <acd/algo/surface_mesh_copy.hpp>
+#include <acd/diagnosis.hpp>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
@@ -7,9 +12,7 @@
 #include <CGAL/boost/graph/Euler_operations.h>
 
 #include <Eigen/Eigenvalues>
-#include <acd/algo/hole_filling.hpp>
-#include <acd/algo/surface_mesh_copy.hpp>
-#include <acd/diagnosis.hpp>
+
 #include <cmath>
 #include <iterator>
 #include <sstream>

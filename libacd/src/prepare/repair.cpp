@@ -2,6 +2,14 @@
 // CGAL's Polygon Mesh Processing provides are CGAL's; what is ours is the merge of close
 // vertices (CGAL 5.5 merges exact copies only) and the choice between the two sides of a
 // double-sided face, which needs the faces around it.
+#include <acd/algo/close_vertices.hpp>
+#include <acd/algo/duplicate_faces.hpp>
+#include <acd/algo/surface_mesh_copy.hpp>
+#include <acd/algo/t_junctions.hpp>
+#include <acd/algo/touching_solids.hpp>
+#include <acd/diagnosis.hpp>
+#include <acd/repair.hpp>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -11,13 +19,6 @@
 #include <CGAL/Polygon_mesh_processing/stitch_borders.h>
 #include <CGAL/Surface_mesh.h>
 
-#include <acd/algo/close_vertices.hpp>
-#include <acd/algo/duplicate_faces.hpp>
-#include <acd/algo/surface_mesh_copy.hpp>
-#include <acd/algo/t_junctions.hpp>
-#include <acd/algo/touching_solids.hpp>
-#include <acd/diagnosis.hpp>
-#include <acd/repair.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>

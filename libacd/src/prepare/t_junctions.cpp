@@ -1,4 +1,6 @@
+// T-junctions closed by splitting boundary edges (acd/algo/t_junctions.hpp).
 #include <acd/algo/t_junctions.hpp>
+
 #include <algorithm>
 #include <unordered_map>
 #include <utility>

@@ -1,15 +1,16 @@
 // The complex of hulls: contacts, overlap clipping and interface overlay on boxes with known answers.
-#include <gtest/gtest.h>
+#include "hull_complex.hpp"
+#include "tet_checks.hpp"
+#include "tetgen_run.hpp"
 
 #include <acd/algo/shapes.hpp>
+
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <set>
-
-#include "hull_complex.hpp"
-#include "tet_checks.hpp"
-#include "tetgen_run.hpp"
 
 using namespace tetmesh;
 
