@@ -252,6 +252,18 @@ Vec3 drawPoint(Draw&& draw) {
   return Vec3(x, y, z);
 }
 
+/// The generalised winding number of a mesh around q, the tests' own: its triangles' signed solid
+/// angles (Van Oosterom & Strackee) summed over 4 pi; 1 inside a closed outward mesh, 0 outside.
+inline double windingSummed(const TriMesh& m, const Vec3& q) {
+  double sum = 0.0;
+  for (const acd::Face& f : m.faces) {
+    const Vec3 a = m.vertices[f[0]] - q, b = m.vertices[f[1]] - q, c = m.vertices[f[2]] - q;
+    const double la = a.norm(), lb = b.norm(), lc = c.norm();
+    sum += 2.0 * std::atan2(a.dot(b.cross(c)), la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb);
+  }
+  return sum / (4.0 * M_PI);
+}
+
 /// n points uniform in the cube [-1, 1]^3 (or, with `ball`, in the unit ball), from `seed`.
 inline std::vector<Vec3> randomPoints(int n, std::uint64_t seed, bool ball = false) {
   std::mt19937_64 rng(seed);

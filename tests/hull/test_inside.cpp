@@ -16,19 +16,6 @@ using namespace acd;
 
 namespace {
 
-/// Winding number of a closed, outward mesh around q: 1 inside, 0 outside.
-double windingNumber(const TriMesh& m, const Vec3& q) {
-  double sum = 0;
-  for (const Face& f : m.faces) {
-    const Vec3 a = m.vertices[f[0]] - q, b = m.vertices[f[1]] - q, c = m.vertices[f[2]] - q;
-    const double la = a.norm(), lb = b.norm(), lc = c.norm();
-    const double num = a.dot(b.cross(c));
-    const double den = la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb;
-    sum += 2.0 * std::atan2(num, den);
-  }
-  return sum / (4.0 * M_PI);
-}
-
 /// Whether q lies within 1e-9 of a face (in its plane and inside its edges, slightly widened).
 bool onSurface(const TriMesh& m, const Vec3& q) {
   for (const Face& f : m.faces) {
@@ -48,7 +35,7 @@ void expectAgreesWithWinding(const TriMesh& m, const std::vector<Vec3>& points) 
   int inside = 0, checked = 0;
   for (const Vec3& q : points) {
     if (onSurface(m, q)) continue;
-    const double w = windingNumber(m, q);
+    const double w = acdtest::windingSummed(m, q);
     EXPECT_NEAR(w, std::round(w), 1e-6) << q.transpose();
     ++checked;
     const bool expected = std::lround(w) == 1;

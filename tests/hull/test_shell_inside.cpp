@@ -142,18 +142,6 @@ TEST(ShellsInside, ABoxWithoutItsLidBoundsTheBox) {
 
 namespace {
 
-/// The generalised winding number summed face by face, the tests' own: signed solid angles (Van
-/// Oosterom & Strackee) over 4 pi.
-double windingSummed(const TriMesh& m, const Vec3& q) {
-  double sum = 0.0;
-  for (const Face& f : m.faces) {
-    const Vec3 a = m.vertices[f[0]] - q, b = m.vertices[f[1]] - q, c = m.vertices[f[2]] - q;
-    const double la = a.norm(), lb = b.norm(), lc = c.norm();
-    sum += 2.0 * std::atan2(a.dot(b.cross(c)), la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb);
-  }
-  return sum / (4.0 * M_PI);
-}
-
 /// A unit sphere (icosphere of `level`) without its faces whose centroid lies above z = h.
 TriMesh cappedSphere(int level, double h) {
   const TriMesh s = shapes::icosphere(Vec3::Zero(), 1.0, level);
@@ -186,7 +174,7 @@ TEST(ShellsInside, OpenShellsAgreeWithTheirWindingNumberSummedFaceByFace) {
     const Vec3 q(u(rng), 0.5 * u(rng) - 0.5, 0.5 * u(rng) - 0.5);
     bool expected = false, clear = true;
     for (const TriMesh& s : shells) {
-      const double w = std::abs(windingSummed(s, q));
+      const double w = std::abs(acdtest::windingSummed(s, q));
       clear = clear && std::abs(w - 0.5) > 0.01;
       expected = expected || w >= 0.5;
     }
