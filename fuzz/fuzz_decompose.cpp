@@ -184,7 +184,6 @@ bool onePiece(const acd::TriMesh& m) {
 /// surface, and every input vertex lies in some hull (both with a sliver of slack for rounding
 /// and for the library's sampled measure).
 void checkPromise(const acd::TriMesh& input, const acd::Decomposition& d) {
-  if (!cleanClosed(input) || !onePiece(input)) return;
   double lo[3], hi[3];
   for (int k = 0; k < 3; ++k) lo[k] = hi[k] = input.vertices[0][k];
   for (const acd::Vec3& v : input.vertices)
@@ -260,6 +259,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
   }
   require(!d.components.empty(), "success with no components");
+  // On a clean single solid the promise holds for every resolved component. On a soup (crossing,
+  // nested, inside-out or broken shells) a hull may end beyond tau, through the wrap or the
+  // per-shell fallback: the library reports it in hullExcess and `acd decompose` exits 8 with
+  // the reason, so the harness asks only that it is reported.
+  const bool cleanSolid = !mesh.faces.empty() && cleanClosed(mesh) && onePiece(mesh);
   double volume = 0.0;
   for (const acd::Component& c : d.components) {
     require(!c.mesh.faces.empty(), "an empty component");
@@ -268,12 +272,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // A merged component's own concavity is promised only with the merge held to each component.
     require(c.unresolved || d.options.mergeScope == acd::MergeScope::Model || c.concavity <= d.options.tau * (1 + 1e-9),
             "a resolved component above tau");
-    require(c.unresolved || c.hullExcess <= d.options.tau * (1 + 1e-9), "a resolved component's hull beyond tau");
+    require(std::isfinite(c.hullExcess) && c.hullExcess >= 0, "a hull excess that is not a distance");
+    require(c.unresolved || !cleanSolid || c.hullExcess <= d.options.tau * (1 + 1e-9),
+            "a resolved component's hull beyond tau on a clean solid");
     volume += c.volume;
   }
   // Cuts neither add nor lose volume (normalised units, so the bound is scale-free).
   require(std::abs(volume - d.stats.inputVolume) <= 1e-6 * std::max(1.0, d.stats.inputVolume),
           "the components' volume differs from the input's");
-  checkPromise(mesh, d);
+  if (cleanSolid) checkPromise(mesh, d);
   return 0;
 }
