@@ -7,7 +7,7 @@
 // Figures, in the model's normalised units (its minimum enclosing sphere has radius 1):
 //   iou                 |model ∩ union| / |model ∪ union|, Monte Carlo in the joint bounding box;
 //                       the model's solid is what any of its shells encloses (an assembly's shells overlap);
-//                       an open shell encloses where its generalised winding number is at least 1/2
+//                       the open shells enclose where their generalised winding number, summed, is at least 1/2
 //   hull_outside_max    largest distance from a hull-surface sample outside the model to the model
 //   hull_outside_p99    its 99th percentile over all hull-surface samples (covered ones count 0)
 //   model_to_hulls_max  largest distance from a model-surface sample to the union of hulls
@@ -164,13 +164,10 @@ std::vector<Point> samplesOn(const std::vector<Triangle>& triangles, long count,
   return out;
 }
 
-// An open shell (a box without its lid, a scan with holes): its generalised winding number
-// (Jacobson et al. 2013), the triangles' solid angles by the formula of Van Oosterom and Strackee.
-struct OpenShell {
-  CGAL::Bbox_3 box;
-  std::vector<Triangle> triangles;
-};
-
+// The open shells (a box without its lid, a scan with holes, a solid an exporter left cracked
+// into pieces): their generalised winding number (Jacobson et al. 2013), the triangles' solid
+// angles by the formula of Van Oosterom and Strackee, summed over all of them together: a crack
+// splits one closed surface into open pieces that each wind only part way around its inside.
 // At least 1/2, less a margin: on the plane of a box's missing lid the winding number is 1/2
 // exactly, and hull samples there lie a rounding off it.
 constexpr double kHalfWinding = 0.499;
@@ -246,32 +243,25 @@ int main(int argc, char** argv) {
   std::vector<Mesh> shells;
   PMP::split_connected_components(model, shells);
   std::vector<std::unique_ptr<CGAL::Side_of_triangle_mesh<Mesh, K>>> sides;
-  std::vector<OpenShell> openShells;  // bound where they wind around a point at least half way
+  std::vector<Triangle> openTriangles;  // bound where they wind around a point at least half way
   for (const Mesh& shell : shells) {
     if (CGAL::is_closed(shell)) {
       sides.push_back(std::make_unique<CGAL::Side_of_triangle_mesh<Mesh, K>>(shell));
       continue;
     }
-    const CGAL::Bbox_3 b = PMP::bbox(shell);  // padded: the margin of kHalfWinding reaches past a missing face
-    const double pad = 0.01 * std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) +
-                                        CGAL::square(b.zmax() - b.zmin()));
-    OpenShell o{CGAL::Bbox_3(b.xmin() - pad, b.ymin() - pad, b.zmin() - pad, b.xmax() + pad, b.ymax() + pad, b.zmax() + pad), {}};
     for (auto f : shell.faces()) {
       auto h = shell.halfedge(f);
-      o.triangles.emplace_back(shell.point(shell.source(h)), shell.point(shell.target(h)),
-                               shell.point(shell.target(shell.next(h))));
+      openTriangles.emplace_back(shell.point(shell.source(h)), shell.point(shell.target(h)),
+                                 shell.point(shell.target(shell.next(h))));
     }
-    openShells.push_back(std::move(o));
   }
   auto insideModel = [&](const Point& p) {
     for (const auto& side : sides)
       if ((*side)(p) != CGAL::ON_UNBOUNDED_SIDE) return CGAL::ON_BOUNDED_SIDE;
     return CGAL::ON_UNBOUNDED_SIDE;
   };
-  auto insideOpenShell = [&](const Point& p) {
-    for (const OpenShell& o : openShells)
-      if (CGAL::do_overlap(o.box, p.bbox()) && std::abs(windingNumber(o.triangles, p)) >= kHalfWinding) return true;
-    return false;
+  auto insideOpenShells = [&](const Point& p) {
+    return !openTriangles.empty() && std::abs(windingNumber(openTriangles, p)) >= kHalfWinding;
   };
   std::vector<Triangle> hullTriangles, modelTriangles;
   for (const auto& h : hulls) hullTriangles.insert(hullTriangles.end(), h.triangles.begin(), h.triangles.end());
@@ -309,7 +299,7 @@ int main(int argc, char** argv) {
     double d = 0.0;
     if (insideModel(p) == CGAL::ON_UNBOUNDED_SIDE) {
       d = std::sqrt(modelTree.squared_distance(p)) / radius;
-      if (d > 0.005 && insideOpenShell(p)) d = 0.0;
+      if (d > 0.005 && insideOpenShells(p)) d = 0.0;
     }
     outside.push_back(d);
   }
