@@ -83,3 +83,49 @@ TEST(TJunctions, AClosedMeshIsLeftAsItIs) {
   EXPECT_EQ(s.splitEdges, 0);
   EXPECT_EQ(s.faces, box.faces);
 }
+
+TEST(TJunctions, AFlatFaceIsNotSplitAtItsOwnCorner) {
+  // Corner 2 of the flat face lies on its side 0-1 (a boundary edge); a fan to it would repeat
+  // it. The other face's corner 3 on that side still splits it. (A fuzzer's input whose repeated
+  // corner hung CGAL's orient_polygon_soup.)
+  const std::vector<Vec3> v = {{0, 0, 0}, {1, 0, 0}, {0.25, 0, 0}, {0.75, 0, 0}, {0.75, -1, 0}, {1.5, -1, 0}};
+  const std::vector<Face> faces = {{0, 1, 2}, {3, 4, 5}};
+  const TJunctionSplit s = splitTJunctions(v, faces, 1e-6);
+  for (const Face& f : s.faces) EXPECT_TRUE(f[0] != f[1] && f[1] != f[2] && f[2] != f[0]) << f[0] << f[1] << f[2];
+  EXPECT_TRUE(hasEdge(s.faces, 0, 3));
+  EXPECT_TRUE(hasEdge(s.faces, 3, 1));
+}
+
+TEST(TJunctions, TheFuzzersFlatFaceEndsRepaired) {
+  // fuzz_decompose's input that hung the repair (2026-11-29): a double cone of 1e-6 whose
+  // vertices merge into flat faces, and two far vertices.
+  const TriMesh m{{
+      {0, 0, -1.5e-06},
+      {3.487305509109044e-07, 0, -7.5e-07},
+      {1.7436527545545221e-07, 3.020095161645857e-07, -7.5e-07},
+      {-1.7436527545545208e-07, 3.020095161645857e-07, -7.5e-07},
+      {-3.487305509109044e-07, 4.270717529379321e-23, -7.5e-07},
+      {-1.7436527545545235e-07, -3.020095161645856e-07, -7.5e-07},
+      {1.7436527545545221e-07, -3.020095161645857e-07, -7.5e-07},
+      {1e-06, 0, 0},
+      {-0.4999995, 0.2734383660254038, -0.015625},
+      {-4.999999999999998e-07, 8.660254037844387e-07, 0},
+      {-1e-06, 1.2246467991473532e-22, 0},
+      {-5.000000000000005e-07, -8.660254037844384e-07, 0},
+      {5.000000000000001e-07, -8.660254037844386e-07, 0},
+      {-0.1562496512694491, 0.21875, -0.30468675},
+      {1.7436527545545221e-07, 3.020095161645857e-07, 7.5e-07},
+      {-1.7436527545545208e-07, 3.020095161645857e-07, 7.5e-07},
+      {-3.487305509109044e-07, 4.270717529379321e-23, 7.5e-07},
+      {-1.7436527545545235e-07, -3.020095161645856e-07, 7.5e-07},
+      {1.7436527545545221e-07, -3.020095161645857e-07, 7.5e-07},
+      {0, 0, 1.5e-06}},
+                  {{0, 2, 1}, {0, 3, 2}, {0, 4, 3}, {0, 5, 4}, {0, 6, 5}, {0, 1, 6}, {1, 2, 8},
+                   {1, 8, 7}, {2, 3, 9}, {2, 9, 8}, {3, 4, 10}, {3, 10, 9}, {4, 5, 11}, {4, 11, 10},
+                   {5, 6, 12}, {5, 12, 11}, {6, 1, 7}, {6, 7, 12}, {7, 8, 14}, {7, 14, 13}, {9, 8, 15},
+                   {8, 15, 14}, {9, 10, 16}, {10, 11, 17}, {10, 17, 16}, {11, 12, 18}, {11, 18, 17}, {12, 7, 13},
+                   {12, 13, 18}, {19, 13, 14}, {19, 14, 15}, {19, 15, 16}, {19, 16, 17}, {19, 17, 18}, {19, 18, 13},
+                   {10, 11, 17}}};
+  const MeshRepair r = repairMesh(m);
+  EXPECT_TRUE(r.status.ok());
+}

@@ -80,7 +80,12 @@ TJunctionSplit splitTJunctions(const std::vector<Vec3>& vertices, const std::vec
       std::vector<int> on;
       int k = 0;
       for (; k < 3 && on.empty(); ++k)
-        if (boundary[3 * i + k]) on = verticesOn(vertices, near, f[k], f[(k + 1) % 3], tolerance);
+        if (boundary[3 * i + k]) {
+          on = verticesOn(vertices, near, f[k], f[(k + 1) % 3], tolerance);
+          // A flat face's own third corner may lie on that side: a fan to it would repeat it
+          // (a triangle with a corner twice hangs CGAL's orient_polygon_soup).
+          on.erase(std::remove(on.begin(), on.end(), f[(k + 2) % 3]), on.end());
+        }
       if (on.empty()) {
         next.push_back(f);
         continue;
