@@ -388,6 +388,9 @@ def decompose_seeds():
     # 2026-11-29 (CI smoke): three unit cubes, one crossing another, tau 0.2: the wrap's hull ends
     # 1.01 tau off the model, reported (exit 8); the harness had required tau on a soup.
     out["finding-2026-11-29.bin"] = base64.b64decode("wlAU8ogCAAAAAAAAAP5zmcTDD7/kgTQdCJrdrbGk/ZVj3/ddjBZdfeRZk9pd+dA=")
+    # 2026-11-29 (a random run): a double cone of 1e-6 merged into flat faces; the T-junction
+    # split repeated a flat face's own corner and CGAL's orient_polygon_soup never returned.
+    out["finding-2026-11-29-hang.bin"] = base64.b64decode("QSxCIbd/dmzvAWezt9rzs4pOcOH1hZDyIb/kgTQdCJrdrbWk/ZVj3/+hMX9bdBgmNHN2")
     return out
 
 
