@@ -6,6 +6,8 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include <algorithm>
+#include <array>
+#include <vector>
 
 namespace acd {
 
@@ -18,12 +20,19 @@ Normalization minimumSphereNormalization(const TriMesh& mesh) {
   if (mesh.vertices.empty()) return n;
   // Relative to the bounding box's centre, so that a model far from the origin loses no digits.
   const Vec3 origin = boundingBox(mesh).center();
-  std::vector<K::Point_3> points;
-  points.reserve(mesh.vertices.size());
+  // Each position once: the LP algorithm can cycle for ever in doubles on repeated points (an
+  // assembly's shells that share corners, each with its own copy).
+  std::vector<std::array<double, 3>> unique;
+  unique.reserve(mesh.vertices.size());
   for (const Vec3& v : mesh.vertices) {
     const Vec3 p = v - origin;
-    points.emplace_back(p.x(), p.y(), p.z());
+    unique.push_back({p.x(), p.y(), p.z()});
   }
+  std::sort(unique.begin(), unique.end());
+  unique.erase(std::unique(unique.begin(), unique.end()), unique.end());
+  std::vector<K::Point_3> points;
+  points.reserve(unique.size());
+  for (const auto& p : unique) points.emplace_back(p[0], p[1], p[2]);
   CGAL::Min_sphere_of_spheres_d<Traits> sphere(points.begin(), points.end());
   auto c = sphere.center_cartesian_begin();
   n.center = Vec3(c[0], c[1], c[2]) + origin;
