@@ -65,11 +65,11 @@ int main(int argc, char** argv) {
     if (const int code = step(run); code != appcli::kOk) return code;
   pointloc::measureErrors(run);
   if (const int code = pointloc::dumpPoints(run); code != appcli::kOk) return code;
-  run.mainSeconds = pointloc::since(run.t0);
+  run.mainSeconds = pointloc::secondsSince(run.t0);
 
   std::optional<pointloc::Comparison> comparison;
   if (p.compare) comparison = pointloc::compareMethods(run);
-  const double totalSeconds = pointloc::since(run.t0);
+  const double totalSeconds = pointloc::secondsSince(run.t0);
 
   const nlohmann::json top = pointloc::printReport(run);
   pointloc::CompareFigures figures;

@@ -1,23 +1,18 @@
 #include "experiment.hpp"
 
+#include <acd/algo/stopwatch.hpp>
+
 #include "free_space.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 
 namespace planner {
 
-namespace {
-double secondsSince(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-}  // namespace
-
 Preprocessing preprocess(const Scenario& scenario) {
   Preprocessing pre;
-  auto t0 = std::chrono::steady_clock::now();
+  auto t0 = acd::Clock::now();
   if (scenario.freeSpaceGiven) {
     pre.freeSpace = scenario.freeSpace;
     pre.freeSpaceMethod = "given";
@@ -47,20 +42,20 @@ Preprocessing preprocess(const Scenario& scenario) {
         pre.solids.push_back({names.back(), wrap ? std::string(how) : "closed or repaired exactly", solid.pieces[i]});
       }
     }
-    pre.solidSeconds = secondsSince(t0);
-    t0 = std::chrono::steady_clock::now();
+    pre.solidSeconds = acd::secondsSince(t0);
+    t0 = acd::Clock::now();
     FreeSpace fs = buildFreeSpace(scenario.workspace, solids, names);
     if (!fs.ok) throw ScenarioError(scenario.path + ": cannot build the free space: " + fs.error);
     pre.freeSpace = std::move(fs.mesh);
     pre.freeSpaceMethod = fs.method;
   }
   for (const acd::TriMesh& shell : acd::splitEdgeConnected(pre.freeSpace)) pre.cavities += acd::signedVolume(shell) < 0;
-  pre.freeSpaceSeconds = secondsSince(t0);
+  pre.freeSpaceSeconds = acd::secondsSince(t0);
   const bool acdWanted =
       std::find(scenario.samplers.begin(), scenario.samplers.end(), "acd") != scenario.samplers.end();
   if (!acdWanted) return pre;
 
-  t0 = std::chrono::steady_clock::now();
+  t0 = acd::Clock::now();
   // libacd decomposes every closed shell as a solid of its own: a cavity's shell would become
   // the obstacle, not a hole. Pieces cut through the cavities have none (free_space.hpp).
   std::string error;
@@ -81,11 +76,11 @@ Preprocessing preprocess(const Scenario& scenario) {
     if (!d.status.ok()) throw ScenarioError(scenario.path + ": the free space cannot be decomposed: " + d.status.message);
     for (const acd::Component& c : d.components) pre.components.push_back(c.mesh);
   }
-  pre.decomposeSeconds = secondsSince(t0);
+  pre.decomposeSeconds = acd::secondsSince(t0);
 
-  t0 = std::chrono::steady_clock::now();
+  t0 = acd::Clock::now();
   pre.openings = extractOpenings(pre.freeSpace, pre.components);
-  pre.openingsSeconds = secondsSince(t0);
+  pre.openingsSeconds = acd::secondsSince(t0);
   return pre;
 }
 
@@ -94,10 +89,10 @@ Trial runTrial(PlanningProblem& problem, const std::string& sampler, int samples
   problem.seeds()->reset(trialSeed(problem.scenario().seed, sampler, samples, trial));
   problem.useSampler(sampler);
   const long checks0 = problem.world().checks();
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = acd::Clock::now();
   FixedSamplePRM prm(problem.si(), static_cast<unsigned>(problem.scenario().prm.neighbors));
   t.outcome = prm.grow(problem.startState(), problem.goalState(), samples);
-  t.seconds = secondsSince(t0);
+  t.seconds = acd::secondsSince(t0);
   t.checks = problem.world().checks() - checks0;
   return t;
 }

@@ -4,11 +4,11 @@
 #pragma once
 
 #include <acd/algo/parallel.hpp>
+#include <acd/algo/stopwatch.hpp>
 
 #include <tbb/task_arena.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <ctime>
@@ -19,8 +19,8 @@ namespace pointloc {
 
 constexpr std::uint64_t kBlock = 1u << 16;  // points per block (fixed: results never depend on threads)
 
-using Clock = std::chrono::steady_clock;
-inline double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+using acd::Clock;
+using acd::secondsSince;
 
 /// Runs body(i0, i1) -> count over fixed blocks of [0, n) and returns the sum, combined in block
 /// order. With `progress`, the blocks go in about 100 rounds, each followed by a percentage.

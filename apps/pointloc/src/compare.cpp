@@ -34,7 +34,7 @@ class Timer {
         }
         return in;
       });
-      m.runs.push_back(since(t));
+      m.runs.push_back(secondsSince(t));
       m.cpuRuns.push_back(cpuNow(alone) - cpu);
     }
     m.seconds = median(m.runs);
@@ -87,7 +87,7 @@ void compareExactPieces(Run& run, Timer& timer, tbb::task_arena& single, Compari
   for (const acd::TriMesh& piece : c.ecd.pieces) locator.add(piece);
   const auto tIndex = Clock::now();
   locator.buildIndex(run.box, run.p.gridCells, *run.arena);
-  const double ecdIndexSeconds = since(tIndex);
+  const double ecdIndexSeconds = secondsSince(tIndex);
   const auto test = [&](const acd::Vec3& q) { return locator.inside(q); };
   c.methods.push_back(timer.timeOn({ecdName, true, c.ecd.seconds + ecdIndexSeconds}, single, test));
   Method all{ecdName, true, c.ecd.seconds + ecdIndexSeconds, run.usedThreads, run.p.samples};
@@ -96,7 +96,7 @@ void compareExactPieces(Run& run, Timer& timer, tbb::task_arena& single, Compari
     const double cpu = cpuNow(false);
     all.inside = overBlocks(*run.arena, run.p.samples, run.progress ? "locating in the ECD" : nullptr,
                             [&](std::uint64_t i0, std::uint64_t i1) { return locator.countInside(*run.points, i0, i1); });
-    all.runs.push_back(since(t));
+    all.runs.push_back(secondsSince(t));
     all.cpuRuns.push_back(cpuNow(false) - cpu);
   }
   all.seconds = median(all.runs);

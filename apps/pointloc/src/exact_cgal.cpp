@@ -1,5 +1,6 @@
 #include "exact_cgal.hpp"
 
+#include <acd/algo/stopwatch.hpp>
 #include <acd/algo/surface_mesh_copy.hpp>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -9,7 +10,6 @@
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
-#include <chrono>
 #include <vector>
 
 namespace pointloc {
@@ -30,7 +30,7 @@ struct CgalSideOfMesh::Impl {
 };
 
 CgalSideOfMesh::CgalSideOfMesh(const acd::TriMesh& input) : impl_(std::make_unique<Impl>()) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = acd::Clock::now();
   if (const long f = acd::copyToSurfaceMesh(input, impl_->mesh); f >= 0) {
     error_ = "CGAL Surface_mesh refused face " + std::to_string(f) + " (not a manifold surface)";
     return;
@@ -38,7 +38,7 @@ CgalSideOfMesh::CgalSideOfMesh(const acd::TriMesh& input) : impl_(std::make_uniq
   impl_->tree = std::make_unique<Tree>(faces(impl_->mesh).first, faces(impl_->mesh).second, impl_->mesh);
   impl_->tree->build();
   impl_->side = std::make_unique<Side>(*impl_->tree);
-  buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  buildSeconds_ = acd::secondsSince(t0);
 }
 
 CgalSideOfMesh::~CgalSideOfMesh() = default;

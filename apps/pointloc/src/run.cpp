@@ -57,7 +57,7 @@ int decomposeAndIndex(Run& run) {
     };
   const auto tDec = Clock::now();
   run.dec = acd::decompose(run.mesh, options);
-  run.decomposeSeconds = since(tDec);
+  run.decomposeSeconds = secondsSince(tDec);
   if (run.progress) std::fprintf(stderr, "\n");
   if (!run.dec.status.ok()) {
     kConsole.sayf("model %s: %s", run.modelPath.c_str(), run.dec.status.message.c_str());
@@ -78,7 +78,7 @@ int decomposeAndIndex(Run& run) {
   run.usedThreads = run.arena->max_concurrency();
   const auto tGrid = Clock::now();
   if (!run.p.noIndex) run.hulls.buildIndex(run.box, run.p.gridCells, *run.arena);
-  run.indexSeconds = since(tGrid);
+  run.indexSeconds = secondsSince(tGrid);
   return kOk;
 }
 
@@ -90,7 +90,7 @@ int locateAll(Run& run) {
     const std::uint64_t in =
         overBlocks(*run.arena, run.p.samples, run.progress ? "locating" : nullptr,
                    [&](std::uint64_t i0, std::uint64_t i1) { return run.hulls.countInside(points, i0, i1); });
-    run.locateRuns.push_back(since(tLoc));
+    run.locateRuns.push_back(secondsSince(tLoc));
     // CPU seconds of all threads: on a busy machine the better guide to what location costs.
     run.locateCpuRuns.push_back(cpuNow(run.usedThreads == 1) - cpuLoc);
     if (r > 0 && in != run.inside) {
@@ -109,14 +109,14 @@ void measureErrors(Run& run) {
   const std::uint64_t samples = run.p.exactSamples;
   const auto tExact = Clock::now();
   const acd::InsideTest& exact = run.exact.emplace(run.mesh);
-  run.exactBuildSeconds = since(tExact);
+  run.exactBuildSeconds = secondsSince(tExact);
   const auto tExactRun = Clock::now();
   run.exactInside = overBlocks(*run.arena, samples, nullptr, [&](std::uint64_t i0, std::uint64_t i1) {
     std::uint64_t in = 0;
     for (std::uint64_t i = i0; i < i1; ++i) in += exact.inside(points(i)) ? 1 : 0;
     return in;
   });
-  run.exactRunSeconds = since(tExactRun);
+  run.exactRunSeconds = secondsSince(tExactRun);
   const int nh = run.hulls.size();
   const std::uint64_t eblocks = (samples + kBlock - 1) / kBlock;
   // Per block: false outside, and the false-inside points of each hull (a point inside several

@@ -1,9 +1,10 @@
 #include "ged.hpp"
 
+#include <acd/algo/stopwatch.hpp>
+
 #include "assignment.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <random>
@@ -14,10 +15,6 @@ namespace skeleton {
 namespace {
 
 constexpr double kForbidden = 1e9;  // assignment cells that stand for no edit operation
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 /// Node maps from graph a to graph b, built one node of a at a time. Costs are kept doubled
 /// inside the assignment bound so that half-edges stay integers.
@@ -362,7 +359,7 @@ GedResult bipartiteOneWay(const Graph& a, const Graph& b) {
 }  // namespace
 
 GedResult bipartiteGed(const Graph& a, const Graph& b) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = acd::Clock::now();
   // Both directions, the better path kept: the reported distance is symmetric.
   GedResult r = bipartiteOneWay(a, b);
   const GedResult back = bipartiteOneWay(b, a);
@@ -375,12 +372,12 @@ GedResult bipartiteGed(const Graph& a, const Graph& b) {
   }
   r.assignmentCost = std::min(r.assignmentCost, back.assignmentCost);
   r.exact = r.distance == r.lowerBound;  // the bounds met: proven
-  r.seconds = secondsSince(start);
+  r.seconds = acd::secondsSince(start);
   return r;
 }
 
 GedResult exactGed(const Graph& a, const Graph& b, long long maxExpansions) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = acd::Clock::now();
   const GedResult seed = bipartiteGed(a, b);
   EditSearch search(a, b);
   search.run(seed.distance, seed.mapping, maxExpansions);
@@ -392,7 +389,7 @@ GedResult exactGed(const Graph& a, const Graph& b, long long maxExpansions) {
   r.mapping = search.bestMap();
   r.lowerBound = r.exact ? r.distance : std::max(search.rootBound(), seed.lowerBound);
   r.expansions = search.expansions();
-  r.seconds = secondsSince(start);
+  r.seconds = acd::secondsSince(start);
   return r;
 }
 

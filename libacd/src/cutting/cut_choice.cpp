@@ -2,6 +2,7 @@
 // into their own slots and the best is picked in candidate order, so the choice does not depend on
 // the thread count.
 #include <acd/algo/cut_choice.hpp>
+#include <acd/algo/stopwatch.hpp>
 
 #include <acd/algo/cut_plane.hpp>
 #include <acd/algo/features.hpp>
@@ -12,15 +13,12 @@
 #include <Eigen/Eigenvalues>
 #include <tbb/parallel_for.h>
 
-#include <chrono>
 #include <cmath>
 #include <limits>
 
 namespace acd {
 
 namespace {
-using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 /// Vertices this close to a cut plane are on its cap (cut vertices lie on it up to rounding).
 constexpr double kCapThickness = 1e-9;

@@ -9,6 +9,7 @@
 #include <acd/algo/merge.hpp>
 #include <acd/algo/parallel.hpp>
 #include <acd/algo/random.hpp>
+#include <acd/algo/stopwatch.hpp>
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/algo/hull.hpp>
@@ -21,7 +22,6 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cmath>
@@ -37,8 +37,6 @@ namespace acd {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 struct Piece {
   TriMesh mesh;  // normalised

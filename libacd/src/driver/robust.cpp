@@ -4,6 +4,7 @@
 #include <acd/algo/shells.hpp>
 #include <acd/algo/cut_choice.hpp>
 #include <acd/algo/hull_excess.hpp>
+#include <acd/algo/stopwatch.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/algo/normalize.hpp>
 #include <acd/repair.hpp>
@@ -13,7 +14,6 @@
 #include "shell_merge.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <set>
 #include <sstream>
@@ -21,8 +21,6 @@
 namespace acd {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 std::string number(double x) {
   std::ostringstream s;

@@ -10,6 +10,7 @@
 #include <acd/algo/knot_graph.hpp>
 #include <acd/algo/open_surface.hpp>
 #include <acd/algo/parallel.hpp>
+#include <acd/algo/stopwatch.hpp>
 #include <acd/decompose.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/algo/hull.hpp>
@@ -19,7 +20,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -32,8 +32,6 @@ namespace acd {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 struct Piece {
   std::vector<int> faces;  // faces of the normalised surface, ascending
@@ -313,9 +311,15 @@ std::map<std::pair<int, int>, int> sharedEdges(const TriMesh& surface, const Sur
 double patchConcavity(const TriMesh& patch, double epsilon) { return measure(patch, epsilon); }
 
 SurfaceDecomposeOptions resolvedOptions(const SurfaceDecomposeOptions& options) {
+  // epsilon's and delta's defaults are the solid decomposition's (one home for the rule).
+  DecomposeOptions solid;
+  solid.tau = options.tau;
+  solid.epsilon = options.epsilon;
+  solid.delta = options.delta;
+  solid = resolvedOptions(solid);
   SurfaceDecomposeOptions o = options;
-  if (o.epsilon < 0) o.epsilon = o.tau / 2;
-  if (o.delta < 0) o.delta = o.tau / 20;
+  o.epsilon = solid.epsilon;
+  o.delta = solid.delta;
   return o;
 }
 
