@@ -8,6 +8,7 @@
 #include "search_report.hpp"
 #include "scenario.hpp"
 
+#include <acd/algo/stopwatch.hpp>
 #include <acd/io.hpp>
 #include <appcli/console.hpp>
 #include <appcli/exit_codes.hpp>
@@ -16,7 +17,6 @@
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
 
-#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -155,10 +155,10 @@ int run(int argc, char** argv) {
   auto progress = [&](const std::string& name, int done, int total) {
     if (tty) std::cerr << "\r" << name << " " << done << "/" << total << "   " << (done == total ? "\n" : "") << std::flush;
   };
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = acd::Clock::now();
   const auto runs = noFixed ? std::vector<planner::SamplerRuns>{}
                             : planner::runExperiment(*problem, scenario.samplers, scenario.samples, scenario.trials, progress);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds = acd::secondsSince(t0);
   const std::filesystem::path dir(scenario.outputDir);
 
   if (n90) {

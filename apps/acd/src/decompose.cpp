@@ -8,6 +8,7 @@
 #include "scene_reader.hpp"
 #include "surface.hpp"
 
+#include <acd/algo/stopwatch.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/evaluate.hpp>
 #include <acd/io.hpp>
@@ -21,7 +22,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -147,7 +147,7 @@ int decomposeMesh(DecomposeArgs& a, const acd::TriMesh& mesh) {
   if (const int code = writeSimulatorOutputs(a.sim, d, mesh, a.model, a.out, outputs); code != kOk) return code;
   // The other half of the promise: every point of the input as read inside a hull, or within tau
   // of one (a repair that cut off a fold, a shell dropped by mistake would show here).
-  const auto checkStart = std::chrono::steady_clock::now();
+  const auto checkStart = acd::Clock::now();
   const acd::Coverage cover = acd::inputOutsideHulls(mesh, d);
   const double uncovered = cover.max;
   input.inputOutside = uncovered;
@@ -155,7 +155,7 @@ int decomposeMesh(DecomposeArgs& a, const acd::TriMesh& mesh) {
   // hull that stands off what the user gave.
   const acd::HullsOffInput off = acd::hullsOffInput(mesh, d, a.sim.maxHulls == 0 && a.sim.maxHullVertices == 0);
   input.hullOffInput = off.excess;
-  input.promiseSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - checkStart).count();
+  input.promiseSeconds = acd::secondsSince(checkStart);
   std::ofstream report(fs::path(a.out) / "report.json");
   const bool anyUnresolved = std::any_of(d.components.begin(), d.components.end(), [](const auto& c) { return c.unresolved; });
   // The library's report with the post-passes' sections, plus the simulator files written.

@@ -1,12 +1,12 @@
 #include "solid_obstacles.hpp"
 
+#include <acd/algo/stopwatch.hpp>
 #include <acd/algo/union_find.hpp>
 #include <acd/algo/alpha_wrap.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/repair.hpp>
 
 #include <array>
-#include <chrono>
 #include <map>
 #include <numeric>
 #include <sstream>
@@ -78,7 +78,7 @@ std::string SolidObstacle::summary() const {
 }
 
 SolidObstacle solidify(const acd::TriMesh& triangles, const WrapSettings& wrap) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = acd::Clock::now();
   SolidObstacle out;
   const std::vector<acd::TriMesh> pieces = vertexConnectedPieces(triangles);
   out.soupPieces = static_cast<int>(pieces.size());
@@ -105,7 +105,7 @@ SolidObstacle solidify(const acd::TriMesh& triangles, const WrapSettings& wrap) 
       out.pieces.push_back(w.mesh);
     }
   }
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  out.seconds = acd::secondsSince(t0);
   return out;
 }
 

@@ -1,6 +1,7 @@
 // The only translation unit that instantiates CGAL's Surface_mesh_deformation (slow to compile).
 #include "arap.hpp"
 
+#include <acd/algo/stopwatch.hpp>
 #include <acd/algo/surface_mesh_copy.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -9,7 +10,6 @@
 
 #include <Eigen/Geometry>
 
-#include <chrono>
 #include <cmath>
 #include <exception>
 
@@ -22,7 +22,7 @@ using Deformation = CGAL::Surface_mesh_deformation<Mesh>;
 }  // namespace
 
 ArapResult arapDeform(const acd::TriMesh& input, const ArapRequest& request) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = acd::Clock::now();
   ArapResult out;
   const int n = static_cast<int>(input.vertices.size());
   for (const std::vector<int>* list : {&request.handle, &request.region})
@@ -71,7 +71,7 @@ ArapResult arapDeform(const acd::TriMesh& input, const ArapRequest& request) {
   } catch (const std::exception& e) {
     out.error = std::string("CGAL deformation failed: ") + e.what();
   }
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.seconds = acd::secondsSince(start);
   return out;
 }
 

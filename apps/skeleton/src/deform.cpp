@@ -1,10 +1,11 @@
 #include "deform.hpp"
 
+#include <acd/algo/stopwatch.hpp>
+
 #include <nlohmann/json.hpp>
 
 #include <Eigen/Geometry>
 
-#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <functional>
@@ -168,7 +169,7 @@ DeformResult applyDeformation(const acd::TriMesh& mesh, const std::string& spec)
     for (std::size_t i = 0; i < summaries.size(); ++i) out.summary += (i ? "; then " : "") + summaries[i];
     return out;
   }
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = acd::Clock::now();
   const std::vector<std::string> parts = split(spec, ':');
   const std::string kind = parts.empty() ? "" : parts[0];
   DeformResult out;
@@ -240,7 +241,7 @@ DeformResult applyDeformation(const acd::TriMesh& mesh, const std::string& spec)
   } else {
     return failure("unknown deformation '" + kind + "' (expected bend, twist, ids or affine)");
   }
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.seconds = acd::secondsSince(start);
   return out;
 }
 

@@ -1,13 +1,13 @@
 // The only translation unit that instantiates CGAL's skeletonization (slow to compile).
 #include "mcf_skeleton.hpp"
 
+#include <acd/algo/stopwatch.hpp>
 #include <acd/algo/surface_mesh_copy.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/extract_mean_curvature_flow_skeleton.h>
 
-#include <chrono>
 #include <exception>
 
 namespace skeleton {
@@ -19,7 +19,7 @@ using Skeletonization = CGAL::Mean_curvature_flow_skeletonization<Mesh>;
 }  // namespace
 
 McfSkeleton meanCurvatureSkeleton(const acd::TriMesh& input) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = acd::Clock::now();
   McfSkeleton out;
   Mesh mesh;
   if (acd::copyToSurfaceMesh(input, mesh) >= 0) {
@@ -44,7 +44,7 @@ McfSkeleton meanCurvatureSkeleton(const acd::TriMesh& input) {
   } catch (const std::exception& e) {
     out.error = std::string("CGAL skeletonization failed: ") + e.what();
   }
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.seconds = acd::secondsSince(start);
   return out;
 }
 

@@ -1,12 +1,12 @@
 #include "arap_deform.hpp"
 
+#include <acd/algo/stopwatch.hpp>
 #include <acd/algo/union_find.hpp>
 #include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <numeric>
 #include <string>
@@ -18,10 +18,6 @@ namespace {
 
 using Mat3 = Eigen::Matrix3d;
 using Mat43 = Eigen::Matrix<double, 4, 3>;
-
-double seconds(std::chrono::steady_clock::time_point since) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
-}
 
 /// Rotation closest to F in the Frobenius norm (polar decomposition); a reflection is turned
 /// into a rotation by flipping the axis of the smallest singular value, which costs least.
@@ -255,13 +251,13 @@ ArapResult arapDeform(const TetMesh& mesh, const std::vector<int>& constrained, 
   const TetOperator op = tetOperators(mesh, options.minWeight);
   r.restVolume = meshVolume(mesh, mesh.points);
 
-  const auto factorStart = std::chrono::steady_clock::now();
+  const auto factorStart = acd::Clock::now();
   GlobalSystem system{mesh, op, unknown, r.freeVertices, {}, {}};
   if (!system.factor(x))
     return fail(acd::StatusCode::InternalError, "deformation: the stiffness matrix could not be factored (degenerate tets?)");
-  r.factorSeconds = seconds(factorStart);
+  r.factorSeconds = acd::secondsSince(factorStart);
 
-  const auto solveStart = std::chrono::steady_clock::now();
+  const auto solveStart = acd::Clock::now();
   std::vector<Mat3> rotations(mesh.tets.size(), Mat3::Identity());
   std::vector<double> tetEnergy(mesh.tets.size(), 0.0);
   const int threads = options.threads > 0 ? options.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -287,7 +283,7 @@ ArapResult arapDeform(const TetMesh& mesh, const std::vector<int>& constrained, 
       break;
     }
   }
-  r.solveSeconds = seconds(solveStart);
+  r.solveSeconds = acd::secondsSince(solveStart);
 
   r.positions = std::move(x);
   measureResult(mesh, constrained, targets, r);

@@ -1,11 +1,11 @@
 #include "deformation_demo.hpp"
 
+#include <acd/algo/stopwatch.hpp>
 #include <acd/diagnosis.hpp>
 
 #include <Eigen/Geometry>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -198,7 +198,7 @@ void checkSurfaceParts(const TetMesh& tets, const acd::TriMesh& surface, std::si
 }  // namespace
 
 DeformationResult deformSurface(const TetMesh& tets, const acd::TriMesh& surface, const DeformationOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = acd::Clock::now();
   DeformationResult r;
   auto fail = [&](const std::string& message) {
     r.status = acd::Status::error(acd::StatusCode::InvalidParameter, "deformation: " + message);
@@ -252,7 +252,7 @@ DeformationResult deformSurface(const TetMesh& tets, const acd::TriMesh& surface
   // itself (and whether it did before).
   r.selfIntersectionsBefore = acd::countSelfIntersections(surface);
   r.selfIntersectionsAfter = acd::countSelfIntersections(r.surfaceAfter);
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.seconds = acd::secondsSince(start);
   return r;
 }
 

@@ -3,10 +3,10 @@
 
 #include "hull_simplify.hpp"
 
+#include <acd/algo/stopwatch.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/algo/hull.hpp>
 
-#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -19,10 +19,6 @@ namespace {
 /// regions would give TetGen two faces a hair apart, or a mesh in two pieces where the model is one.
 constexpr double kClosedGapPerTau = 1e-3;
 
-double since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 }  // namespace
 
 HullMeshResult meshHulls(const acd::TriMesh& model, const HullMeshOptions& options) {
@@ -33,7 +29,7 @@ HullMeshResult meshHulls(const acd::TriMesh& model, const HullMeshOptions& optio
                            "--simplify must be at least 4 (a tetrahedron), got " + std::to_string(options.simplify));
     return r;
   }
-  auto t0 = std::chrono::steady_clock::now();
+  auto t0 = acd::Clock::now();
   acd::DecomposeOptions dopt;
   dopt.tau = options.tau;
   dopt.merge = options.merge;
@@ -46,20 +42,20 @@ HullMeshResult meshHulls(const acd::TriMesh& model, const HullMeshOptions& optio
   dopt.invariant = false;
   dopt.threads = options.threads;
   r.decomposition = acd::decompose(model, dopt);
-  r.times.decompose = since(t0);
+  r.times.decompose = acd::secondsSince(t0);
   if (!r.decomposition.status.ok()) {
     r.status = r.decomposition.status;
     return r;
   }
   for (const acd::Component& c : r.decomposition.components) r.modelVolume += acd::signedVolume(c.mesh);
 
-  t0 = std::chrono::steady_clock::now();
+  t0 = acd::Clock::now();
   std::vector<acd::TriMesh> exact;
   for (const acd::Component& c : r.decomposition.components) {
     exact.push_back(c.hull.empty() ? acd::hullMesh(c.mesh.vertices) : c.hull);
     r.hullVertices.push_back(static_cast<int>(exact.back().vertices.size()));
   }
-  r.times.hulls = since(t0);
+  r.times.hulls = acd::secondsSince(t0);
 
   // TetGen merges points closer than its own tolerance and then trips over the complex; when it
   // refuses one, the complex is rebuilt with a 10 times larger snapping distance (twice at most).
@@ -71,12 +67,12 @@ HullMeshResult meshHulls(const acd::TriMesh& model, const HullMeshOptions& optio
           std::max(r.maxOutside, maxOutsideDistance(r.hulls[i], r.decomposition.components[i].mesh.vertices));
     for (int attempt = 0; attempt < 3 && !r.tetgen.ok; ++attempt) {
       const double tolerance = options.tolerance * std::pow(10.0, attempt);
-      t0 = std::chrono::steady_clock::now();
+      t0 = acd::Clock::now();
       HullComplexOptions copt;
       copt.tolerance = tolerance;
       copt.closedGap = kClosedGapPerTau * options.tau;
       r.complex = buildHullComplex(r.hulls, copt);
-      r.times.complex += since(t0);
+      r.times.complex += acd::secondsSince(t0);
       r.toleranceUsed = tolerance;
       if (!r.complex.status.ok()) continue;
       r.tetgen = runTetGen(r.complex.plc, options.tetgen);
@@ -88,11 +84,11 @@ HullMeshResult meshHulls(const acd::TriMesh& model, const HullMeshOptions& optio
   // one of them is often accepted; the exact hulls come last.
   const int lowestBudget = std::min(options.simplify, std::max(8, options.simplify - 8));
   for (int budget = options.simplify; options.simplify > 0 && !r.tetgen.ok && budget >= lowestBudget; budget -= 4) {
-    t0 = std::chrono::steady_clock::now();
+    t0 = acd::Clock::now();
     HullSimplifyOptions sopt;
     sopt.maxVertices = budget;
     const SimplifiedHulls simplified = simplifyHulls(exact, sopt);
-    r.times.hulls += since(t0);
+    r.times.hulls += acd::secondsSince(t0);
     r.simplifyUsed = budget;
     r.simplifyMissed = 0;
     for (bool reached : simplified.reached) r.simplifyMissed += reached ? 0 : 1;
@@ -128,19 +124,19 @@ HullMeshResult meshHulls(const acd::TriMesh& model, const HullMeshOptions& optio
     r.status = acd::Status::error(acd::StatusCode::InternalError, why);
     return r;
   }
-  t0 = std::chrono::steady_clock::now();
+  t0 = acd::Clock::now();
   r.quality = measureQuality(r.tetgen.mesh);
-  r.times.quality = since(t0);
+  r.times.quality = acd::secondsSince(t0);
   return r;
 }
 
 DirectMeshResult meshModelDirectly(const acd::TriMesh& model, const TetGenOptions& options) {
   DirectMeshResult r;
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = acd::Clock::now();
   const acd::PreparedSolid solid = acd::prepareSolid(model);
   if (!solid.status.ok()) {
     r.status = solid.status;
-    r.seconds = since(t0);
+    r.seconds = acd::secondsSince(t0);
     return r;
   }
   Plc plc;
@@ -162,13 +158,13 @@ DirectMeshResult meshModelDirectly(const acd::TriMesh& model, const TetGenOption
     r.status = acd::Status::error(acd::StatusCode::DegenerateFace,
                                   "the surface intersects itself (" + std::to_string(r.selfIntersections) +
                                       " pairs of faces); TetGen needs a surface without self-intersections");
-    r.seconds = since(t0);
+    r.seconds = acd::secondsSince(t0);
     return r;
   }
   TetGenOptions o = options;
   o.regions = false;
   r.tetgen = runTetGen(plc, o);
-  r.seconds = since(t0);
+  r.seconds = acd::secondsSince(t0);
   if (!r.tetgen.ok) {
     r.status = acd::Status::error(acd::StatusCode::InternalError, r.tetgen.error);
     return r;

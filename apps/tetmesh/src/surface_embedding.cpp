@@ -1,9 +1,9 @@
 #include "surface_embedding.hpp"
 
 #include <acd/algo/closest_point.hpp>
+#include <acd/algo/stopwatch.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -183,7 +183,7 @@ Vec3 closestPointInTet(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& 
 }
 
 SurfaceEmbedding embedPoints(const TetMesh& mesh, const std::vector<Vec3>& points) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = acd::Clock::now();
   SurfaceEmbedding e;
   e.tet.resize(points.size(), -1);
   e.weights.resize(points.size());
@@ -197,7 +197,7 @@ SurfaceEmbedding embedPoints(const TetMesh& mesh, const std::vector<Vec3>& point
       e.maxOutsideDistance = std::max(e.maxOutsideDistance, distance);
     }
   }
-  e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  e.seconds = acd::secondsSince(t0);
   return e;
 }
 

@@ -1,6 +1,8 @@
 // See tetgen_run.hpp for why TetGen runs in a child process.
 #include "tetgen_run.hpp"
 
+#include <acd/algo/stopwatch.hpp>
+
 #include <sandbox/child_process.hpp>
 #include <sandbox/pipe_codec.hpp>
 
@@ -11,7 +13,6 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -174,7 +175,7 @@ TetGenResult runTetGen(const Plc& plc, const TetGenOptions& options) {
     r.error = "invalid input for TetGen: " + bad;
     return r;
   }
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = acd::Clock::now();
 
   // TetGen runs in a child process (acd_sandbox) under the time cap; its messages go to a log.
   char logPath[] = "/tmp/tetmesh_tetgen_XXXXXX";
@@ -190,7 +191,7 @@ TetGenResult runTetGen(const Plc& plc, const TetGenOptions& options) {
   child.limits.wallSeconds = options.timeoutSeconds;
   const acdsandbox::ChildOutcome outcome = acdsandbox::runInChild(
       [&](int fd) -> int { childMain(plc, r.switches, fd); }, child);
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.seconds = acd::secondsSince(start);
   std::string log;
   {
     std::ifstream in(logPath);

@@ -3,12 +3,12 @@
 // patch vertex on one side, and its new vertices must lie on the known side of every plane of the
 // patch. A face that would break this is retracted from the patch's front and waits for a later
 // seed. Adding faces only adds constraints, so a retracted face never fits the same patch later.
+#include <acd/algo/stopwatch.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/algo/normalize.hpp>
 #include <acd/surface_exact.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <numeric>
 #include <queue>
@@ -193,7 +193,7 @@ Status checkInput(const TriMesh& mesh) {
 }  // namespace
 
 SurfaceExactDecomposition exactSurfaceDecomposition(const TriMesh& mesh, const SurfaceExactOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = acd::Clock::now();
   SurfaceExactDecomposition out;
   if (!(options.tolerance >= 0.0) || !std::isfinite(options.tolerance)) {
     out.status = Status::error(StatusCode::InvalidParameter, "tolerance must be a finite number >= 0");
@@ -208,7 +208,7 @@ SurfaceExactDecomposition exactSurfaceDecomposition(const TriMesh& mesh, const S
   for (int p : out.patchOfFace) count = std::max(count, p + 1);
   out.patches.resize(count);
   for (int f = 0; f < static_cast<int>(out.patchOfFace.size()); ++f) out.patches[out.patchOfFace[f]].push_back(f);
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.seconds = acd::secondsSince(start);
   return out;
 }
 

@@ -16,6 +16,7 @@
 #include <acd/algo/hull_excess.hpp>
 #include <acd/algo/hull_set.hpp>
 #include <acd/algo/parallel.hpp>
+#include <acd/algo/stopwatch.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/evaluate.hpp>
 #include <acd/algo/inside.hpp>
@@ -30,7 +31,6 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -485,11 +485,11 @@ void sampleSurfaceDistances(const TriMesh& m, const std::vector<Hull>& hs, const
 }  // namespace
 
 Evaluation evaluate(const TriMesh& model, const std::vector<TriMesh>& hulls, const EvaluateOptions& options) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = acd::Clock::now();
   Evaluation ev;
   auto fail = [&](Status s) {
     ev.status = std::move(s);
-    ev.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    ev.seconds = acd::secondsSince(t0);
     return ev;
   };
   if (options.volumeSamples < 1 || options.surfaceSamples < 0 || options.threads < 0)
@@ -532,7 +532,7 @@ Evaluation evaluate(const TriMesh& model, const std::vector<TriMesh>& hulls, con
   if (ev.skippedHulls > 0)
     ev.status.message = "skipped " + std::to_string(ev.skippedHulls) + " of " + std::to_string(hulls.size()) +
                         " hulls with fewer than 4 non-coplanar vertices";
-  ev.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ev.seconds = acd::secondsSince(t0);
   return ev;
 }
 

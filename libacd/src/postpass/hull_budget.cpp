@@ -1,5 +1,6 @@
 // Merging components down to a hull budget; see hull_budget.hpp.
 #include <acd/algo/hull_budget.hpp>
+#include <acd/algo/stopwatch.hpp>
 
 #include <acd/algo/concavity.hpp>
 #include <acd/algo/merge.hpp>
@@ -13,7 +14,6 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
-#include <chrono>
 #include <limits>
 #include <map>
 #include <string>
@@ -135,7 +135,7 @@ void absorb(Group& a, const Group& b, const Candidate& best) {
 }  // namespace
 
 HullBudgetReport limitHullCount(Decomposition& d, const HullBudgetOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = acd::Clock::now();
   HullBudgetReport r;
   r.tau = d.options.tau;
   if (options.maxHulls < 1) {
@@ -244,7 +244,7 @@ HullBudgetReport limitHullCount(Decomposition& d, const HullBudgetOptions& optio
     r.maxConcavity = std::max(r.maxConcavity, g.info.concavity);
   }
   r.exceedsTau = r.maxConcavity > r.tau;
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.seconds = acd::secondsSince(start);
   return r;
 }
 

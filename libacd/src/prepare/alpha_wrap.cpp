@@ -1,6 +1,7 @@
 // Alpha wrapping and the surface distance that measures it (acd/algo/alpha_wrap.hpp).
 #include <acd/algo/alpha_wrap.hpp>
 #include <acd/algo/inside.hpp>
+#include <acd/algo/stopwatch.hpp>
 
 #include <acd/algo/surface_mesh_copy.hpp>
 
@@ -16,7 +17,6 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
-#include <chrono>
 #include <limits>
 #include <random>
 
@@ -85,7 +85,7 @@ WrapParameters wrapParametersFor(double tau) {
 }
 
 Wrap alphaWrap(const TriMesh& soup, double alpha, double offset) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = acd::Clock::now();
   Wrap w;
   if (soup.faces.empty() || !(alpha > 0.0) || !(offset > 0.0)) {
     w.status = Status::error(StatusCode::InvalidParameter, "alpha wrap needs faces and positive alpha and offset");
@@ -109,7 +109,7 @@ Wrap alphaWrap(const TriMesh& soup, double alpha, double offset) {
   }
   w.status = w.mesh.faces.empty() ? Status::error(StatusCode::InternalError, "alpha wrap produced an empty surface")
                                   : Status::success();
-  w.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  w.seconds = acd::secondsSince(start);
   return w;
 }
 

@@ -4,6 +4,7 @@
 // double-sided face, which needs the faces around it.
 #include <acd/algo/close_vertices.hpp>
 #include <acd/algo/duplicate_faces.hpp>
+#include <acd/algo/stopwatch.hpp>
 #include <acd/algo/surface_mesh_copy.hpp>
 #include <acd/algo/t_junctions.hpp>
 #include <acd/algo/touching_solids.hpp>
@@ -20,7 +21,6 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -172,7 +172,7 @@ void describeRepairs(const RepairOptions& options, MeshRepair& r) {
 }  // namespace
 
 MeshRepair repairMesh(const TriMesh& input, const RepairOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = acd::Clock::now();
   MeshRepair r;
   auto refuse = [&](StatusCode code, std::string message) {
     r.status = Status::error(code, std::move(message));
@@ -235,7 +235,7 @@ MeshRepair repairMesh(const TriMesh& input, const RepairOptions& options) {
 
   describeRepairs(options, r);
   r.status = Status::success();
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.seconds = acd::secondsSince(start);
   return r;
 }
 

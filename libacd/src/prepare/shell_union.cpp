@@ -1,6 +1,7 @@
 // The union of meeting shells by corefinement in exact arithmetic (acd/algo/shell_union.hpp). Its
 // own translation unit: CGAL's corefinement with an exact kernel is slow to compile.
 #include <acd/algo/shell_union.hpp>
+#include <acd/algo/stopwatch.hpp>
 
 #include <acd/algo/canonical_frame.hpp>
 #include <acd/algo/surface_mesh_copy.hpp>
@@ -16,7 +17,6 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
-#include <chrono>
 #include <map>
 #include <numeric>
 #include <optional>
@@ -100,11 +100,11 @@ bool cleanRounded(const TriMesh& united, std::vector<TriMesh>& parts) {
 }  // namespace
 
 ShellUnion uniteMeetingShells(const std::vector<TriMesh>& shells, bool invariant) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = acd::Clock::now();
   ShellUnion out;
   const int n = static_cast<int>(shells.size());
   auto finish = [&] {
-    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    out.seconds = acd::secondsSince(start);
     return out;
   };
   if (n < 2) {
