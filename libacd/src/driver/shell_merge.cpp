@@ -46,7 +46,10 @@ int mergeAcrossShells(std::vector<Component>& components, const TriMesh& shells,
   std::vector<TriMesh> hulls(n);  // in the frame
   std::vector<Box3> boxes(n);
   for (int i = 0; i < n; ++i) {
-    hulls[i] = toFrame(components[i].hull);
+    // From the component's own vertices in the frame, not its hull moved there: on flat faces
+    // the hull keeps or drops points that lie on a facet as rounding in the input's pose
+    // decides, and its triangles are what the added volume is sampled over.
+    hulls[i] = o.invariant ? convexHull(toFrame(components[i].mesh).vertices).mesh : toFrame(components[i].hull);
     boxes[i] = boundingBox(hulls[i]);
   }
   std::vector<char> alive(n, 1);
