@@ -12,6 +12,8 @@
 #include <cmath>
 #include <numeric>
 #include <tuple>
+#include <utility>
+#include <vector>
 
 namespace acd {
 
@@ -47,13 +49,15 @@ double alignment(const std::vector<WeightedNormal>& normals, const Vec3& d) {
   return sum;
 }
 
-/// A direction in the plane of the orthonormal a, b fixed by how the faces' normals spread in
+/// The directions in the plane of the orthonormal a, b fixed by how the faces' normals spread in
 /// it: with u = p + iq a normal's coordinates in the plane, the first angular harmonic
 /// Z_k = sum A |u|^2 (u/|u|)^k (k = 1, 2, ...) that does not vanish gives theta = arg(Z_k) / k. A
 /// box's square cross-section has Z_4 (its faces), a 32-sided ring Z_32 (its segments); every
-/// answer differs from another by a symmetry of the normals' spread. None below k = 64 (a
-/// sphere, a cylinder of many segments): a is kept.
-Vec3 mostAlignedInPlane(const std::vector<WeightedNormal>& normals, const Vec3& a, const Vec3& b) {
+/// answer differs from another by a symmetry of the normals' spread, a turn by 2 pi / k. All k
+/// of them for k up to kMaxTurns (the first is the one rounding of the solver's a picks), the
+/// first alone above. None below k = 64 (a sphere, a cylinder of many segments): a is kept.
+constexpr int kMaxTurns = 8;
+std::vector<Vec3> alignedInPlane(const std::vector<WeightedNormal>& normals, const Vec3& a, const Vec3& b) {
   constexpr int kMaxHarmonic = 64;
   std::vector<std::complex<double>> z(kMaxHarmonic + 1, 0.0);
   for (const WeightedNormal& w : normals) {
@@ -66,24 +70,30 @@ Vec3 mostAlignedInPlane(const std::vector<WeightedNormal>& normals, const Vec3& 
   }
   for (int k = 1; k <= kMaxHarmonic; ++k)
     if (std::abs(z[k]) > 1e-6 * std::abs(z[0])) {
-      const double theta = std::arg(z[k]) / k;
-      return (std::cos(theta) * a + std::sin(theta) * b).normalized();
+      std::vector<Vec3> out;
+      const double theta = std::arg(z[k]) / k, turn = 2.0 * std::acos(-1.0) / k;
+      for (int j = 0; j < (k <= kMaxTurns ? k : 1); ++j)
+        out.push_back((std::cos(theta + j * turn) * a + std::sin(theta + j * turn) * b).normalized());
+      return out;
     }
-  return a;
+  return {a};
 }
 
 /// Axes for second moments with (nearly) equal eigenvalues, where the eigenvectors are any basis
 /// of their plane or space: the axis among the faces' normals (all three equal) or within the
 /// plane (two equal) that most of the surface faces. Boxy models get axes along their faces.
-void alignDegenerateAxes(const std::vector<TriMesh>& pieces, const std::vector<std::vector<Vec3>>& points,
-                         const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& eig, Vec3& e1, Vec3& e2) {
+/// Each (e1, e2) the normals allow (the turns of alignedInPlane); {(e1, e2)} as given otherwise.
+std::vector<std::pair<Vec3, Vec3>> alignDegenerateAxes(const std::vector<TriMesh>& pieces,
+                                                       const std::vector<std::vector<Vec3>>& points,
+                                                       const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& eig,
+                                                       const Vec3& e1, const Vec3& e2) {
   const Vec3 values = eig.eigenvalues();  // ascending
   // Eigenvectors of eigenvalues a relative gap g apart turn by about (rounding / g) when the
   // input is moved: with g = 2e-6 (knot's largest two) enough to move a few coordinates across a
   // step of the canonical grid, and the parts then change. Below 1e-3 the normals decide.
   const double tolerance = 1e-3 * std::abs(values[2]);
   const bool topTwo = values[2] - values[1] <= tolerance, bottomTwo = values[1] - values[0] <= tolerance;
-  if (!topTwo && !bottomTwo) return;
+  if (!topTwo && !bottomTwo) return {{e1, e2}};
   std::vector<WeightedNormal> normals;
   for (std::size_t i = 0; i < pieces.size(); ++i)
     for (const Face& f : pieces[i].faces) {
@@ -91,24 +101,27 @@ void alignDegenerateAxes(const std::vector<TriMesh>& pieces, const std::vector<s
       const Vec3 n = (p[f[1]] - p[f[0]]).cross(p[f[2]] - p[f[0]]);
       if (n.norm() > 0.0) normals.push_back({n.normalized(), 0.5 * n.norm()});
     }
-  if (normals.empty()) return;
+  if (normals.empty()) return {{e1, e2}};
+  std::vector<std::pair<Vec3, Vec3>> out;
   if (topTwo && bottomTwo) {
     // A sphere-like spread: the first axis is the face normal with the largest alignment (a
     // quadratic search, so only for meshes small enough; larger ones keep the solver's axes).
-    if (normals.size() > 4096) return;
+    if (normals.size() > 4096) return {{e1, e2}};
     double bestValue = -1.0;
+    Vec3 first = e1;
     for (const WeightedNormal& w : normals)
-      if (const double v = alignment(normals, w.normal); v > bestValue * (1 + 1e-12)) bestValue = v, e1 = w.normal;
-    const Vec3 a = e1.unitOrthogonal();
-    e2 = mostAlignedInPlane(normals, a, e1.cross(a));
+      if (const double v = alignment(normals, w.normal); v > bestValue * (1 + 1e-12)) bestValue = v, first = w.normal;
+    const Vec3 a = first.unitOrthogonal();
+    out.emplace_back(first, alignedInPlane(normals, a, first.cross(a)).front());
   } else if (topTwo) {
     const Vec3 e3 = eig.eigenvectors().col(0).normalized();
-    e1 = mostAlignedInPlane(normals, eig.eigenvectors().col(2).normalized(), eig.eigenvectors().col(1).normalized());
-    e2 = e3.cross(e1).normalized();
+    for (const Vec3& d : alignedInPlane(normals, eig.eigenvectors().col(2).normalized(), eig.eigenvectors().col(1).normalized()))
+      out.emplace_back(d, e3.cross(d).normalized());
   } else {
     const Vec3 a = eig.eigenvectors().col(1).normalized();
-    e2 = mostAlignedInPlane(normals, a, e1.cross(a).normalized());
+    for (const Vec3& d : alignedInPlane(normals, a, e1.cross(a).normalized())) out.emplace_back(e1, d);
   }
+  return out;
 }
 
 }  // namespace
@@ -143,32 +156,65 @@ Normalization canonicalFrame(const std::vector<TriMesh>& pieces) {
   });
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(second);
   if (eig.info() != Eigen::Success) return frame;
-  Vec3 e1 = eig.eigenvectors().col(2).normalized(), e2 = eig.eigenvectors().col(1).normalized();  // largest, middle
-  alignDegenerateAxes(pieces, points, eig, e1, e2);
-  const Vec3 axes[3] = {e1, e2, e1.cross(e2).normalized()};
-  double third[3] = {0.0, 0.0, 0.0};
-  forEachFace(centroid, [&](const Vec3& a, const Vec3& b, const Vec3& c, double A) {
-    for (int k = 0; k < 3; ++k) third[k] += thirdMoment(A, axes[k].dot(a), axes[k].dot(b), axes[k].dot(c));
-  });
-  // Flipping e1 or e2 flips e3 = e1 x e2 too, so only two signs are free: the two axes with the
-  // larger third moments point where theirs is positive and the third axis follows. A mirror
-  // symmetry makes one third moment vanish; it is then the one that follows.
-  int follower = 0;
-  for (int k = 1; k < 3; ++k)
-    if (std::abs(third[k]) < std::abs(third[follower])) follower = k;
-  auto sign = [](double x) { return x < 0.0 ? -1.0 : 1.0; };
-  double s1, s2;  // signs of e1 and e2; e3's is s1 * s2
-  if (follower == 2) {
-    s1 = sign(third[0]), s2 = sign(third[1]);
-  } else if (follower == 1) {
-    s1 = sign(third[0]), s2 = sign(third[2]) * s1;
-  } else {
-    s2 = sign(third[1]), s1 = sign(third[2]) * s2;
+  const Vec3 e1 = eig.eigenvectors().col(2).normalized(), e2 = eig.eigenvectors().col(1).normalized();  // largest, middle
+  // Each candidate's axes, signed by its third moments; where symmetry leaves a choice (turns
+  // in a plane of equal second moments, signs of vanishing third moments), the candidate frame
+  // in which the mesh reads first (canonicalLess) is taken, the same in every pose. The shape's
+  // own triangulation is rarely as symmetric as its geometry, so the choice shows in the parts.
+  std::vector<Normalization> candidates;
+  for (const auto& [c1, c2] : alignDegenerateAxes(pieces, points, eig, e1, e2)) {
+    const Vec3 axes[3] = {c1, c2, c1.cross(c2).normalized()};
+    double third[3] = {0.0, 0.0, 0.0};
+    forEachFace(centroid, [&](const Vec3& a, const Vec3& b, const Vec3& c, double A) {
+      for (int k = 0; k < 3; ++k) third[k] += thirdMoment(A, axes[k].dot(a), axes[k].dot(b), axes[k].dot(c));
+    });
+    auto oriented = [&](double a, double b) {
+      Normalization f = frame;
+      f.rotation.row(0) = (a * axes[0]).transpose();
+      f.rotation.row(1) = (b * axes[1]).transpose();
+      f.rotation.row(2) = (a * b * axes[2]).transpose();
+      return f;
+    };
+    // Flipping e1 or e2 flips e3 = e1 x e2 too, so only two signs are free: the two axes with the
+    // larger third moments point where theirs is positive and the third axis follows. A mirror
+    // symmetry makes one third moment vanish; it is then the one that follows. Two or three
+    // vanishing (two mirror planes, as CAD parts often have) leave signs to choose.
+    const double noise = 1e-9 * area;
+    int vanishing = 0;
+    for (double t : third) vanishing += std::abs(t) <= noise;
+    if (vanishing >= 2) {
+      for (double a : {1.0, -1.0})
+        for (double b : {1.0, -1.0}) {
+          const double signs[3] = {a, b, a * b};
+          bool allowed = true;
+          for (int k = 0; k < 3; ++k) allowed = allowed && (std::abs(third[k]) <= noise || signs[k] * third[k] > 0.0);
+          if (allowed) candidates.push_back(oriented(a, b));
+        }
+      continue;
+    }
+    int follower = 0;
+    for (int k = 1; k < 3; ++k)
+      if (std::abs(third[k]) < std::abs(third[follower])) follower = k;
+    auto sign = [](double x) { return x < 0.0 ? -1.0 : 1.0; };
+    double s1, s2;  // signs of e1 and e2; e3's is s1 * s2
+    if (follower == 2) {
+      s1 = sign(third[0]), s2 = sign(third[1]);
+    } else if (follower == 1) {
+      s1 = sign(third[0]), s2 = sign(third[2]) * s1;
+    } else {
+      s2 = sign(third[1]), s1 = sign(third[2]) * s2;
+    }
+    candidates.push_back(oriented(s1, s2));
   }
-  frame.rotation.row(0) = (s1 * axes[0]).transpose();
-  frame.rotation.row(1) = (s2 * axes[1]).transpose();
-  frame.rotation.row(2) = (s1 * s2 * axes[2]).transpose();
-  return frame;
+  if (candidates.size() == 1) return candidates.front();
+  const TriMesh whole = concatenate(pieces);
+  std::size_t best = 0;
+  TriMesh bestMesh = canonicalMesh(whole, candidates[0]).mesh;
+  for (std::size_t i = 1; i < candidates.size(); ++i) {
+    TriMesh mesh = canonicalMesh(whole, candidates[i]).mesh;
+    if (canonicalLess(mesh, bestMesh)) best = i, bestMesh = std::move(mesh);
+  }
+  return candidates[best];
 }
 
 CanonicalMesh canonicalMesh(const TriMesh& mesh, const Normalization& n) {
