@@ -8,6 +8,11 @@
 
 #include "helpers.hpp"
 
+#include <algorithm>
+#include <random>
+#include <string>
+#include <vector>
+
 using namespace acd;
 using acd::shapes::box;
 
@@ -59,4 +64,31 @@ TEST(SplitTouchingSolids, ManifoldMeshUnchanged) {
   EXPECT_EQ(split.copiedVertices, 0);
   EXPECT_EQ(split.mesh.faces, m.faces);
   EXPECT_EQ(split.mesh.vertices.size(), m.vertices.size());
+}
+
+TEST(SplitTouchingSolids, FacesLyingOnEachOtherPairTheSameInEveryPose) {
+  // A block on the left half of a slab, welded at its two bottom-left corners: around the edge
+  // x = 0, z = 1 the slab's top and the block's bottom lie on each other (and both left sides on
+  // one plane). Rounding in a turned pose puts those faces a hair apart either way; the pairing
+  // must follow the rule for faces on each other, not the rounding.
+  const TriMesh slab = box(Vec3(0, 0, 0), Vec3(2, 1, 1)), block = box(Vec3(0, 0, 1), Vec3(1, 1, 2));
+  const TriMesh input = welded({slab, block});
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> gauss;
+  for (int pose = 0; pose < 20; ++pose) {
+    SCOPED_TRACE("pose " + std::to_string(pose));
+    const double w = gauss(rng), x = gauss(rng), y = gauss(rng), z = gauss(rng);  // drawn in this order
+    const Eigen::Matrix3d r = Eigen::Quaterniond(w, x, y, z).normalized().toRotationMatrix();
+    const TouchingSolidsSplit split = splitTouchingSolids(acdtest::moved(input, r, Vec3(0.3, -7.1, 2.2)));
+    EXPECT_EQ(split.copiedVertices, 2);
+    std::vector<double> volumes;
+    for (const TriMesh& p : splitEdgeConnected(split.mesh)) {
+      EXPECT_TRUE(isClosedOriented(p));
+      volumes.push_back(signedVolume(p));
+    }
+    std::sort(volumes.begin(), volumes.end());
+    ASSERT_EQ(volumes.size(), 2u);
+    EXPECT_NEAR(volumes[0], 1.0, 1e-9);
+    EXPECT_NEAR(volumes[1], 2.0, 1e-9);
+  }
 }
