@@ -391,6 +391,11 @@ def decompose_seeds():
     # 2026-11-29 (a random run): a double cone of 1e-6 merged into flat faces; the T-junction
     # split repeated a flat face's own corner and CGAL's orient_polygon_soup never returned.
     out["finding-2026-11-29-hang.bin"] = base64.b64decode("QSxCIbd/dmzvAWezt9rzs4pOcOH1hZDyIb/kgTQdCJrdrbWk/ZVj3/+hMX9bdBgmNHN2")
+    # 2026-11-29 (the smoke run): a closed sphere-like solid passing through itself, tau 0.2: its
+    # repair moves the surface and a hull ends 1.6 tau off the input as read, which the result
+    # reports (exit 8); the harness had counted it as silent.
+    out["finding-2026-11-29-crossing.bin"] = base64.b64decode(
+        "LEIht39yaBgBD/oKKCgoKCgoKCgoKCgoKCgoKCgoKCgoKCgoKCgoKCgoKCgoKCgoKCgoKCgoKCgoAAAAAAAAADTvZ3N0dg==")
     return out
 
 
