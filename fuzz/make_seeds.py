@@ -396,6 +396,10 @@ def decompose_seeds():
     # reports (exit 8); the harness had counted it as silent.
     out["finding-2026-11-29-crossing.bin"] = base64.b64decode(
         "LEIht39yaBgBD/oKKCgoKCgoKCgoKCgoKCgoKCgoKCgoKCgoKCgoKCgoKCgoKCgoKCgoKCgoKCgoAAAAAAAAADTvZ3N0dg==")
+    # 2026-11-29 (a random run): another closed surface passing through itself, decomposed
+    # through its wrap at tau 0.2, a hull 1.01 tau off the model, reported (exit 8).
+    out["finding-2026-11-29-crossing-wrap.bin"] = base64.b64decode(
+        "3DDG4MmXI0+qPt87gQW/gULEww+/5IE0HQia3a3PsaQ68W7QKwYAAAAAoEI1NwEAYHAAAmCwTw==")
     return out
 
 
