@@ -400,6 +400,10 @@ def decompose_seeds():
     # through its wrap at tau 0.2, a hull 1.01 tau off the model, reported (exit 8).
     out["finding-2026-11-29-crossing-wrap.bin"] = base64.b64decode(
         "3DDG4MmXI0+qPt87gQW/gULEww+/5IE0HQia3a3PsaQ68W7QKwYAAAAAoEI1NwEAYHAAAmCwTw==")
+    # 2026-11-29 (a random run): a mesh whose faces the repairs leave all flat, sent to the wrap:
+    # CGAL's alpha wrap read the box of an empty tree (UndefinedBehaviorSanitizer).
+    out["finding-2026-11-29-flat-wrap.bin"] = base64.b64decode(
+        "wlAU8ogCAAAAAAAAAP5zmcT//////////////////////wEAAAAAAAAAv+SBNB0Imt3aXfnQ")
     return out
 
 

@@ -62,3 +62,15 @@ TEST(SurfaceDistance, OutsideCountsOnlyWhatLiesOutsideTheSolid) {
   // The two-sided measure sees the inner box's distance to the unit box's surface instead.
   EXPECT_NEAR(surfaceDistance(shapes::box(Vec3(0.2, 0.2, 0.2), Vec3(0.8, 0.8, 0.8)), unit).aToB, 0.2, 1e-9);
 }
+
+TEST(Wrap, ASoupOfFlatFacesIsRefusedWithAMessage) {
+  // Every corner on one line: CGAL's oracle drops such triangles, and with none left its tree is
+  // empty (the wrap then read the box of nothing: undefined behaviour under the sanitizers).
+  TriMesh flat;
+  flat.vertices = {Vec3(0, 0, 0), Vec3(1, 1, 1), Vec3(2, 2, 2), Vec3(3, 3, 3)};
+  flat.faces = {{0, 1, 2}, {1, 2, 3}, {0, 3, 2}};
+  const Wrap w = alphaWrap(flat, 0.1, 0.01);
+  EXPECT_FALSE(w.status.ok());
+  EXPECT_NE(w.status.message.find("area"), std::string::npos) << w.status.message;
+  EXPECT_TRUE(w.mesh.faces.empty());
+}

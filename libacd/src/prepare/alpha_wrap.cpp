@@ -95,9 +95,17 @@ Wrap alphaWrap(const TriMesh& soup, double alpha, double offset) {
     std::vector<Point> points;
     points.reserve(soup.vertices.size());
     for (const Vec3& p : soup.vertices) points.push_back(toPoint(p));
+    // Only triangles with an area, as CGAL's oracle keeps them: with none left its tree is empty
+    // and the wrap reads the box of nothing (undefined behaviour).
     std::vector<std::array<std::size_t, 3>> faces;
     faces.reserve(soup.faces.size());
-    for (const Face& f : soup.faces) faces.push_back({std::size_t(f[0]), std::size_t(f[1]), std::size_t(f[2])});
+    for (const Face& f : soup.faces)
+      if (!CGAL::collinear(points[f[0]], points[f[1]], points[f[2]]))
+        faces.push_back({std::size_t(f[0]), std::size_t(f[1]), std::size_t(f[2])});
+    if (faces.empty()) {
+      w.status = Status::error(StatusCode::InvalidParameter, "alpha wrap needs a face with an area (every face is flat)");
+      return w;
+    }
     CGAL::Surface_mesh<Point> wrap;
     CGAL::alpha_wrap_3(points, faces, alpha, offset, wrap);
     wrap.collect_garbage();
