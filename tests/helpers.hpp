@@ -48,6 +48,13 @@ inline TriMesh moved(const TriMesh& m, const Eigen::Matrix3d& r, const Vec3& t) 
   return out;
 }
 
+/// A rotation drawn uniformly: a quaternion of four normal draws, normalised.
+inline Eigen::Matrix3d randomRotation(std::mt19937_64& rng) {
+  std::normal_distribution<double> g;
+  const double w = g(rng), x = g(rng), y = g(rng), z = g(rng);  // drawn in this order
+  return Eigen::Quaterniond(w, x, y, z).normalized().toRotationMatrix();
+}
+
 /// The mesh in normalised units (minimum enclosing sphere of radius 1).
 inline TriMesh normalised(const TriMesh& m) { return acd::applyNormalization(m, acd::minimumSphereNormalization(m)); }
 

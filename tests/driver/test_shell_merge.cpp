@@ -94,10 +94,8 @@ TEST(MergeAcrossShells, TheSameMergesInAnyPose) {
   for (const Component& c : original.components) expected.push_back(c.volume);
   std::sort(expected.begin(), expected.end());
   std::mt19937_64 rng(5);
-  std::normal_distribution<double> gauss;
   for (int motion = 0; motion < 4; ++motion) {
-    const double w = gauss(rng), x = gauss(rng), y = gauss(rng), z = gauss(rng);  // drawn in this order
-    const Eigen::Matrix3d r = Eigen::Quaterniond(w, x, y, z).normalized().toRotationMatrix();
+    const Eigen::Matrix3d r = acdtest::randomRotation(rng);
     const Decomposition turned = decompose(acdtest::moved(input, r, Vec3(3.7, -12.1, 0.9)), DecomposeOptions{});
     ASSERT_TRUE(turned.status.ok()) << turned.status.message;
     std::vector<double> volumes;

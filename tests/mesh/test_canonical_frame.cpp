@@ -22,6 +22,7 @@ namespace {
 using acd::TriMesh;
 using acd::Vec3;
 using acdtest::moved;
+using acdtest::randomRotation;
 
 /// Unit cells in an L with a tower and a stub: mirror symmetric about the plane x = z (so one of
 /// its third moments vanishes), no two equal principal moments.
@@ -35,12 +36,6 @@ TriMesh asymmetricShape() {
   return m;
 }
 
-Eigen::Matrix3d randomRotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  const double w = g(rng), x = g(rng), y = g(rng), z = g(rng);  // drawn in this order
-  Eigen::Quaterniond q(w, x, y, z);
-  return q.normalized().toRotationMatrix();
-}
 
 /// The same solid with vertices renumbered and faces shuffled (and each face's corners rotated).
 TriMesh shuffled(const TriMesh& m, std::mt19937_64& rng) {

@@ -74,11 +74,9 @@ TEST(SplitTouchingSolids, FacesLyingOnEachOtherPairTheSameInEveryPose) {
   const TriMesh slab = box(Vec3(0, 0, 0), Vec3(2, 1, 1)), block = box(Vec3(0, 0, 1), Vec3(1, 1, 2));
   const TriMesh input = welded({slab, block});
   std::mt19937_64 rng(3);
-  std::normal_distribution<double> gauss;
   for (int pose = 0; pose < 20; ++pose) {
     SCOPED_TRACE("pose " + std::to_string(pose));
-    const double w = gauss(rng), x = gauss(rng), y = gauss(rng), z = gauss(rng);  // drawn in this order
-    const Eigen::Matrix3d r = Eigen::Quaterniond(w, x, y, z).normalized().toRotationMatrix();
+    const Eigen::Matrix3d r = acdtest::randomRotation(rng);
     const TouchingSolidsSplit split = splitTouchingSolids(acdtest::moved(input, r, Vec3(0.3, -7.1, 2.2)));
     EXPECT_EQ(split.copiedVertices, 2);
     std::vector<double> volumes;

@@ -42,12 +42,10 @@ std::vector<std::pair<int, int>> pairByMaterial(const TriMesh& m, int lo, int hi
   for (Incidence& in : around)
     if (in.angle > pi - kSameAngle) in.angle -= 2 * pi;
   std::sort(around.begin(), around.end(), [](const Incidence& a, const Incidence& b) { return a.angle < b.angle; });
-  std::vector<int> cluster(around.size(), 0);
   for (std::size_t i = 1, start = 0; i < around.size(); ++i) {
     if (around[i].angle - around[start].angle > kSameAngle) start = i;
-    cluster[i] = static_cast<int>(start);
+    around[i].angle = around[start].angle;
   }
-  for (std::size_t i = 0; i < around.size(); ++i) around[i].angle = around[cluster[i]].angle;
   // A face running lo -> hi has its normal towards increasing angle (e x d), so its material lies
   // at decreasing angle; a face running hi -> lo the other way. At equal angles (faces that lie on
   // each other) the one closing a wedge comes before the one opening the next.
