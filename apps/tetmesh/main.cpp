@@ -56,12 +56,12 @@ int writeComplexFiles(const Args& a, const HullMeshResult& r) {
     }
   }
   // The regions as meshed, one OBJ object per component: a picture before the numbers.
-  if (!a.regions.empty() && !r.complex.regions.empty()) {
+  if (!a.regions.empty() && !r.regions.empty()) {
     std::vector<acd::TriMesh> meshes;
     std::vector<std::string> names;
-    for (std::size_t i = 0; i < r.complex.regions.size(); ++i)
-      if (!r.complex.regions[i].empty())
-        meshes.push_back(r.complex.regions[i]), names.push_back("component_" + std::to_string(i + 1));
+    for (std::size_t i = 0; i < r.regions.size(); ++i)
+      if (!r.regions[i].empty())
+        meshes.push_back(r.regions[i]), names.push_back("component_" + std::to_string(i + 1));
     const acd::Status s = acd::writeObjObjects(a.regions, meshes, names);
     if (!s.ok()) {
       return kConsole.fail(kOutputFailed, s.message);
@@ -70,7 +70,7 @@ int writeComplexFiles(const Args& a, const HullMeshResult& r) {
   return kOk;
 }
 
-int run(const Args& a) {
+int run(Args& a) {
   const bool progress = !a.quiet && ::isatty(STDERR_FILENO);
   TetFormat format = TetFormat::Vtk;
   if (const int code = checkArgs(a, format); code != kOk) return code;
@@ -84,7 +84,7 @@ int run(const Args& a) {
   if (!read.status.ok()) {
     return kConsole.fail(kBadInput, read.status.message);
   }
-  if (progress) kConsole.sayf("decomposing at tau %g, hulls, TetGen ...", a.options.tau);
+  if (progress) kConsole.sayf("decomposing at tau %g, hulls, tets ...", a.options.tau);
   const HullMeshResult r = meshHulls(read.mesh, a.options);
   if (const int code = writeComplexFiles(a, r); code != kOk) return code;
   if (!r.status.ok()) {
@@ -105,13 +105,13 @@ int run(const Args& a) {
         std::fprintf(stderr, "\r  ARAP iteration %d, energy %.6g   ", iteration, energy);
       };
     }
-    const int code = runDeformation(a.deform, deformOpts, r.tetgen.mesh, read.mesh, deformed);
+    const int code = runDeformation(a.deform, deformOpts, r.mesh, read.mesh, deformed);
     if (progress) std::fprintf(stderr, "\n");
     if (code != kOk) return code;
   }
 
   if (!a.out.empty()) {
-    const acd::Status s = writeTetMesh(a.out, format, r.tetgen.mesh);
+    const acd::Status s = writeTetMesh(a.out, format, r.mesh);
     if (!s.ok()) {
       return kConsole.fail(kOutputFailed, s.message);
     }
@@ -130,14 +130,19 @@ int main(int argc, char** argv) {
   app.footer(exitCodes());
   app.add_option("MODEL", a.model, "Closed mesh (OFF, OBJ, PLY, STL)")->required();
   app.add_option("-t,--tau", a.options.tau, "Concavity tolerance, normalised units")->capture_default_str();
-  a.options.simplify = 24;  // the paper's coarse mesh; the exact hulls keep every vertex of the cut sections
+  app.add_option("--mesher", a.mesher,
+                 "refine: Delaunay refinement of the hull regions, sizes tied to tau, no slivers; "
+                 "complex: the regions' exact faces given to TetGen (the paper's Figure 4)")
+      ->capture_default_str();
   app.add_option("--simplify", a.options.simplify,
-                 "Hulls with at most K vertices that still contain their component (K >= 4; 0: the exact hulls)")
-      ->capture_default_str();
+                 "Hulls with at most K vertices that still contain their component (K >= 4; 0: the exact hulls; "
+                 "default: 0 with refine, 24 with complex)");
+  app.add_flag("--clip", a.options.clip, "Mesh the components themselves: the hull regions clipped to the model (refine)");
   app.add_option("--quality", a.options.tetgen.radiusEdge,
-                 "TetGen radius-edge bound (q, e.g. 2); 0: no refinement, the coarse constrained Delaunay mesh")
+                 "Radius-edge bound of the tets (e.g. 1.5); 0: the coarse mesh (refine: bound 3; complex: TetGen's "
+                 "constrained Delaunay mesh, no refinement)")
       ->capture_default_str();
-  app.add_option("--max-volume", a.options.tetgen.maxVolume, "TetGen maximum tet volume (a), input units; 0: none");
+  app.add_option("--max-volume", a.options.tetgen.maxVolume, "Largest tet volume, input units; 0: none");
   app.add_option("-o,--output", a.out, "Mesh file (.vtk, .mesh) or base name for .node/.ele/.face");
   app.add_option("--format", a.format, "vtk, mesh or tetgen (default: from the -o extension, else vtk)");
   app.add_flag("--compare", a.compare, "Also mesh the model itself with TetGen and print both side by side");

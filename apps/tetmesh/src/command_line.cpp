@@ -7,7 +7,7 @@ namespace tetmesh {
 using appcli::kBadParameter;
 using appcli::kOk;
 
-int checkArgs(const Args& a, TetFormat& format) {
+int checkArgs(Args& a, TetFormat& format) {
   std::string formatName = a.format;
   if (formatName.empty() && !a.out.empty()) {
     const auto dot = a.out.rfind('.');
@@ -20,12 +20,23 @@ int checkArgs(const Args& a, TetFormat& format) {
   if (!(a.options.tau > 0) || !std::isfinite(a.options.tau)) {
     return kConsole.failf(kBadParameter, "--tau must be positive, got %g", a.options.tau);
   }
-  if (a.options.simplify != 0 && a.options.simplify < 4) {
+  if (a.mesher == "refine" || a.mesher == "complex") {
+    a.options.mesher = a.mesher == "refine" ? Mesher::Refine : Mesher::Complex;
+  } else {
+    return kConsole.failf(kBadParameter, "unknown --mesher '%s' (refine or complex)", a.mesher.c_str());
+  }
+  if (a.options.clip && a.options.mesher != Mesher::Refine) {
+    return kConsole.fail(kBadParameter, "--clip needs --mesher refine");
+  }
+  if (a.options.simplify != -1 && a.options.simplify != 0 && a.options.simplify < 4) {
     return kConsole.failf(kBadParameter, "--simplify must be at least 4 (a tetrahedron), got %d", a.options.simplify);
   }
-  if (a.options.tetgen.radiusEdge != 0 && !(a.options.tetgen.radiusEdge >= 1.0)) {
-    return kConsole.failf(kBadParameter, "--quality must be at least 1 (TetGen does not terminate below), or 0 for none; got %g",
-                          a.options.tetgen.radiusEdge);
+  // Delaunay refinement is proven to end from a bound of 2 and ends in practice down to about
+  // 1.2 (TetGen) and 1.5 (CGAL's Mesh_3, whose sliver passes follow); below, it may not.
+  const double lowestQuality = a.options.mesher == Mesher::Refine ? 1.5 : 1.0;
+  if (a.options.tetgen.radiusEdge != 0 && !(a.options.tetgen.radiusEdge >= lowestQuality)) {
+    return kConsole.failf(kBadParameter, "--quality must be at least %g with --mesher %s (the refinement may not end below), or 0 for none; got %g",
+                          lowestQuality, a.mesher.c_str(), a.options.tetgen.radiusEdge);
   }
   if (a.options.tetgen.maxVolume < 0 || !std::isfinite(a.options.tetgen.maxVolume)) {
     return kConsole.failf(kBadParameter, "--max-volume must be positive (or 0 for no bound), got %g", a.options.tetgen.maxVolume);

@@ -30,6 +30,7 @@ struct DeformArgs {
 struct Args {
   std::string model;
   HullMeshOptions options;
+  std::string mesher = "refine";  // refine or complex
   std::string out;
   std::string format;
   std::string json;
@@ -40,9 +41,9 @@ struct Args {
   DeformArgs deform;
 };
 
-/// The output format from --format, else from the -o extension; kOk or kBadParameter after a
-/// message, as for every range checked here.
-int checkArgs(const Args& a, TetFormat& format);
+/// The output format from --format, else from the -o extension, and the mesher from --mesher
+/// (into `a.options`); kOk or kBadParameter after a message, as for every range checked here.
+int checkArgs(Args& a, TetFormat& format);
 
 /// The deformation options as given; kOk, or kBadParameter after a message when they cannot work.
 int deformOptions(const DeformArgs& d, DeformationOptions& o);

@@ -6,27 +6,162 @@
 #include <acd/algo/stopwatch.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/algo/hull.hpp>
+#include <acd/algo/shell_inside.hpp>
 
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <memory>
 
 namespace tetmesh {
 
 namespace {
 
-/// Gaps between hulls narrower than this times tau (of the half-diagonal) are closed: far below
-/// what tau resolves (hulls stand up to tau off the model), and a gap that thin between two
-/// regions would give TetGen two faces a hair apart, or a mesh in two pieces where the model is one.
+/// Gaps between hulls narrower than this times tau (of the half-diagonal) are closed by the
+/// complex: far below what tau resolves (hulls stand up to tau off the model), and a gap that
+/// thin between two regions would give TetGen two faces a hair apart, or a mesh in two pieces
+/// where the model is one.
 constexpr double kClosedGapPerTau = 1e-3;
+
+/// The refinement's surface follows the regions within this share of tau (normalised units, as
+/// tau): the regions themselves stand up to tau off the model, so a quarter of tau more is of the
+/// order of what the hulls already allow, and features below it are not resolved (and so cannot
+/// force short edges). Gaps between regions narrower than it are closed.
+constexpr double kFacetDistancePerTau = 0.25;
+/// Radius-edge bound of the coarse refinement: the 2 from which Delaunay refinement is proven to
+/// end; slivers, which a radius-edge bound does not see, are the sliver passes' work.
+constexpr double kCoarseRadiusEdge = 2.0;
+/// The last slivers' corners may move by this share of the facet distance (the surface follows
+/// the regions within the facet distance anyway).
+constexpr double kSliverMoveShare = 0.5;
+/// Smallest angle of a surface triangle (the largest bound CGAL proves its refinement ends with).
+constexpr double kFacetAngle = 30.0;
+
+/// The circumradius of a regular tet of volume v: the refinement's size bound for TetGen's `a`.
+double regularCircumradius(double volume) {
+  const double edge = std::cbrt(6.0 * std::sqrt(2.0) * volume);
+  return edge * std::sqrt(6.0) / 4.0;
+}
+
+int defaultSimplify(Mesher mesher) { return mesher == Mesher::Complex ? 24 : 0; }
+
+/// Mesher::Complex: the complex of the regions (simplified to `simplify` corners when > 0) given
+/// to TetGen, with larger snapping distances and smaller budgets when TetGen refuses.
+void meshComplex(const std::vector<acd::TriMesh>& exact, int simplify, const HullMeshOptions& options, HullMeshResult& r) {
+  // TetGen merges points closer than its own tolerance and then trips over the complex; when it
+  // refuses one, the complex is rebuilt with a 10 times larger snapping distance (twice at most).
+  auto attempt = [&](std::vector<acd::TriMesh> hulls) {
+    r.hulls = std::move(hulls);
+    for (int tries = 0; tries < 3 && !r.tetgen.ok; ++tries) {
+      const double tolerance = options.tolerance * std::pow(10.0, tries);
+      const auto t0 = acd::Clock::now();
+      HullComplexOptions copt;
+      copt.tolerance = tolerance;
+      copt.closedGap = kClosedGapPerTau * options.tau;
+      r.complex = buildHullComplex(r.hulls, copt);
+      r.times.complex += acd::secondsSince(t0);
+      r.toleranceUsed = tolerance;
+      if (!r.complex.status.ok()) continue;
+      r.tetgen = runTetGen(r.complex.plc, options.tetgen);
+      r.times.tetgen += r.tetgen.seconds;
+      if (!r.tetgen.ok) r.refusedComplexes.push_back(r.tetgen.error);
+    }
+  };
+  // Simplified hulls: when TetGen refuses every complex, smaller budgets give other regions, and
+  // one of them is often accepted; the exact hulls come last.
+  const int lowestBudget = std::min(simplify, std::max(8, simplify - 8));
+  for (int budget = simplify; simplify > 0 && !r.tetgen.ok && budget >= lowestBudget; budget -= 4) {
+    const auto t0 = acd::Clock::now();
+    HullSimplifyOptions sopt;
+    sopt.maxVertices = budget;
+    const SimplifiedHulls simplified = simplifyHulls(exact, sopt);
+    r.times.hulls += acd::secondsSince(t0);
+    r.simplifyUsed = budget;
+    r.simplifyMissed = 0;
+    for (bool reached : simplified.reached) r.simplifyMissed += reached ? 0 : 1;
+    r.separatingPlanes = simplified.separatingPlanes;
+    r.overlappingHulls = simplified.overlappingHulls;
+    attempt(simplified.regions);
+  }
+  if (!r.tetgen.ok) {
+    r.simplifyFallback = simplify > 0;
+    attempt(exact);
+  }
+  if (!r.complex.status.ok()) {
+    r.status = r.complex.status;
+    return;
+  }
+  r.regions = r.complex.regions;
+  if (!r.tetgen.ok) {
+    // Say which facets were at fault: TetGen's own intersection check (`d`) on the same input.
+    TetGenOptions check = options.tetgen;
+    check.checkIntersections = true;
+    const TetGenResult detect = runTetGen(r.complex.plc, check);
+    std::string why = "meshing the hulls: " + r.tetgen.error;
+    if (!detect.ok) why += " (intersection check: " + detect.error + ")";
+    r.status = acd::Status::error(acd::StatusCode::InternalError, why);
+    return;
+  }
+  r.mesh = std::move(r.tetgen.mesh);
+  r.tetgen.mesh = {};
+}
+
+/// Mesher::Refine: Delaunay refinement of the regions, with sizes tied to tau.
+void meshRefined(const acd::TriMesh& model, const std::vector<acd::TriMesh>& exact, int simplify,
+                 const HullMeshOptions& options, HullMeshResult& r) {
+  if (simplify > 0) {
+    const auto t0 = acd::Clock::now();
+    HullSimplifyOptions sopt;
+    sopt.maxVertices = simplify;
+    const SimplifiedHulls simplified = simplifyHulls(exact, sopt);
+    r.times.hulls += acd::secondsSince(t0);
+    r.simplifyUsed = simplify;
+    for (bool reached : simplified.reached) r.simplifyMissed += reached ? 0 : 1;
+    r.separatingPlanes = simplified.separatingPlanes;
+    r.overlappingHulls = simplified.overlappingHulls;
+    r.hulls = simplified.regions;
+  } else {
+    r.hulls = exact;
+  }
+  r.regions = r.hulls;
+  const double unit = 1.0 / r.decomposition.normalization.scale;  // tau's unit in input lengths
+  RefineOptions& o = r.refineOptions;
+  o.facetDistance = kFacetDistancePerTau * options.tau * unit;
+  o.closedGap = o.facetDistance;
+  const bool quality = options.tetgen.radiusEdge > 0;
+  o.radiusEdge = quality ? options.tetgen.radiusEdge : kCoarseRadiusEdge;
+  o.sliverMove = kSliverMoveShare * o.facetDistance;
+  o.facetAngle = kFacetAngle;
+  if (options.tetgen.maxVolume > 0) o.cellSize = regularCircumradius(options.tetgen.maxVolume);
+  std::unique_ptr<acd::ShellsInside> inside;
+  std::function<bool(const Vec3&)> keep;
+  if (options.clip) {
+    inside = std::make_unique<acd::ShellsInside>(model);
+    keep = [&inside](const Vec3& p) { return inside->inside(p); };
+  }
+  r.refine = refineRegions(r.regions, o, keep);
+  r.times.refine = r.refine.seconds;
+  if (!r.refine.ok) {
+    r.status = acd::Status::error(acd::StatusCode::InternalError, "meshing the hulls: " + r.refine.error);
+    return;
+  }
+  r.mesh = std::move(r.refine.mesh);
+  r.refine.mesh = {};
+}
 
 }  // namespace
 
 HullMeshResult meshHulls(const acd::TriMesh& model, const HullMeshOptions& options) {
   HullMeshResult r;
-  if (options.simplify != 0 && options.simplify < 4) {
-    r.status =
-        acd::Status::error(acd::StatusCode::InvalidParameter,
-                           "--simplify must be at least 4 (a tetrahedron), got " + std::to_string(options.simplify));
+  const int simplify = options.simplify >= 0 ? options.simplify : defaultSimplify(options.mesher);
+  if (simplify != 0 && simplify < 4) {
+    r.status = acd::Status::error(acd::StatusCode::InvalidParameter,
+                                  "--simplify must be at least 4 (a tetrahedron), got " + std::to_string(simplify));
+    return r;
+  }
+  if (options.clip && options.mesher != Mesher::Refine) {
+    r.status = acd::Status::error(acd::StatusCode::InvalidParameter,
+                                  "clipping the components to the model needs the refinement mesher");
     return r;
   }
   auto t0 = acd::Clock::now();
@@ -57,75 +192,30 @@ HullMeshResult meshHulls(const acd::TriMesh& model, const HullMeshOptions& optio
   }
   r.times.hulls = acd::secondsSince(t0);
 
-  // TetGen merges points closer than its own tolerance and then trips over the complex; when it
-  // refuses one, the complex is rebuilt with a 10 times larger snapping distance (twice at most).
-  auto meshComplex = [&](std::vector<acd::TriMesh> hulls) {
-    r.hulls = std::move(hulls);
-    r.maxOutside = 0.0;
-    for (std::size_t i = 0; i < r.hulls.size(); ++i)
-      r.maxOutside =
-          std::max(r.maxOutside, maxOutsideDistance(r.hulls[i], r.decomposition.components[i].mesh.vertices));
-    for (int attempt = 0; attempt < 3 && !r.tetgen.ok; ++attempt) {
-      const double tolerance = options.tolerance * std::pow(10.0, attempt);
-      t0 = acd::Clock::now();
-      HullComplexOptions copt;
-      copt.tolerance = tolerance;
-      copt.closedGap = kClosedGapPerTau * options.tau;
-      r.complex = buildHullComplex(r.hulls, copt);
-      r.times.complex += acd::secondsSince(t0);
-      r.toleranceUsed = tolerance;
-      if (!r.complex.status.ok()) continue;
-      r.tetgen = runTetGen(r.complex.plc, options.tetgen);
-      r.times.tetgen += r.tetgen.seconds;
-      if (!r.tetgen.ok) r.refusedComplexes.push_back(r.tetgen.error);
-    }
-  };
-  // Simplified hulls: when TetGen refuses every complex, smaller budgets give other regions, and
-  // one of them is often accepted; the exact hulls come last.
-  const int lowestBudget = std::min(options.simplify, std::max(8, options.simplify - 8));
-  for (int budget = options.simplify; options.simplify > 0 && !r.tetgen.ok && budget >= lowestBudget; budget -= 4) {
-    t0 = acd::Clock::now();
-    HullSimplifyOptions sopt;
-    sopt.maxVertices = budget;
-    const SimplifiedHulls simplified = simplifyHulls(exact, sopt);
-    r.times.hulls += acd::secondsSince(t0);
-    r.simplifyUsed = budget;
-    r.simplifyMissed = 0;
-    for (bool reached : simplified.reached) r.simplifyMissed += reached ? 0 : 1;
-    r.separatingPlanes = simplified.separatingPlanes;
-    r.overlappingHulls = simplified.overlappingHulls;
-    meshComplex(simplified.regions);
-  }
-  if (!r.tetgen.ok) {
-    r.simplifyFallback = options.simplify > 0;
-    meshComplex(exact);
-  }
-  if (!r.complex.status.ok()) {
-    r.status = r.complex.status;
-    return r;
-  }
+  if (options.mesher == Mesher::Complex)
+    meshComplex(exact, simplify, options, r);
+  else
+    meshRefined(model, exact, simplify, options, r);
+  if (r.regions.empty() && !r.status.ok()) return r;
+
+  const std::size_t n = r.decomposition.components.size();
+  r.maxOutside = 0.0;
+  for (std::size_t i = 0; i < n; ++i)
+    r.maxOutside = std::max(r.maxOutside, maxOutsideDistance(r.hulls[i], r.decomposition.components[i].mesh.vertices));
   r.hullsVolume = 0;
-  for (const acd::TriMesh& region : r.complex.regions)
+  for (const acd::TriMesh& region : r.regions)
     if (!region.empty()) r.hullsVolume += acd::signedVolume(region);
   // Containment where it matters: each component inside the region that was meshed for it.
-  for (std::size_t i = 0; i < r.complex.regions.size(); ++i)
-    r.maxOutsideRegion =
-        std::max(r.maxOutsideRegion,
-                 r.complex.regions[i].empty()
-                     ? std::numeric_limits<double>::infinity()
-                     : maxOutsideDistance(r.complex.regions[i], r.decomposition.components[i].mesh.vertices));
-  if (!r.tetgen.ok) {
-    // Say which facets were at fault: TetGen's own intersection check (`d`) on the same input.
-    TetGenOptions check = options.tetgen;
-    check.checkIntersections = true;
-    const TetGenResult detect = runTetGen(r.complex.plc, check);
-    std::string why = "meshing the hulls: " + r.tetgen.error;
-    if (!detect.ok) why += " (intersection check: " + detect.error + ")";
-    r.status = acd::Status::error(acd::StatusCode::InternalError, why);
-    return r;
-  }
+  for (std::size_t i = 0; i < n; ++i)
+    r.maxOutsideRegion = std::max(r.maxOutsideRegion, r.regions[i].empty() ? std::numeric_limits<double>::infinity()
+                                                                           : maxOutsideDistance(r.regions[i], r.decomposition.components[i].mesh.vertices));
+  if (!r.status.ok()) return r;
+  r.meshedVolume.assign(n, 0.0);
+  for (std::size_t t = 0; t < r.mesh.tets.size(); ++t)
+    if (r.mesh.labels[t] >= 1 && r.mesh.labels[t] <= static_cast<int>(n))
+      r.meshedVolume[r.mesh.labels[t] - 1] += tetVolume(r.mesh, static_cast<int>(t));
   t0 = acd::Clock::now();
-  r.quality = measureQuality(r.tetgen.mesh);
+  r.quality = measureQuality(r.mesh);
   r.times.quality = acd::secondsSince(t0);
   return r;
 }

@@ -1,9 +1,11 @@
-// The tetmesh pipeline: solid ACD, a convex hull per component (optionally simplified), one
-// conforming complex of the hulls, TetGen; and, for comparison, TetGen on the model itself.
+// The tetmesh pipeline: solid ACD, a convex hull per component (optionally simplified), then
+// either Delaunay refinement of the hull regions (the default) or one conforming complex of the
+// hulls given to TetGen; and, for comparison, TetGen on the model itself.
 #pragma once
 
 #include "hull_complex.hpp"
 #include "mesh_quality.hpp"
+#include "region_refiner.hpp"
 #include "tetgen_run.hpp"
 
 #include <acd/decompose.hpp>
@@ -13,13 +15,21 @@
 
 namespace tetmesh {
 
+/// How the hull regions become tets.
+enum class Mesher {
+  Refine,   // Delaunay refinement of the regions (region_refiner.hpp): no slivers, coarse by tau
+  Complex,  // the regions' exact complex (hull_complex.hpp) given to TetGen: their faces kept exactly
+};
+
 struct HullMeshOptions {
   double tau = 0.2;          // concavity tolerance of the decomposition, normalised units
-  int simplify = 0;          // > 0: hulls with at most this many vertices (>= 4)
+  Mesher mesher = Mesher::Refine;
+  int simplify = -1;         // > 0: hulls with at most this many vertices (>= 4); 0: exact; -1: the mesher's default
+  bool clip = false;         // Refine only: mesh the components themselves (the regions clipped to the model)
   bool merge = false;        // the decomposition's merge pass; off keeps hulls apart along cut planes
   int threads = 0;           // decomposition threads, 0 = all cores
   double tolerance = 1e-8;   // complex snapping tolerance (relative); raised 10x if TetGen refuses
-  TetGenOptions tetgen = coarse();
+  TetGenOptions tetgen = coarse();  // radiusEdge and maxVolume also steer the refinement
   /// No quality refinement: the constrained Delaunay mesh of the complex, as coarse as it gets.
   static TetGenOptions coarse() {
     TetGenOptions o;
@@ -29,7 +39,7 @@ struct HullMeshOptions {
 };
 
 struct HullMeshTimes {
-  double decompose = 0, hulls = 0, complex = 0, tetgen = 0, quality = 0;  // wall seconds
+  double decompose = 0, hulls = 0, complex = 0, tetgen = 0, refine = 0, quality = 0;  // wall seconds
 };
 
 struct HullMeshResult {
@@ -43,12 +53,19 @@ struct HullMeshResult {
   int overlappingHulls = 0;              // pairs of exact hulls that overlap (a plane cuts them)
   bool simplifyFallback = false;         // TetGen refused the simplified hulls: the exact ones were meshed
   double maxOutside = 0.0;               // largest distance of a component vertex outside its hull
+  std::vector<acd::TriMesh> regions;     // per component, the region meshed for it (empty if it vanished)
+  double maxOutsideRegion = 0.0;         // same, against the meshed region (after clipping)
+  TetMesh mesh;                          // the result, labels 1..n as the components
+  std::vector<double> meshedVolume;      // per component: volume of its tets
+  MeshQuality quality;
+  // Mesher::Complex
   HullComplex complex;
-  double maxOutsideRegion = 0.0;               // same, against the meshed region (after clipping)
   double toleranceUsed = 0.0;                  // snapping tolerance of the complex TetGen meshed
   std::vector<std::string> refusedComplexes;   // TetGen's errors on complexes with smaller tolerances
-  TetGenResult tetgen;
-  MeshQuality quality;
+  TetGenResult tetgen;                         // its mesh moved to `mesh`
+  // Mesher::Refine
+  RefineOptions refineOptions;           // as used (input units)
+  RefineResult refine;                   // its mesh moved to `mesh`
   double modelVolume = 0.0;              // input units
   double hullsVolume = 0.0;              // volume of the union of the hull regions
   HullMeshTimes times;

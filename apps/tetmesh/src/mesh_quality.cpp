@@ -58,10 +58,13 @@ MeshQuality measureQuality(const TetMesh& mesh) {
     q.minTetVolume = std::min(q.minTetVolume, vol);
     if (!(vol > 0)) ++q.nonPositiveTets;
     const Vec3 &a = mesh.points[v[0]], &b = mesh.points[v[1]], &c = mesh.points[v[2]], &d = mesh.points[v[3]];
+    double smallest = 180.0;
     for (double angle : dihedralAngles(a, b, c, d)) {
-      q.minDihedral = std::min(q.minDihedral, angle);
+      smallest = std::min(smallest, angle);
       q.maxDihedral = std::max(q.maxDihedral, angle);
     }
+    q.minDihedral = std::min(q.minDihedral, smallest);
+    if (smallest < kSliverDegrees) ++q.slivers;
     const double r = radiusEdgeRatio(a, b, c, d);
     ratios.push_back(r);
     std::size_t bin = 0;

@@ -9,6 +9,9 @@
 namespace tetmesh {
 
 /// Upper ends of the radius-edge ratio bins (the last bin is open). A regular tet has sqrt(6)/4.
+/// A tet with a dihedral angle below this is counted as a sliver (the bound docs/TETMESH.md states).
+constexpr double kSliverDegrees = 5.0;
+
 inline const std::array<double, 6> kRadiusEdgeBins = {1.0, 1.5, 2.0, 3.0, 5.0, 10.0};
 
 struct MeshQuality {
@@ -18,6 +21,7 @@ struct MeshQuality {
   double minTetVolume = 0.0;
   int nonPositiveTets = 0;            // tets with volume <= 0 (must be none)
   double minDihedral = 0.0, maxDihedral = 0.0;  // degrees
+  int slivers = 0;                    // tets with a dihedral angle below kSliverDegrees
   double minRadiusEdge = 0.0, medianRadiusEdge = 0.0, maxRadiusEdge = 0.0;
   std::array<int, kRadiusEdgeBins.size() + 1> radiusEdgeHistogram{};  // counts per bin
 };

@@ -29,6 +29,7 @@ json qualityJson(const MeshQuality& q) {
           {"volume", q.volume},
           {"non_positive_tets", q.nonPositiveTets},
           {"min_dihedral_deg", q.minDihedral},
+          {"tets_below_5_deg", q.slivers},
           {"max_dihedral_deg", q.maxDihedral},
           {"radius_edge", {{"min", q.minRadiusEdge}, {"median", q.medianRadiusEdge}, {"max", q.maxRadiusEdge}}},
           {"radius_edge_histogram", hist}};
@@ -66,14 +67,14 @@ std::string fmt(const char* f, double v) {
 /// component (the hulls stand off the model by up to tau by design; simplification adds more).
 double overshootOf(const HullMeshResult& r, int i) {
   const double component = acd::signedVolume(r.decomposition.components[i].mesh);
-  const double region = r.complex.regions[i].empty() ? 0.0 : acd::signedVolume(r.complex.regions[i]);
+  const double region = i < static_cast<int>(r.meshedVolume.size()) ? r.meshedVolume[i] : 0.0;
   return component > 0 ? region / component - 1.0 : 0.0;
 }
 
 /// One line: the median and the largest overshoot over the components, and which is largest.
 void printOvershoot(const HullMeshResult& r) {
   const int n = static_cast<int>(r.decomposition.components.size());
-  if (n == 0 || static_cast<int>(r.complex.regions.size()) < n) return;
+  if (n == 0 || static_cast<int>(r.meshedVolume.size()) < n) return;
   std::vector<double> all;
   int worst = 0;
   for (int i = 0; i < n; ++i) {
@@ -82,7 +83,7 @@ void printOvershoot(const HullMeshResult& r) {
   }
   std::vector<double> sorted = all;
   std::sort(sorted.begin(), sorted.end());
-  std::printf("  overshoot      region beyond its component: median %+.1f%%, largest %+.1f%% (component %d); per component: --json\n",
+  std::printf("  overshoot      tets beyond their component: median %+.1f%%, largest %+.1f%% (component %d); per component: --json\n",
               100 * sorted[n / 2], 100 * all[worst], worst + 1);
 }
 
@@ -132,12 +133,20 @@ void printReport(const Args& a, TetFormat format, const HullMeshResult& r, const
   std::printf("  containment    farthest component vertex outside its hull: %.3g, outside its meshed region: %.3g\n",
               r.maxOutside, r.maxOutsideRegion);
   printOvershoot(r);
-  std::printf("  complex        %d touching pairs (%d overlapping, deepest %.3g), %d contact planes, %d interface + %d boundary facets\n",
-              r.complex.contactPairs, r.complex.overlappingPairs, r.complex.maxOverlapDepth, r.complex.contactPlanes,
-              r.complex.interfaceFacets, r.complex.boundaryFacets);
-  std::printf("  TetGen         -%s (complex snapped at %.0e of the half-diagonal", r.tetgen.switches.c_str(), r.toleranceUsed);
-  if (!r.refusedComplexes.empty()) std::printf("; %zu complexes refused before", r.refusedComplexes.size());
-  std::printf(")\n");
+  if (a.options.mesher == Mesher::Complex) {
+    std::printf("  complex        %d touching pairs (%d overlapping, deepest %.3g), %d contact planes, %d interface + %d boundary facets\n",
+                r.complex.contactPairs, r.complex.overlappingPairs, r.complex.maxOverlapDepth, r.complex.contactPlanes,
+                r.complex.interfaceFacets, r.complex.boundaryFacets);
+    std::printf("  TetGen         -%s (complex snapped at %.0e of the half-diagonal", r.tetgen.switches.c_str(), r.toleranceUsed);
+    if (!r.refusedComplexes.empty()) std::printf("; %zu complexes refused before", r.refusedComplexes.size());
+    std::printf(")\n");
+  } else {
+    const RefineOptions& o = r.refineOptions;
+    std::printf("  refinement     %s; surface within %.3g, facet angle >= %g deg, radius-edge <= %g, gaps below %.3g closed,\n"
+                "                 slivers perturbed and exuded towards %g deg (%ld label queries)\n",
+                a.options.clip ? "the components (hull regions clipped to the model)" : "the hull regions", o.facetDistance,
+                o.facetAngle, o.radiusEdge, o.closedGap, o.sliverBound, r.refine.labelQueries);
+  }
   const bool two = a.compare;
   if (two) printColumns("", "hulls", "original model", true);
   const std::string directNote = direct.status.ok() ? "" : "not meshed";
@@ -150,12 +159,13 @@ void printReport(const Args& a, TetFormat format, const HullMeshResult& r, const
   printColumns("max dihedral (deg)", fmt("%.2f", r.quality.maxDihedral), col(fmt("%.2f", direct.quality.maxDihedral)), two);
   printColumns("radius-edge median", fmt("%.3f", r.quality.medianRadiusEdge), col(fmt("%.3f", direct.quality.medianRadiusEdge)), two);
   printColumns("radius-edge max", fmt("%.3f", r.quality.maxRadiusEdge), col(fmt("%.3f", direct.quality.maxRadiusEdge)), two);
-  printColumns("TetGen time (s)", fmt("%.3f", r.times.tetgen), col(fmt("%.3f", direct.tetgen.seconds)), two);
+  printColumns("tets below 5 deg", std::to_string(r.quality.slivers), col(std::to_string(direct.quality.slivers)), two);
+  printColumns("meshing time (s)", fmt("%.3f", r.times.tetgen + r.times.refine), col(fmt("%.3f", direct.tetgen.seconds)), two);
   std::printf("  radius-edge    %s\n", histogramLine(r.quality).c_str());
   if (two && direct.status.ok()) std::printf("  (original)     %s\n", histogramLine(direct.quality).c_str());
   if (two && !direct.status.ok()) std::printf("  original model not meshed: %s\n", direct.status.message.c_str());
-  std::printf("  time (s)       decompose %.3f, hulls %.3f, complex %.3f, TetGen %.3f, quality %.3f\n", r.times.decompose,
-              r.times.hulls, r.times.complex, r.times.tetgen, r.times.quality);
+  std::printf("  time (s)       decompose %.3f, hulls %.3f, complex %.3f, TetGen %.3f, refinement %.3f, quality %.3f\n",
+              r.times.decompose, r.times.hulls, r.times.complex, r.times.tetgen, r.times.refine, r.times.quality);
   if (!a.out.empty()) {
     std::printf("  wrote         ");
     for (const std::string& f : tetOutputFiles(a.out, format)) std::printf(" %s", f.c_str());
@@ -177,12 +187,22 @@ int writeJsonReport(const Args& a, const HullMeshResult& r, const DirectMeshResu
                        {"hull_vertices", r.hullVertices[i]},
                        {"meshed_hull_vertices", r.hulls[i].vertices.size()},
                        {"component_volume", acd::signedVolume(r.decomposition.components[i].mesh)},
-                       {"region_volume", r.complex.regions[i].empty() ? 0.0 : acd::signedVolume(r.complex.regions[i])},
+                       {"region_volume", r.regions[i].empty() ? 0.0 : acd::signedVolume(r.regions[i])},
+                       {"meshed_volume", r.meshedVolume[i]},
                        {"overshoot", overshootOf(r, i)},
-                       {"clipped_volume", r.complex.clippedVolume[i]},
+                       {"clipped_volume", i < static_cast<int>(r.complex.clippedVolume.size()) ? r.complex.clippedVolume[i] : 0.0},
                        {"unresolved", r.decomposition.components[i].unresolved}});
     json j = {{"model", a.model},
               {"tau", a.options.tau},
+              {"mesher", a.options.mesher == Mesher::Refine ? "refine" : "complex"},
+              {"clip", a.options.clip},
+              {"refinement",
+               {{"facet_distance", r.refineOptions.facetDistance},
+                {"facet_angle_deg", r.refineOptions.facetAngle},
+                {"radius_edge", r.refineOptions.radiusEdge},
+                {"closed_gap", r.refineOptions.closedGap},
+                {"sliver_bound_deg", r.refineOptions.sliverBound},
+                {"label_queries", r.refine.labelQueries}}},
               {"merge", a.options.merge},
               {"simplify", a.options.simplify},
               {"simplify_used", r.simplifyUsed},
@@ -210,6 +230,7 @@ int writeJsonReport(const Args& a, const HullMeshResult& r, const DirectMeshResu
                 {"hulls", r.times.hulls},
                 {"complex", r.times.complex},
                 {"tetgen", r.times.tetgen},
+                {"refine", r.times.refine},
                 {"quality", r.times.quality}}}};
     if (a.compare) {
       if (direct.status.ok())

@@ -76,16 +76,22 @@ double polylineLength(const std::vector<Vec3>& p) {
   return sum;
 }
 
-/// The elephant's hull mesh at tau 0.2, made once for the tests that use it.
-const HullMeshResult& elephantMesh() {
-  static const HullMeshResult r = [] {
-    const acd::ReadResult read = acd::readMesh(std::string(ACD_DATA_DIR) + "/meshes/elephant.off");
-    EXPECT_TRUE(read.status.ok()) << read.status.message;
-    HullMeshOptions o;
-    o.tau = 0.2;
-    o.threads = 1;
-    return meshHulls(read.mesh, o);
-  }();
+HullMeshResult meshElephant(Mesher mesher) {
+  const acd::ReadResult read = acd::readMesh(std::string(ACD_DATA_DIR) + "/meshes/elephant.off");
+  EXPECT_TRUE(read.status.ok()) << read.status.message;
+  HullMeshOptions o;
+  o.tau = 0.2;
+  o.threads = 1;
+  o.mesher = mesher;
+  return meshHulls(read.mesh, o);
+}
+
+/// The elephant's hull meshes at tau 0.2, made once for the tests that use them: the refined
+/// regions (the default) and the exact complex of the hulls, which contains the model.
+const HullMeshResult& elephantMesh(Mesher mesher = Mesher::Refine) {
+  static const HullMeshResult refined = meshElephant(Mesher::Refine);
+  static const HullMeshResult complex = meshElephant(Mesher::Complex);
+  const HullMeshResult& r = mesher == Mesher::Refine ? refined : complex;
   EXPECT_TRUE(r.status.ok()) << r.status.message;
   return r;
 }
@@ -95,9 +101,9 @@ const HullMeshResult& elephantMesh() {
 TEST(SurfaceEmbed, ElephantSurfaceIsRecoveredAndFollowsAffineMaps) {
   const acd::ReadResult read = acd::readMesh(std::string(ACD_DATA_DIR) + "/meshes/elephant.off");
   ASSERT_TRUE(read.status.ok()) << read.status.message;
-  const HullMeshResult& r = elephantMesh();
+  const HullMeshResult& r = elephantMesh(Mesher::Complex);
   ASSERT_TRUE(r.status.ok());
-  const TetMesh& m = r.tetgen.mesh;
+  const TetMesh& m = r.mesh;
   const acd::Box3 box = acd::boundingBox(read.mesh);
   const double size = (box.hi - box.lo).norm();
   const SurfaceEmbedding e = embedPoints(m, read.mesh.vertices);
@@ -126,6 +132,21 @@ TEST(SurfaceEmbed, ElephantSurfaceIsRecoveredAndFollowsAffineMaps) {
   worst = 0;
   for (std::size_t i = 0; i < carried.size(); ++i) worst = std::max(worst, (carried[i] - (a * read.mesh.vertices[i] + shift)).norm());
   EXPECT_LE(worst, 1e-9 * size) << "largest error " << worst;
+}
+
+TEST(SurfaceEmbed, TheRefinedMeshFollowsTheModelWithinTau) {
+  // The refinement rounds the regions' sharp edges (within about its facet distance, a quarter
+  // of tau), so some of the model's vertices lie outside the mesh, but none farther than tau
+  // (normalised units): measured by the embedding's own closest-tet search.
+  const acd::ReadResult read = acd::readMesh(std::string(ACD_DATA_DIR) + "/meshes/elephant.off");
+  ASSERT_TRUE(read.status.ok()) << read.status.message;
+  const HullMeshResult& r = elephantMesh(Mesher::Refine);
+  ASSERT_TRUE(r.status.ok());
+  const SurfaceEmbedding e = embedPoints(r.mesh, read.mesh.vertices);
+  const double tau = 0.2 / r.decomposition.normalization.scale;
+  EXPECT_LE(e.maxOutsideDistance, tau);
+  std::printf("[ refined  ] %d of %zu model vertices outside the mesh, the farthest %.3g (tau %.3g)\n", e.outside,
+              read.mesh.vertices.size(), e.maxOutsideDistance, tau);
 }
 
 TEST(SurfaceEmbed, PointsOutsideGetTheClosestTetAndTheirDistance) {
@@ -235,20 +256,41 @@ TEST(ArapDeform, BentBarKeepsItsLengthAndVolumeBetterThanTheLinearSolve) {
               r.energy.front(), r.energy.back());
 }
 
+TEST(ArapDeform, TheRefinedMeshInvertsNoMoreTetsThanTheComplex) {
+  // The unrefined complex of the elephant's hulls has slivers (dihedral angles near 0); the
+  // refined mesh has none below 5 degrees. Turned by 30 degrees with pure volume weights (no
+  // floor, which would hide the difference), the refined mesh inverts no more tets.
+  const acd::ReadResult read = acd::readMesh(std::string(ACD_DATA_DIR) + "/meshes/elephant.off");
+  DeformationOptions o;
+  o.rotate = true;
+  o.angleDegrees = 30;
+  o.arap.minWeight = 0;
+  const DeformationResult refined = deformSurface(elephantMesh(Mesher::Refine).mesh, read.mesh, o);
+  const DeformationResult complex = deformSurface(elephantMesh(Mesher::Complex).mesh, read.mesh, o);
+  ASSERT_TRUE(refined.status.ok()) << refined.status.message;
+  ASSERT_TRUE(complex.status.ok()) << complex.status.message;
+  EXPECT_EQ(elephantMesh(Mesher::Refine).quality.slivers, 0);
+  EXPECT_GT(elephantMesh(Mesher::Complex).quality.slivers, 0);
+  EXPECT_LE(refined.arap.invertedTets, complex.arap.invertedTets);
+  std::printf("[ inverted ] refined %d of %zu tets, complex %d of %zu\n", refined.arap.invertedTets,
+              elephantMesh(Mesher::Refine).mesh.tets.size(), complex.arap.invertedTets,
+              elephantMesh(Mesher::Complex).mesh.tets.size());
+}
+
 TEST(ArapDeform, WeightFloorKeepsSliversFromInverting) {
-  // The unrefined hull mesh of the elephant has slivers (dihedral angles near 0). With pure
+  // The unrefined complex of the elephant's hulls has slivers (dihedral angles near 0). With pure
   // volume weights some of them can invert when the trunk turns by 30 degrees (3 measured on
   // an earlier version of the complex, 0 on the current one); with the default floor (0.1 x
   // the mean tet volume) none does, and the surface moves alike.
-  const HullMeshResult& mesh = elephantMesh();
+  const HullMeshResult& mesh = elephantMesh(Mesher::Complex);
   ASSERT_TRUE(mesh.status.ok());
   const acd::ReadResult read = acd::readMesh(std::string(ACD_DATA_DIR) + "/meshes/elephant.off");
   DeformationOptions o;
   o.rotate = true;
   o.angleDegrees = 30;
-  const DeformationResult floored = deformSurface(mesh.tetgen.mesh, read.mesh, o);
+  const DeformationResult floored = deformSurface(mesh.mesh, read.mesh, o);
   o.arap.minWeight = 0;
-  const DeformationResult pure = deformSurface(mesh.tetgen.mesh, read.mesh, o);
+  const DeformationResult pure = deformSurface(mesh.mesh, read.mesh, o);
   ASSERT_TRUE(floored.status.ok() && pure.status.ok());
   EXPECT_EQ(floored.arap.invertedTets, 0);
   EXPECT_LE(floored.arap.invertedTets, pure.arap.invertedTets);
@@ -287,7 +329,9 @@ TEST(DeformDemo, DefaultsPickTheFarthestAndTheLargestComponentsAndLabelsAreCheck
   // U: base and two arms, three components. Handle: the component whose centroid is farthest
   // from the whole's; anchor: the largest other one.
   const acd::TriMesh u = acd::shapes::uShape();
-  HullMeshOptions ho;
+  HullMeshOptions ho;  // the exact complex: the surface on the handle then moves exactly
+  ho.mesher = Mesher::Complex;
+  ho.simplify = 0;
   ho.tau = 0.05;
   ho.threads = 1;
   ho.tetgen.radiusEdge = 2.0;
@@ -295,7 +339,7 @@ TEST(DeformDemo, DefaultsPickTheFarthestAndTheLargestComponentsAndLabelsAreCheck
   const HullMeshResult mesh = meshHulls(u, ho);
   ASSERT_TRUE(mesh.status.ok()) << mesh.status.message;
   ASSERT_EQ(mesh.decomposition.components.size(), 3u);
-  const TetMesh& m = mesh.tetgen.mesh;
+  const TetMesh& m = mesh.mesh;
   std::map<int, double> volume;
   std::map<int, Vec3> moment;
   Vec3 all = Vec3::Zero();
@@ -337,28 +381,30 @@ TEST(DeformDemo, DefaultsPickTheFarthestAndTheLargestComponentsAndLabelsAreCheck
   // Bad choices.
   DeformationOptions o;
   o.handle = 7;
-  EXPECT_NE(deformSurface(mesh.tetgen.mesh, u, o).status.message.find("no component 7"), std::string::npos);
+  EXPECT_NE(deformSurface(mesh.mesh, u, o).status.message.find("no component 7"), std::string::npos);
   o.handle = o.anchor = 2;
-  EXPECT_NE(deformSurface(mesh.tetgen.mesh, u, o).status.message.find("same component"), std::string::npos);
+  EXPECT_NE(deformSurface(mesh.mesh, u, o).status.message.find("same component"), std::string::npos);
   o = {};
   o.rotate = o.translate = true;
-  EXPECT_FALSE(deformSurface(mesh.tetgen.mesh, u, o).status.ok());
+  EXPECT_FALSE(deformSurface(mesh.mesh, u, o).status.ok());
 }
 
 TEST(DeformDemo, OneComponentIsSplitAlongItsLongestSide) {
   // A convex bar is one component: its last fifth along x is moved, its first fifth held.
   const acd::TriMesh bar = acd::shapes::voxels({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}});  // 5 x 1 x 1
-  HullMeshOptions ho;
+  HullMeshOptions ho;  // the exact complex: the bar's own faces
+  ho.mesher = Mesher::Complex;
+  ho.simplify = 0;
   ho.threads = 1;
   ho.tetgen.radiusEdge = 2.0;
   ho.tetgen.maxVolume = 0.05;
   const HullMeshResult mesh = meshHulls(bar, ho);
   ASSERT_TRUE(mesh.status.ok()) << mesh.status.message;
-  const DeformationResult r = deformSurface(mesh.tetgen.mesh, bar, {});
+  const DeformationResult r = deformSurface(mesh.mesh, bar, {});
   ASSERT_TRUE(r.status.ok()) << r.status.message;
   EXPECT_EQ(r.handle, 0);
   int expectedHandle = 0, expectedAnchor = 0;
-  for (const Vec3& p : mesh.tetgen.mesh.points) expectedHandle += p.x() >= 4.0 ? 1 : 0, expectedAnchor += p.x() <= 1.0 ? 1 : 0;
+  for (const Vec3& p : mesh.mesh.points) expectedHandle += p.x() >= 4.0 ? 1 : 0, expectedAnchor += p.x() <= 1.0 ? 1 : 0;
   EXPECT_EQ(r.handleVertices, expectedHandle);
   EXPECT_EQ(r.anchorVertices, expectedAnchor);
   int ends = 0;
@@ -376,12 +422,12 @@ TEST(DeformDemo, OneComponentIsSplitAlongItsLongestSide) {
   DeformationOptions fold;
   fold.translate = true;
   fold.move = Vec3(-4.5, 0, 0.5);
-  const DeformationResult folded = deformSurface(mesh.tetgen.mesh, bar, fold);
+  const DeformationResult folded = deformSurface(mesh.mesh, bar, fold);
   ASSERT_TRUE(folded.status.ok()) << folded.status.message;
   EXPECT_GT(folded.selfIntersectionsAfter, 0);
   DeformationOptions o;
   o.handle = 1;
-  EXPECT_NE(deformSurface(mesh.tetgen.mesh, bar, o).status.message.find("one component"), std::string::npos);
+  EXPECT_NE(deformSurface(mesh.mesh, bar, o).status.message.find("one component"), std::string::npos);
 }
 
 TEST(DeformCli, ElephantWritesFourFilesThatParseBack) {

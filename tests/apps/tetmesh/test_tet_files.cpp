@@ -127,29 +127,29 @@ class TetFiles : public ::testing::Test {
 
 TEST_F(TetFiles, VtkReloads) {
   const std::string path = (dir_ / "l.vtk").string();
-  ASSERT_TRUE(writeVtk(path, result_.tetgen.mesh).ok());
-  expectSame(result_.tetgen.mesh, readVtk(path));
+  ASSERT_TRUE(writeVtk(path, result_.mesh).ok());
+  expectSame(result_.mesh, readVtk(path));
 }
 
 TEST_F(TetFiles, MeditReloads) {
   const std::string path = (dir_ / "l.mesh").string();
-  ASSERT_TRUE(writeMedit(path, result_.tetgen.mesh).ok());
+  ASSERT_TRUE(writeMedit(path, result_.mesh).ok());
   const Reloaded r = readMedit(path);
-  expectSame(result_.tetgen.mesh, r);
-  EXPECT_EQ(r.triangles, result_.tetgen.mesh.faces.size());
+  expectSame(result_.mesh, r);
+  EXPECT_EQ(r.triangles, result_.mesh.faces.size());
   EXPECT_GT(r.triangles, 0u);
 }
 
 TEST_F(TetFiles, TetGenFilesHaveConsistentHeaders) {
   const std::string base = (dir_ / "l").string();
-  ASSERT_TRUE(writeTetGenFiles(base, result_.tetgen.mesh).ok());
+  ASSERT_TRUE(writeTetGenFiles(base, result_.mesh).ok());
   std::ifstream node(base + ".node"), ele(base + ".ele"), face(base + ".face");
   std::size_t n = 0, dim = 0, nt = 0, corners = 0, attributes = 0;
   node >> n >> dim;
   ele >> nt >> corners >> attributes;
-  EXPECT_EQ(n, result_.tetgen.mesh.points.size());
+  EXPECT_EQ(n, result_.mesh.points.size());
   EXPECT_EQ(dim, 3u);
-  EXPECT_EQ(nt, result_.tetgen.mesh.tets.size());
+  EXPECT_EQ(nt, result_.mesh.tets.size());
   EXPECT_EQ(corners, 4u);
   EXPECT_EQ(attributes, 1u);
   // Last tet line: index nt, four 1-based corners, the label.
@@ -161,15 +161,15 @@ TEST_F(TetFiles, TetGenFilesHaveConsistentHeaders) {
   int a, b, c, d, label;
   s >> index >> a >> b >> c >> d >> label;
   EXPECT_EQ(index, nt);
-  EXPECT_EQ(a - 1, result_.tetgen.mesh.tets.back()[0]);
-  EXPECT_EQ(label, result_.tetgen.mesh.labels.back());
+  EXPECT_EQ(a - 1, result_.mesh.tets.back()[0]);
+  EXPECT_EQ(label, result_.mesh.labels.back());
   std::size_t nf = 0;
   face >> nf;
-  EXPECT_EQ(nf, result_.tetgen.mesh.faces.size());
+  EXPECT_EQ(nf, result_.mesh.faces.size());
 }
 
 TEST_F(TetFiles, UnwritablePathIsAnError) {
-  const acd::Status s = writeVtk("/nonexistent-dir/x.vtk", result_.tetgen.mesh);
+  const acd::Status s = writeVtk("/nonexistent-dir/x.vtk", result_.mesh);
   EXPECT_FALSE(s.ok());
   EXPECT_NE(s.message.find("/nonexistent-dir/x.vtk"), std::string::npos);
 }

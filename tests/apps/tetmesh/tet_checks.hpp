@@ -4,6 +4,7 @@
 #include "tet_mesh.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <map>
 #include <vector>
@@ -29,6 +30,31 @@ inline std::map<std::array<int, 3>, std::vector<int>> tetFaces(const TetMesh& m)
 
 inline double triangleArea(const TetMesh& m, const std::array<int, 3>& f) {
   return 0.5 * (m.points[f[1]] - m.points[f[0]]).cross(m.points[f[2]] - m.points[f[0]]).norm();
+}
+
+}  // namespace tmtest
+
+namespace tmtest {
+
+/// The smallest dihedral angle of a tet in degrees, computed here by projecting the two other
+/// corners onto the plane across each edge (mesh_quality.cpp uses face normals).
+inline double smallestDihedralDegrees(const TetMesh& m, int t) {
+  const auto& v = m.tets[t];
+  double smallest = 180.0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) {
+      int others[2], k = 0;
+      for (int l = 0; l < 4; ++l)
+        if (l != i && l != j) others[k++] = l;
+      const Vec3& a = m.points[v[i]];
+      const Vec3 e = (m.points[v[j]] - a).normalized();
+      Vec3 u = m.points[v[others[0]]] - a, w = m.points[v[others[1]]] - a;
+      u -= e * u.dot(e);
+      w -= e * w.dot(e);
+      const double c = std::clamp(u.dot(w) / (u.norm() * w.norm()), -1.0, 1.0);
+      smallest = std::min(smallest, std::acos(c) * 180.0 / 3.14159265358979323846);
+    }
+  return smallest;
 }
 
 }  // namespace tmtest

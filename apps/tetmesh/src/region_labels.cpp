@@ -1,0 +1,82 @@
+// Point labels of the hull regions; see region_labels.hpp.
+#include "region_labels.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace tetmesh {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+}  // namespace
+
+RegionLabels::RegionLabels(const std::vector<acd::TriMesh>& regions, double closedGap) : gap_(std::max(0.0, closedGap)) {
+  lower_ = Vec3::Constant(kInf);
+  upper_ = Vec3::Constant(-kInf);
+  for (const acd::TriMesh& mesh : regions) {
+    Region r;
+    r.lower = Vec3::Constant(kInf);
+    r.upper = Vec3::Constant(-kInf);
+    for (const acd::Face& f : mesh.faces) {
+      const Vec3& a = mesh.vertices[f[0]];
+      const Vec3 n = (mesh.vertices[f[1]] - a).cross(mesh.vertices[f[2]] - a);
+      const double length = n.norm();
+      if (!(length > 0)) continue;  // a flat face bounds nothing its neighbours do not
+      r.planes.push_back({n / length, n.dot(a) / length});
+    }
+    for (const Vec3& v : mesh.vertices) r.lower = r.lower.cwiseMin(v), r.upper = r.upper.cwiseMax(v);
+    if (r.planes.size() < 4) r.planes.clear();  // empty or degenerate: never a label
+    r.lower.array() -= gap_;
+    r.upper.array() += gap_;
+    if (!r.planes.empty()) lower_ = lower_.cwiseMin(r.lower), upper_ = upper_.cwiseMax(r.upper);
+    regions_.push_back(std::move(r));
+  }
+  if (lower_.x() > upper_.x()) lower_ = upper_ = Vec3::Zero();
+}
+
+double RegionLabels::excess(const Region& r, const Vec3& p, double stopAbove, const Plane** beyond) const {
+  double worst = -kInf;
+  for (const Plane& plane : r.planes) {
+    const double d = plane.normal.dot(p) - plane.offset;
+    if (d > worst) {
+      worst = d;
+      *beyond = &plane;
+      if (worst > stopAbove) break;
+    }
+  }
+  return worst;
+}
+
+int RegionLabels::operator()(const Vec3& p) const {
+  // Deepest region (smallest excess) first; while no region holds p, the two nearest within the
+  // gap, with the planes p lies beyond.
+  int best = 0, second = 0;
+  double bestExcess = kInf, secondExcess = kInf;
+  const Plane *bestPlane = nullptr, *secondPlane = nullptr;
+  for (std::size_t i = 0; i < regions_.size(); ++i) {
+    const Region& r = regions_[i];
+    if (r.planes.empty() || (p.array() < r.lower.array()).any() || (p.array() > r.upper.array()).any()) continue;
+    // A region can only matter if it beats the runner-up (outside) or the best (inside).
+    const double stopAbove = bestExcess <= 0 ? bestExcess : std::min(gap_, secondExcess);
+    const Plane* plane = nullptr;
+    const double e = excess(r, p, stopAbove, &plane);
+    if (e > stopAbove) continue;  // (possibly only a bound: excess stopped early)
+    const int label = static_cast<int>(i) + 1;
+    if (e < bestExcess) {
+      second = best, secondExcess = bestExcess, secondPlane = bestPlane;
+      best = label, bestExcess = e, bestPlane = plane;
+    } else if (e < secondExcess) {
+      second = label, secondExcess = e, secondPlane = plane;
+    }
+  }
+  if (best == 0) return 0;
+  if (bestExcess <= 0) return best;
+  // In a gap: filled when the two nearest regions face each other across p.
+  if (second != 0 && secondExcess <= gap_ && bestPlane->normal.dot(secondPlane->normal) < 0) return best;
+  return 0;
+}
+
+}  // namespace tetmesh

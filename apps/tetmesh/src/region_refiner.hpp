@@ -1,0 +1,49 @@
+// Delaunay refinement of the hull regions (CGAL Mesh_3): a labelled tetrahedral mesh whose
+// size and shape follow criteria tied to tau, not the small features of the hull complex.
+//
+// TetGen meshes a complex as given: every short edge and near-coincident face of the regions'
+// overlay is kept, and the tets around them are slivers that its refinement cannot remove
+// (docs/TETMESH.md). Here the regions are only a labelling of space (region_labels.hpp); the
+// refinement samples its surfaces until every surface triangle lies within `facetDistance` of
+// them and has no angle below `facetAngle`, refines tets above `radiusEdge`, then perturbs and
+// exudes slivers (vertex moves and weights) towards `sliverBound`. Features below the
+// facet distance are not resolved, so they cannot force short edges; sharp edges of the regions
+// are followed within the facet distance, not kept exactly.
+#pragma once
+
+#include "sliver_repair.hpp"
+#include "tet_mesh.hpp"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace tetmesh {
+
+struct RefineOptions {
+  double facetDistance = 0.0;  // input units: surface triangles' centres within this of the regions' surfaces (> 0)
+  double facetAngle = 25.0;    // degrees: smallest angle of a surface triangle (at most 30: termination)
+  double facetSize = 0.0;      // input units: surface triangles' circumradius bound; 0: none
+  double radiusEdge = 2.0;     // tets' circumradius over shortest edge (Mesh_3 guarantees termination from 2)
+  double cellSize = 0.0;       // input units: tets' circumradius bound; 0: none
+  double closedGap = 0.0;      // input units: gaps between regions narrower than this are filled
+  double sliverBound = 10.0;   // degrees: CGAL's sliver passes aim at no dihedral angle below this
+  double sliverMove = 0.0;     // input units: how far the last slivers' corners may move (sliver_repair.hpp)
+};
+
+struct RefineResult {
+  bool ok = false;
+  std::string error;           // one line when not ok
+  TetMesh mesh;                // labels 1..n as the regions; faces: boundary and interface triangles
+  SliverRepair slivers;        // below kSliverDegrees after CGAL's passes, and after the repair
+  long labelQueries = 0;       // how often the labelling was asked (its cost)
+  double seconds = 0.0;        // wall
+};
+
+/// Meshes `regions` (closed convex triangle meshes, labels 1..n in order). When `keep` is set,
+/// only points it accepts are meshed (the components clipped to the model). Deterministic: the
+/// same input gives the same mesh on any machine and thread count.
+RefineResult refineRegions(const std::vector<acd::TriMesh>& regions, const RefineOptions& options,
+                           const std::function<bool(const Vec3&)>& keep = {});
+
+}  // namespace tetmesh
