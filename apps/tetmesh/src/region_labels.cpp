@@ -40,7 +40,7 @@ RegionLabels::RegionLabels(const std::vector<acd::TriMesh>& regions, double clos
 double RegionLabels::excess(const Region& r, const Vec3& p, double stopAbove, const Plane** beyond) const {
   double worst = -kInf;
   for (const Plane& plane : r.planes) {
-    const double d = plane.normal.dot(p) - plane.offset;
+    const double d = plane.distance(p);
     if (d > worst) {
       worst = d;
       *beyond = &plane;

@@ -15,6 +15,7 @@
 // Ties go to the lower label, so the result does not depend on the order of the tests.
 #pragma once
 
+#include <acd/algo/plane.hpp>
 #include <acd/mesh.hpp>
 
 #include <vector>
@@ -35,10 +36,7 @@ class RegionLabels {
   const Vec3& upper() const { return upper_; }
 
  private:
-  struct Plane {
-    Vec3 normal;
-    double offset;  // normal . x = offset on the plane
-  };
+  using Plane = acd::HalfSpace;  // unit normal
   struct Region {
     std::vector<Plane> planes;
     Vec3 lower, upper;  // box, widened by the gap

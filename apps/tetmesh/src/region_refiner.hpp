@@ -41,8 +41,9 @@ struct RefineResult {
 };
 
 /// Meshes `regions` (closed convex triangle meshes, labels 1..n in order). When `keep` is set,
-/// only points it accepts are meshed (the components clipped to the model). Deterministic: the
-/// same input gives the same mesh on any machine and thread count.
+/// only points it accepts are meshed (the components clipped to the model). No time limits and
+/// seeded generators, so the machine's speed and the thread count play no part; but CGAL orders
+/// some of its work by memory address, so a second call in one process can differ in details.
 RefineResult refineRegions(const std::vector<acd::TriMesh>& regions, const RefineOptions& options,
                            const std::function<bool(const Vec3&)>& keep = {});
 
