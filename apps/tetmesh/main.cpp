@@ -138,6 +138,10 @@ int main(int argc, char** argv) {
                  "Hulls with at most K vertices that still contain their component (K >= 4; 0: the exact hulls; "
                  "default: 0 with refine, 24 with complex)");
   app.add_flag("--clip", a.options.clip, "Mesh the components themselves: the hull regions clipped to the model (refine)");
+  app.add_option("--sharp", a.options.sharpAngle,
+                 "Keep the hull regions' edges whose faces turn by more than DEG degrees exactly (refine; CAD parts); "
+                 "0: all edges are followed within the facet distance")
+      ->capture_default_str();
   app.add_option("--quality", a.options.tetgen.radiusEdge,
                  "Radius-edge bound of the tets (e.g. 1.5); 0: the coarse mesh (refine: bound 3; complex: TetGen's "
                  "constrained Delaunay mesh, no refinement)")

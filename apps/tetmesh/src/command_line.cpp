@@ -25,8 +25,11 @@ int checkArgs(Args& a, TetFormat& format) {
   } else {
     return kConsole.failf(kBadParameter, "unknown --mesher '%s' (refine or complex)", a.mesher.c_str());
   }
-  if (a.options.clip && a.options.mesher != Mesher::Refine) {
-    return kConsole.fail(kBadParameter, "--clip needs --mesher refine");
+  if ((a.options.clip || a.options.sharpAngle != 0) && a.options.mesher != Mesher::Refine) {
+    return kConsole.fail(kBadParameter, "--clip and --sharp need --mesher refine");
+  }
+  if (!(a.options.sharpAngle >= 0 && a.options.sharpAngle < 180)) {
+    return kConsole.failf(kBadParameter, "--sharp must be an angle in degrees in [0, 180), got %g", a.options.sharpAngle);
   }
   if (a.options.simplify != -1 && a.options.simplify != 0 && a.options.simplify < 4) {
     return kConsole.failf(kBadParameter, "--simplify must be at least 4 (a tetrahedron), got %d", a.options.simplify);

@@ -31,6 +31,8 @@ constexpr double kFacetDistancePerTau = 0.25;
 /// Radius-edge bound of the coarse refinement: the 2 from which Delaunay refinement is proven to
 /// end; slivers, which a radius-edge bound does not see, are the sliver passes' work.
 constexpr double kCoarseRadiusEdge = 2.0;
+/// With `--sharp`: the largest protecting ball along a kept edge, in tau (normalised units).
+constexpr double kEdgeSizePerTau = 1.0;
 /// The last slivers' corners may move by this share of the facet distance (the surface follows
 /// the regions within the facet distance anyway).
 constexpr double kSliverMoveShare = 0.5;
@@ -131,6 +133,8 @@ void meshRefined(const acd::TriMesh& model, const std::vector<acd::TriMesh>& exa
   const bool quality = options.tetgen.radiusEdge > 0;
   o.radiusEdge = quality ? options.tetgen.radiusEdge : kCoarseRadiusEdge;
   o.sliverMove = kSliverMoveShare * o.facetDistance;
+  o.featureAngle = options.sharpAngle;
+  o.edgeSize = kEdgeSizePerTau * options.tau * unit;
   o.facetAngle = kFacetAngle;
   if (options.tetgen.maxVolume > 0) o.cellSize = regularCircumradius(options.tetgen.maxVolume);
   std::unique_ptr<acd::ShellsInside> inside;

@@ -26,6 +26,7 @@ struct HullMeshOptions {
   Mesher mesher = Mesher::Refine;
   int simplify = -1;         // > 0: hulls with at most this many vertices (>= 4); 0: exact; -1: the mesher's default
   bool clip = false;         // Refine only: mesh the components themselves (the regions clipped to the model)
+  double sharpAngle = 0.0;   // Refine only, degrees: the regions' edges turning more are kept exactly; 0: all rounded
   bool merge = false;        // the decomposition's merge pass; off keeps hulls apart along cut planes
   int threads = 0;           // decomposition threads, 0 = all cores
   double tolerance = 1e-8;   // complex snapping tolerance (relative); raised 10x if TetGen refuses

@@ -13,11 +13,14 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 }  // namespace
 
-RegionLabels::RegionLabels(const std::vector<acd::TriMesh>& regions, double closedGap) : gap_(std::max(0.0, closedGap)) {
+RegionLabels::RegionLabels(const std::vector<acd::TriMesh>& regions, const std::vector<double>& closedGaps) {
   lower_ = Vec3::Constant(kInf);
   upper_ = Vec3::Constant(-kInf);
-  for (const acd::TriMesh& mesh : regions) {
+  for (std::size_t i = 0; i < regions.size(); ++i) {
+    const acd::TriMesh& mesh = regions[i];
     Region r;
+    r.gap = i < closedGaps.size() ? std::max(0.0, closedGaps[i]) : 0.0;
+    gap_ = std::max(gap_, r.gap);
     r.lower = Vec3::Constant(kInf);
     r.upper = Vec3::Constant(-kInf);
     for (const acd::Face& f : mesh.faces) {
@@ -29,8 +32,14 @@ RegionLabels::RegionLabels(const std::vector<acd::TriMesh>& regions, double clos
     }
     for (const Vec3& v : mesh.vertices) r.lower = r.lower.cwiseMin(v), r.upper = r.upper.cwiseMax(v);
     if (r.planes.size() < 4) r.planes.clear();  // empty or degenerate: never a label
-    r.lower.array() -= gap_;
-    r.upper.array() += gap_;
+    r.width = r.planes.empty() ? 0.0 : kInf;
+    for (const Plane& plane : r.planes) {
+      double least = kInf;
+      for (const Vec3& v : mesh.vertices) least = std::min(least, plane.normal.dot(v));
+      r.width = std::min(r.width, plane.offset - least);
+    }
+    r.lower.array() -= r.gap;
+    r.upper.array() += r.gap;
     if (!r.planes.empty()) lower_ = lower_.cwiseMin(r.lower), upper_ = upper_.cwiseMax(r.upper);
     regions_.push_back(std::move(r));
   }
@@ -53,7 +62,7 @@ double RegionLabels::excess(const Region& r, const Vec3& p, double stopAbove, co
 int RegionLabels::operator()(const Vec3& p) const {
   // Deepest region (smallest excess) first; while no region holds p, the two nearest within the
   // gap, with the planes p lies beyond.
-  int best = 0, second = 0;
+  int best = 0, second = 0;  // labels
   double bestExcess = kInf, secondExcess = kInf;
   const Plane *bestPlane = nullptr, *secondPlane = nullptr;
   for (std::size_t i = 0; i < regions_.size(); ++i) {
@@ -74,8 +83,9 @@ int RegionLabels::operator()(const Vec3& p) const {
   }
   if (best == 0) return 0;
   if (bestExcess <= 0) return best;
-  // In a gap: filled when the two nearest regions face each other across p.
-  if (second != 0 && secondExcess <= gap_ && bestPlane->normal.dot(secondPlane->normal) < 0) return best;
+  // In a gap: filled when the two nearest regions face each other across p, narrower than both allow.
+  const double gap = second != 0 ? std::min(regions_[best - 1].gap, regions_[second - 1].gap) : 0.0;
+  if (second != 0 && secondExcess <= gap && bestPlane->normal.dot(secondPlane->normal) < 0) return best;
   return 0;
 }
 
