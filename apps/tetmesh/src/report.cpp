@@ -146,6 +146,12 @@ void printReport(const Args& a, TetFormat format, const HullMeshResult& r, const
                 "                 slivers perturbed and exuded towards %g deg (%ld label queries)\n",
                 a.options.clip ? "the components (hull regions clipped to the model)" : "the hull regions", o.facetDistance,
                 o.facetAngle, o.radiusEdge, o.closedGap, o.sliverBound, r.refine.labelQueries);
+    std::printf("                 %d tets below %g deg after CGAL's passes, %d after moving their corners; "
+                "%d times a region missed was meshed again finer\n",
+                r.refine.slivers.before, kSliverDegrees, r.refine.slivers.after, r.refine.regionsRefined);
+    if (o.featureAngle > 0)
+      std::printf("                 sharp edges (turning > %g deg) kept: %d segments, %d dropped as too close to others\n",
+                  o.featureAngle, r.refine.features, r.refine.featuresDropped);
   }
   const bool two = a.compare;
   if (two) printColumns("", "hulls", "original model", true);
@@ -202,6 +208,12 @@ int writeJsonReport(const Args& a, const HullMeshResult& r, const DirectMeshResu
                 {"radius_edge", r.refineOptions.radiusEdge},
                 {"closed_gap", r.refineOptions.closedGap},
                 {"sliver_bound_deg", r.refineOptions.sliverBound},
+                {"slivers_before_repair", r.refine.slivers.before},
+                {"slivers_after_repair", r.refine.slivers.after},
+                {"regions_refined_again", r.refine.regionsRefined},
+                {"sharp_angle_deg", r.refineOptions.featureAngle},
+                {"sharp_segments", r.refine.features},
+                {"sharp_segments_dropped", r.refine.featuresDropped},
                 {"label_queries", r.refine.labelQueries}}},
               {"merge", a.options.merge},
               {"simplify", a.options.simplify},
