@@ -605,8 +605,8 @@ bool overlayPlane(ComplexBuild& build, int k, std::map<std::array<int, 3>, std::
     auto it = splits.find(acd::edgeKey(a, b));
     if (it != splits.end()) {
       std::vector<int> inner(it->second.begin(), it->second.end());
-      const Vec3 d = P(b) - P(a);
-      std::sort(inner.begin(), inner.end(), [&](int x, int y) { return (P(x) - P(a)).dot(d) < (P(y) - P(a)).dot(d); });
+      const Vec3 from = P(a), d = P(b) - from;  // (clang cannot capture a structured binding)
+      std::sort(inner.begin(), inner.end(), [&](int x, int y) { return (P(x) - from).dot(d) < (P(y) - from).dot(d); });
       chain.insert(chain.end(), inner.begin(), inner.end());
     }
     chain.push_back(b);

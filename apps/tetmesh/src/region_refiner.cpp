@@ -67,9 +67,13 @@ using Criteria = CGAL::Mesh_criteria_3<Triangulation>;
 
 /// Where the refinement puts a surface point between two labels: within this part of the box.
 constexpr double kRelativeErrorBound = 1e-6;
-/// A region holding less than this share of its volume in tets was missed (thinner than the
+/// A region holding less than kFoundShare of its volume in tets, when what it lost is more than
+/// kLostShare of all the regions' volume, or holding no tets at all, was missed (thinner than the
 /// facet distance) and is meshed again with half its facet distance, at most kMoreRounds times.
+/// Small regions lose a large share to the rounding of their edges alone; only a loss that
+/// matters to the whole, or a missing component, is worth the finer mesh.
 constexpr double kFoundShare = 0.5;
+constexpr double kLostShare = 0.01;
 constexpr int kMoreRounds = 3;
 
 /// The facet distance around a point: the global one, less near a thin region (a share of its
@@ -210,10 +214,11 @@ RefineResult refineRegions(const std::vector<acd::TriMesh>& regions, const Refin
   }
   // A region thinner than about the facet distance can fall between the refinement's samples
   // (the walls of a thin-walled part, 0.019 thick under a facet distance of 0.014, kept 28 % of
-  // their volume): a region that got less than half its volume is meshed again with half its
-  // facet distance, up to kMoreRounds times. The others keep theirs, so only thin parts cost.
+  // their volume): a missed region (above) is meshed again with half its facet distance, up to
+  // kMoreRounds times. The others keep theirs, so only thin parts cost.
   std::vector<double> distance(regions.size(), options.facetDistance), volume(regions.size());
-  for (std::size_t i = 0; i < regions.size(); ++i) volume[i] = regions[i].empty() ? 0.0 : acd::signedVolume(regions[i]);
+  double total = 0.0;
+  for (std::size_t i = 0; i < regions.size(); ++i) total += volume[i] = regions[i].empty() ? 0.0 : acd::signedVolume(regions[i]);
   long queries = 0;
   int refined = 0;
   for (int round = 0;; ++round) {
@@ -228,8 +233,11 @@ RefineResult refineRegions(const std::vector<acd::TriMesh>& regions, const Refin
       if (r.mesh.labels[t] >= 1 && r.mesh.labels[t] <= static_cast<int>(regions.size()))
         meshed[r.mesh.labels[t] - 1] += tetVolume(r.mesh, static_cast<int>(t));
     bool again = false;
-    for (std::size_t i = 0; i < regions.size(); ++i)
-      if (volume[i] > 0 && meshed[i] < kFoundShare * volume[i]) distance[i] *= 0.5, again = true, ++refined;
+    for (std::size_t i = 0; i < regions.size(); ++i) {
+      const bool missed = volume[i] > 0 && (meshed[i] == 0 || (meshed[i] < kFoundShare * volume[i] &&
+                                                               volume[i] - meshed[i] > kLostShare * total));
+      if (missed) distance[i] *= 0.5, again = true, ++refined;
+    }
     if (!again) return r;
   }
 }

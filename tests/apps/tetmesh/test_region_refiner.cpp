@@ -192,8 +192,9 @@ TEST(RegionRefiner, ElephantCoarseAndQualityAgainstTetGenOnTheModel) {
   // tets than TetGen's unrefined mesh of the model (half of them is the target, met at
   // tau 0.2 only before every region had to hold half its volume: docs/TETMESH.md); at
   // radius-edge 1.5, no smaller angle than TetGen's refined mesh of the model and no more tets.
-  // Every component's region has tets, and holds at least half its volume unless it is tiny
-  // (below 1e-3 of the model: after three halvings of its facet distance the refinement stops).
+  // Every component's region has tets, and none lost more than half its volume where that loss is
+  // more than 1 % of the regions' (the rounding of a small region's edges alone takes a large
+  // share of it; the refinement meshes a region again only for a loss that matters).
   const acd::ReadResult read = acd::readMesh(std::string(ACD_DATA_DIR) + "/meshes/elephant.off");
   ASSERT_TRUE(read.status.ok()) << read.status.message;
   for (double quality : {0.0, 1.5}) {
@@ -208,10 +209,12 @@ TEST(RegionRefiner, ElephantCoarseAndQualityAgainstTetGenOnTheModel) {
     const DirectMeshResult model = meshModelDirectly(read.mesh, direct);
     ASSERT_TRUE(model.status.ok()) << model.status.message;
     const double ours = smallestAngle(r.mesh), theirs = smallestAngle(model.tetgen.mesh);
+    double all = 0.0;
+    for (const acd::TriMesh& region : r.regions) all += acd::signedVolume(region);
     for (std::size_t i = 0; i < r.regions.size(); ++i) {
       const double region = acd::signedVolume(r.regions[i]), meshed = volume(r.mesh, static_cast<int>(i) + 1);
       EXPECT_GT(meshed, 0.0) << "component " << i + 1;
-      if (region > 1e-3 * r.modelVolume) EXPECT_GE(meshed, 0.5 * region) << "component " << i + 1;
+      EXPECT_TRUE(meshed >= 0.5 * region || region - meshed <= 0.01 * all) << "component " << i + 1;
     }
     if (quality == 0) {
       EXPECT_GE(ours, kSliverDegrees);
