@@ -153,12 +153,12 @@ int main(int argc, char** argv) {
   app.add_flag("--merge", a.options.merge, "Use the decomposition's merge pass (hulls then overlap and are clipped)");
   app.add_option("--threads", a.options.threads, "Decomposition threads, 0 = all cores")->capture_default_str();
   app.add_option("--snap", a.options.tolerance,
-                 "Features closer than this (relative to the half-diagonal) are one: welding, contacts")
+                 "Complex: features closer than this (relative to the half-diagonal) are one: welding, contacts")
       ->capture_default_str();
   app.add_option("--timeout", a.options.tetgen.timeoutSeconds, "Seconds TetGen may take per call before it is stopped")
       ->capture_default_str();
   app.add_option("--json", a.json, "Write the report as JSON to this file");
-  app.add_option("--poly", a.poly, "Write the hull complex given to TetGen as a .poly file");
+  app.add_option("--poly", a.poly, "Complex: write the hull complex given to TetGen as a .poly file");
   app.add_option("--regions", a.regions, "Write the meshed hull regions as an OBJ, one object per component");
   app.add_flag("-q,--quiet", a.quiet, "No progress on stderr");
   addDeformOptions(app, a.deform);

@@ -25,6 +25,9 @@ int checkArgs(Args& a, TetFormat& format) {
   } else {
     return kConsole.failf(kBadParameter, "unknown --mesher '%s' (refine or complex)", a.mesher.c_str());
   }
+  if (!a.poly.empty() && a.options.mesher != Mesher::Complex) {
+    return kConsole.fail(kBadParameter, "--poly writes the complex given to TetGen: it needs --mesher complex");
+  }
   if ((a.options.clip || a.options.sharpAngle != 0) && a.options.mesher != Mesher::Refine) {
     return kConsole.fail(kBadParameter, "--clip and --sharp need --mesher refine");
   }
