@@ -186,9 +186,10 @@ RefineResult refineOnce(const std::vector<acd::TriMesh>& regions, const RefineOp
                           p::facet_distance = facetDistance, p::cell_radius_edge_ratio = options.radiusEdge,
                           p::cell_size = options.cellSize);
   try {
-    // No time limits: they would make the mesh depend on the machine's speed.
+    // No time limits: they would make the mesh depend on the machine's speed. No perturbation:
+    // CGAL's did not repeat itself within one process; the sliver repair below does its work.
     const Complex c3t3 = CGAL::make_mesh_3<Complex>(domain, criteria, p::features(domain),
-                                                    p::perturb(p::sliver_bound = options.sliverBound),
+                                                    p::no_perturb(),
                                                     p::exude(p::sliver_bound = options.sliverBound));
     r.mesh = toTetMesh(c3t3);
     r.slivers = repairSlivers(r.mesh, kSliverDegrees, options.sliverMove);

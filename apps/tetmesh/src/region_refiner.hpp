@@ -6,8 +6,10 @@
 // (docs/TETMESH.md). Here the regions are only a labelling of space (region_labels.hpp); the
 // refinement samples its surfaces until every surface triangle lies within `facetDistance` of
 // them (halved, up to three times, around a region it missed: a wall thinner than the facet
-// distance) and has no angle below `facetAngle`, refines tets above `radiusEdge`, then perturbs and
-// exudes slivers (vertex moves and weights) towards `sliverBound`. Features below the
+// distance) and has no angle below `facetAngle`, refines tets above `radiusEdge`, then exudes
+// slivers (CGAL's vertex weights) towards `sliverBound` and moves the corners of the last ones
+// (sliver_repair.hpp). CGAL's perturbation step is not used: it did not give the same mesh twice
+// in one process, and the repair does its work. Features below the
 // facet distance are not resolved, so they cannot force short edges; sharp edges of the regions
 // are followed within the facet distance, not kept exactly.
 #pragma once
@@ -47,9 +49,9 @@ struct RefineResult {
 };
 
 /// Meshes `regions` (closed convex triangle meshes, labels 1..n in order). When `keep` is set,
-/// only points it accepts are meshed (the components clipped to the model). No time limits and
-/// seeded generators, so the machine's speed and the thread count play no part; but CGAL orders
-/// some of its work by memory address, so a second call in one process can differ in details.
+/// only points it accepts are meshed (the components clipped to the model). Deterministic: no
+/// time limits, seeded generators, sequential refinement, no perturbation step; the same input
+/// gives the same mesh, bit for bit, on every call.
 RefineResult refineRegions(const std::vector<acd::TriMesh>& regions, const RefineOptions& options,
                            const std::function<bool(const Vec3&)>& keep = {});
 

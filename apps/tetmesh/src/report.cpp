@@ -143,10 +143,10 @@ void printReport(const Args& a, TetFormat format, const HullMeshResult& r, const
   } else {
     const RefineOptions& o = r.refineOptions;
     std::printf("  refinement     %s; surface within %.3g, facet angle >= %g deg, radius-edge <= %g, gaps below %.3g closed,\n"
-                "                 slivers perturbed and exuded towards %g deg (%ld label queries)\n",
+                "                 slivers exuded towards %g deg (%ld label queries)\n",
                 a.options.clip ? "the components (hull regions clipped to the model)" : "the hull regions", o.facetDistance,
                 o.facetAngle, o.radiusEdge, o.closedGap, o.sliverBound, r.refine.labelQueries);
-    std::printf("                 %d tets below %g deg after CGAL's passes, %d after moving their corners; "
+    std::printf("                 %d tets below %g deg after the exudation, %d after moving their corners; "
                 "%d times a region missed was meshed again finer\n",
                 r.refine.slivers.before, kSliverDegrees, r.refine.slivers.after, r.refine.regionsRefined);
     if (o.featureAngle > 0)
