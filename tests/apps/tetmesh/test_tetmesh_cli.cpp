@@ -5,6 +5,7 @@
 #include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 using acdtest::runTool;
 using acdtest::TempDir;
@@ -83,4 +84,29 @@ TEST(TetmeshCli, SelfIntersectingModelIsNotGivenToTetGen) {
   auto r = runTool(TETMESH_CLI, acdtest::quote(dir / "cross.off") + " --compare", dir);
   EXPECT_NE(r.code, -1);  // no crash whatever the outcome
   EXPECT_NE(r.out.find("original model not meshed: the surface intersects itself"), std::string::npos) << r.out << r.err;
+}
+
+TEST(TetmeshCli, SharpEdgesAndClippingReachTheReport) {
+  // A 1 x 2 x 3 box: with its edges kept the hull mesh has the box's volume exactly (rounded,
+  // it would not); the JSON says how many edges were kept and which mesher ran.
+  TempDir dir("tetmesh_cli_sharp");
+  ASSERT_TRUE(acd::writeMesh(dir / "box.off", acd::shapes::box(acd::Vec3(0, 0, 0), acd::Vec3(1, 2, 3))).ok());
+  auto r = runTool(TETMESH_CLI, acdtest::quote(dir / "box.off") + " --sharp 30 --json " + acdtest::quote(dir / "sharp.json"), dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("sharp edges (turning > 30 deg) kept: 12 segments"), std::string::npos) << r.out;
+  const nlohmann::json sharp = nlohmann::json::parse(acdtest::slurp(dir / "sharp.json"));
+  EXPECT_EQ(sharp["mesher"], "refine");
+  EXPECT_EQ(sharp["refinement"]["sharp_segments"], 12);
+  EXPECT_NEAR(sharp["hull_mesh"]["volume"].get<double>(), 6.0, 1e-5 * 6.0);
+  EXPECT_EQ(sharp["hull_mesh"]["tets_below_5_deg"], 0);
+  r = runTool(TETMESH_CLI, acdtest::quote(dir / "box.off") + " --clip --json " + acdtest::quote(dir / "clip.json"), dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("the components (hull regions clipped to the model)"), std::string::npos) << r.out;
+  const nlohmann::json clip = nlohmann::json::parse(acdtest::slurp(dir / "clip.json"));
+  EXPECT_TRUE(clip["clip"].get<bool>());
+  EXPECT_LE(clip["hull_mesh"]["volume"].get<double>(), 6.0 * (1 + 1e-9));
+  EXPECT_GT(clip["hull_mesh"]["volume"].get<double>(), 0.9 * 6.0);
+  r = runTool(TETMESH_CLI, acdtest::quote(dir / "box.off") + " --mesher complex --clip", dir);
+  EXPECT_EQ(r.code, 3);
+  EXPECT_NE(r.err.find("--clip and --sharp need --mesher refine"), std::string::npos) << r.err;
 }
