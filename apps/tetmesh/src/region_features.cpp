@@ -112,32 +112,38 @@ RegionFeatures regionFeatures(const std::vector<acd::TriMesh>& regions, const Re
     }
   }
   const std::vector<Vec3>& p = points.points;
-  // Split at corners lying on other segments and at crossings, until none is left.
-  std::vector<std::pair<int, int>> list(segments.begin(), segments.end());
-  for (bool split = true; split;) {
-    split = false;
-    for (std::size_t s = 0; s < list.size() && !split; ++s)
-      for (std::size_t t = s + 1; t < list.size() && !split; ++t) {
-        auto [a, b] = list[s];
-        auto [c, d] = list[t];
-        if (a == c || a == d || b == c || b == d) continue;
-        double u = 0, v = 0;
-        if (segmentDistance(p[a], p[b], p[c], p[d], u, v) > 10 * weld) continue;
-        // Where they meet: an end of one on the other, or a crossing in both.
-        const bool uEnd = u <= 0 || u >= 1, vEnd = v <= 0 || v >= 1;
-        if (uEnd && vEnd) continue;  // ends within the weld: the welder has made them one
-        const int at = uEnd ? (u <= 0 ? a : b) : vEnd ? (v <= 0 ? c : d) : points.add(p[a] + u * (p[b] - p[a]));
-        std::vector<std::pair<int, int>> pieces;
-        if (at != a && at != b) pieces.push_back({a, at}), pieces.push_back({at, b});
-        else pieces.push_back({a, b});
-        if (at != c && at != d) pieces.push_back({c, at}), pieces.push_back({at, d});
-        else pieces.push_back({c, d});
-        list.erase(list.begin() + static_cast<long>(t));
-        list.erase(list.begin() + static_cast<long>(s));
-        for (auto [x, y] : pieces) list.push_back({std::min(x, y), std::max(x, y)});
-        split = true;
-      }
+  // Split at corners lying on other segments and at crossings: every pair once, the points
+  // where each segment must be split gathered first (splitting makes no new crossings).
+  const std::vector<std::pair<int, int>> whole(segments.begin(), segments.end());
+  std::vector<std::vector<int>> splitAt(whole.size());
+  for (std::size_t s = 0; s < whole.size(); ++s)
+    for (std::size_t t = s + 1; t < whole.size(); ++t) {
+      const auto [a, b] = whole[s];
+      const auto [c, d] = whole[t];
+      if (a == c || a == d || b == c || b == d) continue;
+      double u = 0, v = 0;
+      if (segmentDistance(p[a], p[b], p[c], p[d], u, v) > 10 * weld) continue;
+      const bool uEnd = u <= 0 || u >= 1, vEnd = v <= 0 || v >= 1;
+      if (uEnd && vEnd) continue;  // ends within the weld: the welder has made them one
+      // Where they meet: an end of one on the other, or a crossing inside both.
+      const int at = uEnd ? (u <= 0 ? a : b) : vEnd ? (v <= 0 ? c : d) : points.add(p[a] + u * (p[b] - p[a]));
+      if (!uEnd) splitAt[s].push_back(at);
+      if (!vEnd) splitAt[t].push_back(at);
+    }
+  std::vector<std::pair<int, int>> list;
+  for (std::size_t s = 0; s < whole.size(); ++s) {
+    const auto [a, b] = whole[s];
+    std::vector<int> chain = splitAt[s];
+    const Vec3 d = p[b] - p[a];
+    std::sort(chain.begin(), chain.end(), [&](int x, int y) { return (p[x] - p[a]).dot(d) < (p[y] - p[a]).dot(d); });
+    chain.erase(std::unique(chain.begin(), chain.end()), chain.end());
+    chain.insert(chain.begin(), a);
+    chain.push_back(b);
+    for (std::size_t k = 0; k + 1 < chain.size(); ++k)
+      if (chain[k] != chain[k + 1]) list.push_back({std::min(chain[k], chain[k + 1]), std::max(chain[k], chain[k + 1])});
   }
+  std::sort(list.begin(), list.end());
+  list.erase(std::unique(list.begin(), list.end()), list.end());
   // Drop what comes too close: short segments, near misses, segments meeting at a small angle.
   std::sort(list.begin(), list.end(), [&](const auto& x, const auto& y) {
     const double lx = (p[x.second] - p[x.first]).norm(), ly = (p[y.second] - p[y.first]).norm();
