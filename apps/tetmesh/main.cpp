@@ -132,7 +132,8 @@ int main(int argc, char** argv) {
   app.add_option("-t,--tau", a.options.tau, "Concavity tolerance, normalised units")->capture_default_str();
   app.add_option("--mesher", a.mesher,
                  "refine: Delaunay refinement of the hull regions, sizes tied to tau, no slivers; "
-                 "complex: the regions' exact faces given to TetGen (the paper's Figure 4)")
+                 "complex: the regions' exact faces given to TetGen (the paper's Figure 4); "
+                 "auto: the complex where every hull has at most 24 faces and its mesh no sliver, else refine")
       ->capture_default_str();
   app.add_option("--simplify", a.options.simplify,
                  "Hulls with at most K vertices that still contain their component (K >= 4; 0: the exact hulls; "

@@ -20,16 +20,16 @@ int checkArgs(Args& a, TetFormat& format) {
   if (!(a.options.tau > 0) || !std::isfinite(a.options.tau)) {
     return kConsole.failf(kBadParameter, "--tau must be positive, got %g", a.options.tau);
   }
-  if (a.mesher == "refine" || a.mesher == "complex") {
-    a.options.mesher = a.mesher == "refine" ? Mesher::Refine : Mesher::Complex;
+  if (a.mesher == "auto" || a.mesher == "refine" || a.mesher == "complex") {
+    a.options.mesher = a.mesher == "auto" ? Mesher::Auto : a.mesher == "refine" ? Mesher::Refine : Mesher::Complex;
   } else {
-    return kConsole.failf(kBadParameter, "unknown --mesher '%s' (refine or complex)", a.mesher.c_str());
+    return kConsole.failf(kBadParameter, "unknown --mesher '%s' (auto, refine or complex)", a.mesher.c_str());
   }
   if (!a.poly.empty() && a.options.mesher != Mesher::Complex) {
     return kConsole.fail(kBadParameter, "--poly writes the complex given to TetGen: it needs --mesher complex");
   }
-  if ((a.options.clip || a.options.sharpAngle != 0) && a.options.mesher != Mesher::Refine) {
-    return kConsole.fail(kBadParameter, "--clip and --sharp need --mesher refine");
+  if ((a.options.clip || a.options.sharpAngle != 0) && a.options.mesher == Mesher::Complex) {
+    return kConsole.fail(kBadParameter, "--clip and --sharp need the refinement (--mesher auto or refine)");
   }
   if (!(a.options.sharpAngle >= 0 && a.options.sharpAngle < 180)) {
     return kConsole.failf(kBadParameter, "--sharp must be an angle in degrees in [0, 180), got %g", a.options.sharpAngle);
@@ -39,7 +39,7 @@ int checkArgs(Args& a, TetFormat& format) {
   }
   // Delaunay refinement is proven to end from a bound of 2 and ends in practice down to about
   // 1.2 (TetGen) and 1.5 (CGAL's Mesh_3, whose sliver passes follow); below, it may not.
-  const double lowestQuality = a.options.mesher == Mesher::Refine ? 1.5 : 1.0;
+  const double lowestQuality = a.options.mesher == Mesher::Complex ? 1.0 : 1.5;
   if (a.options.tetgen.radiusEdge != 0 && !(a.options.tetgen.radiusEdge >= lowestQuality)) {
     return kConsole.failf(kBadParameter, "--quality must be at least %g with --mesher %s (the refinement may not end below), or 0 for none; got %g",
                           lowestQuality, a.mesher.c_str(), a.options.tetgen.radiusEdge);

@@ -30,7 +30,7 @@ struct DeformArgs {
 struct Args {
   std::string model;
   HullMeshOptions options;
-  std::string mesher = "refine";  // refine or complex
+  std::string mesher = "auto";  // auto, refine or complex
   std::string out;
   std::string format;
   std::string json;

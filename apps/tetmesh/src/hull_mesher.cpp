@@ -8,6 +8,8 @@
 #include <acd/algo/hull.hpp>
 #include <acd/algo/shell_inside.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -46,6 +48,49 @@ double regularCircumradius(double volume) {
 }
 
 int defaultSimplify(Mesher mesher) { return mesher == Mesher::Complex ? 24 : 0; }
+
+/// Mesher::Auto tries the complex of the exact hulls when none has more faces than this (CAD
+/// parts: boxes, plates, prisms), where its unrefined mesh is a handful of tets with the faces
+/// kept exactly; hulls of curved parts have hundreds, and their complex always has slivers.
+constexpr int kComplexTrialFaces = 24;
+
+/// The faces of a convex hull as planes (its triangles' planes, those within 1e-6 of the hull's
+/// size one): an exported box has many triangles but six faces.
+int hullFaces(const acd::TriMesh& hull) {
+  double size = 0.0;
+  for (const Vec3& v : hull.vertices) size = std::max(size, v.cwiseAbs().maxCoeff());
+  std::vector<std::array<double, 4>> planes;
+  for (const acd::Face& f : hull.faces) {
+    const Vec3& a = hull.vertices[f[0]];
+    const Vec3 n = (hull.vertices[f[1]] - a).cross(hull.vertices[f[2]] - a);
+    if (!(n.norm() > 0)) continue;
+    const Vec3 u = n.normalized();
+    planes.push_back({u.x(), u.y(), u.z(), u.dot(a)});
+  }
+  std::sort(planes.begin(), planes.end());
+  const double eps = 1e-6 * std::max(1.0, size);
+  int distinct = 0;
+  std::vector<std::array<double, 4>> kept;
+  for (const auto& p : planes) {
+    bool same = false;
+    for (const auto& q : kept)
+      same = same || (std::abs(p[0] - q[0]) < 1e-6 && std::abs(p[1] - q[1]) < 1e-6 && std::abs(p[2] - q[2]) < 1e-6 &&
+                      std::abs(p[3] - q[3]) < eps);
+    if (!same) kept.push_back(p), ++distinct;
+    if (distinct > kComplexTrialFaces) break;  // enough to say no
+  }
+  return distinct;
+}
+
+int countSlivers(const TetMesh& mesh) {
+  int n = 0;
+  for (int t = 0; t < static_cast<int>(mesh.tets.size()); ++t) {
+    const auto& v = mesh.tets[t];
+    const auto angles = dihedralAngles(mesh.points[v[0]], mesh.points[v[1]], mesh.points[v[2]], mesh.points[v[3]]);
+    n += *std::min_element(angles.begin(), angles.end()) < kSliverDegrees ? 1 : 0;
+  }
+  return n;
+}
 
 /// Mesher::Complex: the complex of the regions (simplified to `simplify` corners when > 0) given
 /// to TetGen, with larger snapping distances and smaller budgets when TetGen refuses.
@@ -163,9 +208,9 @@ HullMeshResult meshHulls(const acd::TriMesh& model, const HullMeshOptions& optio
                                   "--simplify must be at least 4 (a tetrahedron), got " + std::to_string(simplify));
     return r;
   }
-  if (options.clip && options.mesher != Mesher::Refine) {
+  if ((options.clip || options.sharpAngle != 0) && options.mesher == Mesher::Complex) {
     r.status = acd::Status::error(acd::StatusCode::InvalidParameter,
-                                  "clipping the components to the model needs the refinement mesher");
+                                  "clipping the components to the model and keeping sharp edges need the refinement mesher");
     return r;
   }
   auto t0 = acd::Clock::now();
@@ -196,9 +241,31 @@ HullMeshResult meshHulls(const acd::TriMesh& model, const HullMeshOptions& optio
   }
   r.times.hulls = acd::secondsSince(t0);
 
+  bool refine = options.mesher == Mesher::Refine;
+  if (options.mesher == Mesher::Auto) {
+    // The complex of the exact hulls where they have few corners, kept if it has no sliver;
+    // otherwise (and with --clip or --sharp, which only the refinement does) the refinement.
+    bool few = !options.clip && options.sharpAngle == 0;
+    for (const acd::TriMesh& hull : exact) few = few && hullFaces(hull) <= kComplexTrialFaces;
+    refine = true;
+    if (few) {
+      r.complexTried = true;
+      HullMeshResult trial = r;
+      meshComplex(exact, options.simplify >= 0 ? options.simplify : 0, options, trial);
+      if (trial.status.ok()) trial.complexSlivers = countSlivers(trial.mesh);
+      if (trial.status.ok() && trial.complexSlivers == 0) {
+        r = std::move(trial);
+        refine = false;
+      } else {
+        r.complexSlivers = trial.status.ok() ? trial.complexSlivers : -1;
+        r.times.complex += trial.times.complex, r.times.tetgen += trial.times.tetgen;
+      }
+    }
+  }
+  r.used = refine ? Mesher::Refine : Mesher::Complex;
   if (options.mesher == Mesher::Complex)
     meshComplex(exact, simplify, options, r);
-  else
+  else if (refine)
     meshRefined(model, exact, simplify, options, r);
   if (r.regions.empty() && !r.status.ok()) return r;
 

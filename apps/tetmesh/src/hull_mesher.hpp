@@ -17,13 +17,14 @@ namespace tetmesh {
 
 /// How the hull regions become tets.
 enum class Mesher {
+  Auto,     // Complex where every hull has few corners and its mesh has no sliver, else Refine
   Refine,   // Delaunay refinement of the regions (region_refiner.hpp): no slivers, coarse by tau
   Complex,  // the regions' exact complex (hull_complex.hpp) given to TetGen: their faces kept exactly
 };
 
 struct HullMeshOptions {
   double tau = 0.2;          // concavity tolerance of the decomposition, normalised units
-  Mesher mesher = Mesher::Refine;
+  Mesher mesher = Mesher::Auto;
   int simplify = -1;         // > 0: hulls with at most this many vertices (>= 4); 0: exact; -1: the mesher's default
   bool clip = false;         // Refine only: mesh the components themselves (the regions clipped to the model)
   double sharpAngle = 0.0;   // Refine only, degrees: the regions' edges turning more are kept exactly; 0: all rounded
@@ -56,6 +57,9 @@ struct HullMeshResult {
   double maxOutside = 0.0;               // largest distance of a component vertex outside its hull
   std::vector<acd::TriMesh> regions;     // per component, the region meshed for it (empty if it vanished)
   double maxOutsideRegion = 0.0;         // same, against the meshed region (after clipping)
+  Mesher used = Mesher::Refine;          // the mesher that made `mesh` (Refine or Complex)
+  bool complexTried = false;             // Auto: the complex of the exact hulls was tried
+  int complexSlivers = -1;               // and had this many tets below kSliverDegrees; -1: TetGen refused it
   TetMesh mesh;                          // the result, labels 1..n as the components
   std::vector<double> meshedVolume;      // per component: volume of its tets
   MeshQuality quality;

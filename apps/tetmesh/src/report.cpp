@@ -133,7 +133,19 @@ void printReport(const Args& a, TetFormat format, const HullMeshResult& r, const
   std::printf("  containment    farthest component vertex outside its hull: %.3g, outside its meshed region: %.3g\n",
               r.maxOutside, r.maxOutsideRegion);
   printOvershoot(r);
-  if (a.options.mesher == Mesher::Complex) {
+  if (a.options.mesher == Mesher::Auto) {
+    if (r.used == Mesher::Complex)
+      std::printf("  mesher         auto: the complex of the exact hulls (every hull has few faces, no tet below %g deg)\n",
+                  kSliverDegrees);
+    else if (r.complexTried && r.complexSlivers >= 0)
+      std::printf("  mesher         auto: the refinement (the complex of the exact hulls had %d tets below %g deg)\n",
+                  r.complexSlivers, kSliverDegrees);
+    else if (r.complexTried)
+      std::printf("  mesher         auto: the refinement (TetGen refused the complex of the exact hulls)\n");
+    else
+      std::printf("  mesher         auto: the refinement (hulls with many faces, or --clip / --sharp)\n");
+  }
+  if (r.used == Mesher::Complex) {
     std::printf("  complex        %d touching pairs (%d overlapping, deepest %.3g), %d contact planes, %d interface + %d boundary facets\n",
                 r.complex.contactPairs, r.complex.overlappingPairs, r.complex.maxOverlapDepth, r.complex.contactPlanes,
                 r.complex.interfaceFacets, r.complex.boundaryFacets);
@@ -200,7 +212,10 @@ int writeJsonReport(const Args& a, const HullMeshResult& r, const DirectMeshResu
                        {"unresolved", r.decomposition.components[i].unresolved}});
     json j = {{"model", a.model},
               {"tau", a.options.tau},
-              {"mesher", a.options.mesher == Mesher::Refine ? "refine" : "complex"},
+              {"mesher", r.used == Mesher::Refine ? "refine" : "complex"},
+              {"mesher_asked", a.options.mesher == Mesher::Auto ? "auto" : a.options.mesher == Mesher::Refine ? "refine" : "complex"},
+              {"complex_tried", r.complexTried},
+              {"complex_slivers", r.complexSlivers},
               {"clip", a.options.clip},
               {"refinement",
                {{"facet_distance", r.refineOptions.facetDistance},

@@ -39,20 +39,23 @@ TEST(TetmeshCommandLine, RangesAreChecked) {
   };
   refused([](Args& a) { a.options.tau = -1; }, "--tau must be positive");
   refused([](Args& a) { a.options.simplify = 3; }, "--simplify must be at least 4");
-  refused([](Args& a) { a.options.tetgen.radiusEdge = 0.5; }, "--quality must be at least 1.5 with --mesher refine");
-  refused([](Args& a) { a.options.tetgen.radiusEdge = 1.2; }, "--quality must be at least 1.5 with --mesher refine");
+  refused([](Args& a) { a.options.tetgen.radiusEdge = 0.5; }, "--quality must be at least 1.5 with --mesher auto");
+  refused([](Args& a) { a.mesher = "refine", a.options.tetgen.radiusEdge = 1.2; }, "--quality must be at least 1.5 with --mesher refine");
   refused([](Args& a) { a.mesher = "complex", a.options.tetgen.radiusEdge = 0.5; }, "--quality must be at least 1 with --mesher complex");
   refused([](Args& a) { a.options.tetgen.maxVolume = -1; }, "--max-volume must be positive");
-  refused([](Args& a) { a.mesher = "delaunay"; }, "unknown --mesher 'delaunay' (refine or complex)");
-  refused([](Args& a) { a.mesher = "complex", a.options.clip = true; }, "--clip and --sharp need --mesher refine");
-  refused([](Args& a) { a.mesher = "complex", a.options.sharpAngle = 40; }, "--clip and --sharp need --mesher refine");
+  refused([](Args& a) { a.mesher = "delaunay"; }, "unknown --mesher 'delaunay' (auto, refine or complex)");
+  refused([](Args& a) { a.mesher = "complex", a.options.clip = true; }, "--clip and --sharp need the refinement");
+  refused([](Args& a) { a.mesher = "complex", a.options.sharpAngle = 40; }, "--clip and --sharp need the refinement");
   refused([](Args& a) { a.options.sharpAngle = 200; }, "--sharp must be an angle in degrees in [0, 180)");
   refused([](Args& a) { a.poly = "c.poly"; }, "--poly writes the complex given to TetGen: it needs --mesher complex");
 }
 
-TEST(TetmeshCommandLine, TheMesherIsRefinementUnlessAskedForTheComplex) {
+TEST(TetmeshCommandLine, TheMesherIsAutomaticUnlessAskedFor) {
   Args a;
   TetFormat f = TetFormat::Vtk;
+  ASSERT_EQ(checkArgs(a, f), appcli::kOk);
+  EXPECT_EQ(a.options.mesher, Mesher::Auto);
+  a.mesher = "refine";
   ASSERT_EQ(checkArgs(a, f), appcli::kOk);
   EXPECT_EQ(a.options.mesher, Mesher::Refine);
   a.mesher = "complex";

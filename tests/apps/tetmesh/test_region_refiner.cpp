@@ -295,3 +295,27 @@ TEST(RegionFeatures, NeighboursShareTheirRimsAndNearMissesAreDropped) {
       EXPECT_GT((0.5 * (a[0] + a[1]) - 0.5 * (b[0] + b[1])).norm(), 0.01);
     }
 }
+
+TEST(AutoMesher, BoxyPartsGetTheExactComplexCurvedOnesTheRefinement) {
+  // An L of boxes: every hull has 8 corners and the complex's mesh has no sliver, so it is kept
+  // (exact volume, a handful of tets). A torus: hulls of many corners, the refinement.
+  HullMeshOptions o;
+  o.tau = 0.05;
+  o.threads = 1;
+  const HullMeshResult l = meshHulls(acd::shapes::lShape(), o);
+  ASSERT_TRUE(l.status.ok()) << l.status.message;
+  EXPECT_EQ(l.used, Mesher::Complex);
+  EXPECT_EQ(l.complexSlivers, 0);
+  EXPECT_NEAR(volume(l.mesh), 3.0, 1e-12);
+  EXPECT_LT(l.mesh.tets.size(), 50u);
+  EXPECT_GE(smallestAngle(l.mesh), kSliverDegrees);
+  o.tau = 0.1;
+  const HullMeshResult torus = meshHulls(acd::shapes::torus(2.0, 0.6, 48, 16), o);
+  ASSERT_TRUE(torus.status.ok()) << torus.status.message;
+  EXPECT_EQ(torus.used, Mesher::Refine);
+  EXPECT_GE(smallestAngle(torus.mesh), kSliverDegrees);
+  // Asked to clip, the refinement runs whatever the hulls.
+  o.clip = true;
+  o.tau = 0.05;
+  EXPECT_EQ(meshHulls(acd::shapes::lShape(), o).used, Mesher::Refine);
+}

@@ -108,5 +108,5 @@ TEST(TetmeshCli, SharpEdgesAndClippingReachTheReport) {
   EXPECT_GT(clip["hull_mesh"]["volume"].get<double>(), 0.9 * 6.0);
   r = runTool(TETMESH_CLI, acdtest::quote(dir / "box.off") + " --mesher complex --clip", dir);
   EXPECT_EQ(r.code, 3);
-  EXPECT_NE(r.err.find("--clip and --sharp need --mesher refine"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--clip and --sharp need the refinement"), std::string::npos) << r.err;
 }
