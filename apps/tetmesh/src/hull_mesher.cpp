@@ -53,6 +53,8 @@ int defaultSimplify(Mesher mesher) { return mesher == Mesher::Complex ? 24 : 0; 
 /// parts: boxes, plates, prisms), where its unrefined mesh is a handful of tets with the faces
 /// kept exactly; hulls of curved parts have hundreds, and their complex always has slivers.
 constexpr int kComplexTrialFaces = 24;
+/// Most seconds per TetGen call of that trial (it meshes a few boxes in milliseconds).
+constexpr int kComplexTrialSeconds = 10;
 
 /// The faces of a convex hull as planes (its triangles' planes, those within 1e-6 of the hull's
 /// size one): an exported box has many triangles but six faces.
@@ -251,7 +253,9 @@ HullMeshResult meshHulls(const acd::TriMesh& model, const HullMeshOptions& optio
     if (few) {
       r.complexTried = true;
       HullMeshResult trial = r;
-      meshComplex(exact, options.simplify >= 0 ? options.simplify : 0, options, trial);
+      HullMeshOptions quick = options;  // a trial: TetGen may loop on a near-degenerate complex
+      quick.tetgen.timeoutSeconds = std::min(options.tetgen.timeoutSeconds, kComplexTrialSeconds);
+      meshComplex(exact, options.simplify >= 0 ? options.simplify : 0, quick, trial);
       if (trial.status.ok()) trial.complexSlivers = countSlivers(trial.mesh);
       if (trial.status.ok() && trial.complexSlivers == 0) {
         r = std::move(trial);
