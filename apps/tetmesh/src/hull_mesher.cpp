@@ -71,27 +71,32 @@ int hullFaces(const acd::TriMesh& hull) {
   }
   std::sort(planes.begin(), planes.end());
   const double eps = 1e-6 * std::max(1.0, size);
-  int distinct = 0;
   std::vector<std::array<double, 4>> kept;
   for (const auto& p : planes) {
     bool same = false;
     for (const auto& q : kept)
       same = same || (std::abs(p[0] - q[0]) < 1e-6 && std::abs(p[1] - q[1]) < 1e-6 && std::abs(p[2] - q[2]) < 1e-6 &&
                       std::abs(p[3] - q[3]) < eps);
-    if (!same) kept.push_back(p), ++distinct;
-    if (distinct > kComplexTrialFaces) break;  // enough to say no
+    if (!same) kept.push_back(p);
+    if (static_cast<int>(kept.size()) > kComplexTrialFaces) break;  // enough to say no
   }
-  return distinct;
+  return static_cast<int>(kept.size());
 }
 
-int countSlivers(const TetMesh& mesh) {
-  int n = 0;
-  for (int t = 0; t < static_cast<int>(mesh.tets.size()); ++t) {
-    const auto& v = mesh.tets[t];
-    const auto angles = dihedralAngles(mesh.points[v[0]], mesh.points[v[1]], mesh.points[v[2]], mesh.points[v[3]]);
-    n += *std::min_element(angles.begin(), angles.end()) < kSliverDegrees ? 1 : 0;
-  }
-  return n;
+
+/// The hulls simplified to at most `budget` corners each, with the figures the report gives.
+std::vector<acd::TriMesh> simplifyInto(const std::vector<acd::TriMesh>& exact, int budget, HullMeshResult& r) {
+  const auto t0 = acd::Clock::now();
+  HullSimplifyOptions sopt;
+  sopt.maxVertices = budget;
+  SimplifiedHulls simplified = simplifyHulls(exact, sopt);
+  r.times.hulls += acd::secondsSince(t0);
+  r.simplifyUsed = budget;
+  r.simplifyMissed = 0;
+  for (bool reached : simplified.reached) r.simplifyMissed += reached ? 0 : 1;
+  r.separatingPlanes = simplified.separatingPlanes;
+  r.overlappingHulls = simplified.overlappingHulls;
+  return std::move(simplified.regions);
 }
 
 /// Mesher::Complex: the complex of the regions (simplified to `simplify` corners when > 0) given
@@ -119,19 +124,8 @@ void meshComplex(const std::vector<acd::TriMesh>& exact, int simplify, const Hul
   // Simplified hulls: when TetGen refuses every complex, smaller budgets give other regions, and
   // one of them is often accepted; the exact hulls come last.
   const int lowestBudget = std::min(simplify, std::max(8, simplify - 8));
-  for (int budget = simplify; simplify > 0 && !r.tetgen.ok && budget >= lowestBudget; budget -= 4) {
-    const auto t0 = acd::Clock::now();
-    HullSimplifyOptions sopt;
-    sopt.maxVertices = budget;
-    const SimplifiedHulls simplified = simplifyHulls(exact, sopt);
-    r.times.hulls += acd::secondsSince(t0);
-    r.simplifyUsed = budget;
-    r.simplifyMissed = 0;
-    for (bool reached : simplified.reached) r.simplifyMissed += reached ? 0 : 1;
-    r.separatingPlanes = simplified.separatingPlanes;
-    r.overlappingHulls = simplified.overlappingHulls;
-    attempt(simplified.regions);
-  }
+  for (int budget = simplify; simplify > 0 && !r.tetgen.ok && budget >= lowestBudget; budget -= 4)
+    attempt(simplifyInto(exact, budget, r));
   if (!r.tetgen.ok) {
     r.simplifyFallback = simplify > 0;
     attempt(exact);
@@ -158,20 +152,7 @@ void meshComplex(const std::vector<acd::TriMesh>& exact, int simplify, const Hul
 /// Mesher::Refine: Delaunay refinement of the regions, with sizes tied to tau.
 void meshRefined(const acd::TriMesh& model, const std::vector<acd::TriMesh>& exact, int simplify,
                  const HullMeshOptions& options, HullMeshResult& r) {
-  if (simplify > 0) {
-    const auto t0 = acd::Clock::now();
-    HullSimplifyOptions sopt;
-    sopt.maxVertices = simplify;
-    const SimplifiedHulls simplified = simplifyHulls(exact, sopt);
-    r.times.hulls += acd::secondsSince(t0);
-    r.simplifyUsed = simplify;
-    for (bool reached : simplified.reached) r.simplifyMissed += reached ? 0 : 1;
-    r.separatingPlanes = simplified.separatingPlanes;
-    r.overlappingHulls = simplified.overlappingHulls;
-    r.hulls = simplified.regions;
-  } else {
-    r.hulls = exact;
-  }
+  r.hulls = simplify > 0 ? simplifyInto(exact, simplify, r) : exact;
   r.regions = r.hulls;
   const double unit = 1.0 / r.decomposition.normalization.scale;  // tau's unit in input lengths
   RefineOptions& o = r.refineOptions;
@@ -256,7 +237,7 @@ HullMeshResult meshHulls(const acd::TriMesh& model, const HullMeshOptions& optio
       HullMeshOptions quick = options;  // a trial: TetGen may loop on a near-degenerate complex
       quick.tetgen.timeoutSeconds = std::min(options.tetgen.timeoutSeconds, kComplexTrialSeconds);
       meshComplex(exact, options.simplify >= 0 ? options.simplify : 0, quick, trial);
-      if (trial.status.ok()) trial.complexSlivers = countSlivers(trial.mesh);
+      if (trial.status.ok()) trial.complexSlivers = measureQuality(trial.mesh).slivers;
       if (trial.status.ok() && trial.complexSlivers == 0) {
         r = std::move(trial);
         refine = false;
