@@ -13,6 +13,7 @@
 #   --out      cache (default out/invariance): finished runs are reused unless --fresh
 #   --data     folder of MODEL.off files (default data/meshes: the corpus)
 #   --invariant  pass acd's --invariant (the default of the acd command since 2026-11-25; for older builds)
+#   --flags "F"  more flags for every decompose (for example "--union")
 #
 # Prints a Markdown table model x tau: motions matching out of 10, the largest relative volume
 # difference between matched components, the part counts seen. Exits 1 when some model has
@@ -34,7 +35,7 @@ ACD="build/bin/acd"
 PY=/usr/bin/python3
 EXTRA=()
 
-usage() { sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; }
 while [[ $# -gt 0 ]]; do
     case "$1" in
         --data) DATA="$2"; shift 2 ;;
@@ -46,6 +47,7 @@ while [[ $# -gt 0 ]]; do
         --fresh) FRESH=1; shift ;;
         --acd) ACD="$2"; shift 2 ;;
         --invariant) EXTRA+=(--invariant); shift ;;
+        --flags) read -r -a more <<<"$2"; EXTRA+=("${more[@]}"); shift 2 ;;
         -h|--help) usage; exit 0 ;;
         *) echo "invariance: unknown option $1" >&2; usage >&2; exit 2 ;;
     esac

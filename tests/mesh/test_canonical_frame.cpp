@@ -10,6 +10,8 @@
 #include "helpers.hpp"
 
 #include <algorithm>
+#include <map>
+#include <set>
 #include <cmath>
 #include <numeric>
 #include <random>
@@ -221,4 +223,53 @@ TEST(CanonicalFrame, SymmetricShapesGiveTheSameCanonicalMeshInEveryPose) {
     const TriMesh turned = moved(shape, quarter, Vec3::Zero());
     expectSameMesh(acd::canonicalMesh(turned, acd::canonicalFrame({turned})).mesh, reference.mesh);
   }
+}
+
+// An L of two plates, whose principal axes are turned in the plane of the L: in the face-aligned
+// frame every plane of the L has one coordinate, exactly, after rounding to the grid, in every pose.
+TEST(FaceAlignedFrame, PlanesOfACadPartKeepOneCoordinateInEveryPose) {
+  const std::vector<TriMesh> parts = {acd::shapes::box(Vec3(0, 0, 0), Vec3(4, 1, 1)),
+                                      acd::shapes::box(Vec3(0, 1, 0), Vec3(1, 3, 1))};
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-10.0, 10.0);
+  for (int trial = 0; trial < 10; ++trial) {
+    SCOPED_TRACE("motion " + std::to_string(trial));
+    const Eigen::Matrix3d r = randomRotation(rng);
+    const Vec3 t = acdtest::drawPoint([&] { return u(rng); });
+    std::vector<TriMesh> pose;
+    for (const TriMesh& m : parts) pose.push_back(moved(m, r, t));
+    const acd::Normalization canonical = acd::canonicalFrame(pose);
+    const acd::Normalization aligned = acd::faceAlignedFrame(pose, canonical);
+    // Each axis of the aligned frame along one of the part's own axes (the columns of r).
+    for (int k = 0; k < 3; ++k) {
+      const double along = (r.transpose() * aligned.rotation.row(k).transpose()).cwiseAbs().maxCoeff();
+      EXPECT_GT(along, 1.0 - 1e-12) << "axis " << k;
+    }
+    // The vertices with one original x (y, z) share one rounded coordinate in the aligned frame.
+    for (int axis = 0; axis < 3; ++axis) {
+      std::map<double, std::set<double>> byPlane;  // original coordinate -> rounded coordinates seen
+      for (std::size_t p = 0; p < parts.size(); ++p) {
+        const acd::CanonicalMesh c = acd::canonicalMesh(pose[p], aligned);
+        for (std::size_t v = 0; v < c.source.size(); ++v) {
+          const Vec3 original = parts[p].vertices[c.source[v]];
+          const Eigen::Vector3d axes = aligned.rotation * r.col(axis);
+          int frameAxis = 0;
+          axes.cwiseAbs().maxCoeff(&frameAxis);
+          byPlane[original[axis]].insert(c.mesh.vertices[v][frameAxis]);
+        }
+      }
+      for (const auto& [plane, seen] : byPlane) EXPECT_EQ(seen.size(), 1u) << "axis " << axis << " plane " << plane;
+    }
+    // The plain canonical frame is turned in the plane of the L: x = 1 is not one of its planes.
+    EXPECT_LT((r.transpose() * canonical.rotation.row(0).transpose()).cwiseAbs().maxCoeff(), 1.0 - 1e-6);
+  }
+}
+
+TEST(FaceAlignedFrame, ACurvedSurfaceKeepsTheCanonicalFrame) {
+  const TriMesh ball = acd::shapes::icosphere(Vec3(0.3, 0.1, -0.2), 2.0, 2);
+  const acd::Normalization canonical = acd::canonicalFrame({ball});
+  const acd::Normalization aligned = acd::faceAlignedFrame({ball}, canonical);
+  EXPECT_TRUE(aligned.rotation == canonical.rotation);
+  EXPECT_EQ(aligned.center, canonical.center);
+  EXPECT_EQ(aligned.scale, canonical.scale);
 }

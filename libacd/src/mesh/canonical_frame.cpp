@@ -6,12 +6,14 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <array>
 #include <complex>
 #include <cstring>
 #include <limits>
 #include <cmath>
 #include <numeric>
 #include <tuple>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -215,6 +217,71 @@ Normalization canonicalFrame(const std::vector<TriMesh>& pieces) {
     if (canonicalLess(mesh, bestMesh)) best = i, bestMesh = std::move(mesh);
   }
   return candidates[best];
+}
+
+Normalization faceAlignedFrame(const std::vector<TriMesh>& pieces, const Normalization& frame) {
+  // Lines of normals binned at 1e-7: the normals of one plane differ by ulps, so they share a bin
+  // in every pose (the sign of a line is that of its larger bin key, so n and -n share one too).
+  using Key = std::array<long long, 3>;
+  struct KeyHash {
+    std::size_t operator()(const Key& k) const {
+      return std::hash<long long>()(k[0]) ^ (std::hash<long long>()(k[1]) * 31) ^ (std::hash<long long>()(k[2]) * 961);
+    }
+  };
+  struct Line {
+    Vec3 sum = Vec3::Zero();  // area-weighted unit normals
+    double area = 0.0;
+  };
+  std::unordered_map<Key, Line, KeyHash> lines;
+  double total = 0.0;
+  for (const TriMesh& piece : pieces) {
+    std::vector<Vec3> p(piece.vertices.size());
+    for (std::size_t v = 0; v < p.size(); ++v) p[v] = frame.apply(piece.vertices[v]);
+    for (const Face& f : piece.faces) {
+      const Vec3 n = (p[f[1]] - p[f[0]]).cross(p[f[2]] - p[f[0]]);
+      const double twice = n.norm();
+      if (!(twice > 0.0)) continue;
+      Vec3 u = n / twice;
+      Key k{std::llround(u.x() * 1e7), std::llround(u.y() * 1e7), std::llround(u.z() * 1e7)};
+      const Key opposite{-k[0], -k[1], -k[2]};
+      if (opposite > k) k = opposite, u = -u;
+      Line& line = lines[k];
+      line.sum += 0.5 * twice * u;
+      line.area += 0.5 * twice;
+      total += 0.5 * twice;
+    }
+  }
+  // The largest, ties by key: the same choice in every pose.
+  auto largest = [&](const auto& allowed) -> const Line* {
+    const Line* best = nullptr;
+    const Key* bestKey = nullptr;
+    for (const auto& [key, line] : lines) {
+      if (!allowed(line)) continue;
+      if (!best || line.area > best->area || (line.area == best->area && key < *bestKey)) best = &line, bestKey = &key;
+    }
+    return best;
+  };
+  const Line* first = largest([](const Line&) { return true; });
+  if (!first || !(first->area >= kLeastAlignedArea * total)) return frame;
+  const Vec3 r1 = first->sum.normalized();
+  const Line* second = largest([&](const Line& l) { return std::abs(l.sum.normalized().dot(r1)) <= 1e-9; });
+  Vec3 r2;
+  if (second) {
+    r2 = second->sum.normalized();
+  } else {  // the frame's axis least along r1
+    int k = 0;
+    for (int j = 1; j < 3; ++j)
+      if (std::abs(r1[j]) < std::abs(r1[k])) k = j;
+    r2 = Vec3::Unit(k);
+  }
+  r2 = (r2 - r2.dot(r1) * r1).normalized();
+  Eigen::Matrix3d turn;
+  turn.row(0) = r1.transpose();
+  turn.row(1) = r2.transpose();
+  turn.row(2) = r1.cross(r2).normalized().transpose();
+  Normalization aligned = frame;
+  aligned.rotation = turn * frame.rotation;
+  return aligned;
 }
 
 CanonicalMesh canonicalMesh(const TriMesh& mesh, const Normalization& n) {

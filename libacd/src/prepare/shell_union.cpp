@@ -49,30 +49,32 @@ bool boxesMeet(const Box3& a, const Box3& b) {
   return (a.lo.array() <= b.hi.array()).all() && (b.lo.array() <= a.hi.array()).all();
 }
 
-/// The shells as everything below sees them (`work`) and the order they are united in. With
-/// `invariant`, each shell's vertices and faces in canonical order and the shells too, so that
-/// the union does not follow the order of the input. The coordinates stay the input's: rounded
-/// to the canonical frame's grid, shells that touch in a plane would cross one another by a
-/// grid step and the union would be full of slivers.
-void canonicalWork(const std::vector<TriMesh>& shells, bool invariant, std::vector<TriMesh>& work,
-                   std::vector<int>& order) {
+/// The shells as everything below sees them (`work`), the order they are united in, and the way
+/// back to the input's coordinates. With `invariant`, each shell in canonical form in the frame
+/// turned onto the assembly's largest planes (faceAlignedFrame), shells in canonical order: the
+/// union's input is then the same, bit for bit, in every pose and order. In that frame the planes
+/// in which CAD shells touch (the axis planes of the part) keep exact coordinates: rounded in an
+/// arbitrary frame, touching shells would cross one another by a grid step, and in a rotated
+/// input by an ulp, and the union would be full of slivers.
+std::optional<CanonicalInverse> canonicalWork(const std::vector<TriMesh>& shells, bool invariant,
+                                              std::vector<TriMesh>& work, std::vector<int>& order) {
   const int n = static_cast<int>(shells.size());
-  work.assign(n, TriMesh());
   order.resize(n);
   std::iota(order.begin(), order.end(), 0);
   if (!invariant) {
     work = shells;
-    return;
+    return std::nullopt;
   }
-  std::vector<TriMesh> ordered(n);  // canonical meshes, for the order of shells
-  const Normalization frame = canonicalFrame(shells);
+  work.assign(n, TriMesh());
+  const Normalization frame = faceAlignedFrame(shells, canonicalFrame(shells));
+  CanonicalInverse back(frame);
   for (int i = 0; i < n; ++i) {
     CanonicalMesh c = canonicalMesh(shells[i], frame);
-    work[i].faces = c.mesh.faces;
-    for (int source : c.source) work[i].vertices.push_back(shells[i].vertices[source]);
-    ordered[i] = std::move(c.mesh);
+    back.add(c, shells[i]);
+    work[i] = std::move(c.mesh);
   }
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return canonicalLess(ordered[a], ordered[b]); });
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return canonicalLess(work[a], work[b]); });
+  return back;
 }
 
 /// Rounding the exact union to doubles leaves slivers and specks where the shells cross (faces
@@ -114,7 +116,7 @@ ShellUnion uniteMeetingShells(const std::vector<TriMesh>& shells, bool invariant
 
   std::vector<TriMesh> work;
   std::vector<int> order;
-  canonicalWork(shells, invariant, work, order);
+  const std::optional<CanonicalInverse> back = canonicalWork(shells, invariant, work, order);
   std::vector<Box3> boxes(n);
   for (int i = 0; i < n; ++i) boxes[i] = boundingBox(work[i]);
 
@@ -196,6 +198,7 @@ ShellUnion uniteMeetingShells(const std::vector<TriMesh>& shells, bool invariant
     for (int i : taken) consumed[i] = 1;
     out.united += static_cast<int>(taken.size());
     for (TriMesh& part : parts) {
+      if (back) part = (*back)(part);  // input vertices exactly, the crossings' points through the frame
       if (signedVolume(part) < 0.0)
         for (Face& f : part.faces) std::swap(f[1], f[2]);
       solids.push_back(std::move(part));

@@ -17,6 +17,15 @@ namespace acd {
 /// unique frame; one of the candidates is taken.
 Normalization canonicalFrame(const std::vector<TriMesh>& pieces);
 
+/// `frame` turned so that the planes holding the most surface lie across its axes: the line of
+/// face normals (n or -n) with the largest area becomes the first axis, the largest line
+/// perpendicular to it the second. Points of such a plane then share one coordinate exactly once
+/// rounded to kCanonicalGrid, in every pose, as they did in a CAD part's own axes (in `frame`
+/// itself they differ by ulps, and rounding can split them). `frame` itself where no line holds
+/// kLeastAlignedArea of the surface. Origin and scale stay `frame`'s.
+Normalization faceAlignedFrame(const std::vector<TriMesh>& pieces, const Normalization& frame);
+constexpr double kLeastAlignedArea = 0.05;
+
 /// Coordinates are rounded to this grid (normalised units) in the canonical frame, so that a frame
 /// computed a few ulps differently after a rigid motion gives bit-identical coordinates.
 constexpr double kCanonicalGrid = 1.0 / (1 << 22);

@@ -24,9 +24,10 @@ struct ShellUnion {
 /// the shells' own surfaces, so a hull within tau of it is within tau of the input. Shells that
 /// cross themselves, or a union that would not be a manifold (two shells touching along an edge
 /// only), are left alone and counted. Shells that meet no other come back unchanged. With
-/// `invariant` the work is done in the group's canonical frame, on shells in canonical order, so
-/// that the result does not follow the pose or the order of faces and shells; the vertices of the
-/// input come back with their exact coordinates.
+/// `invariant` the work is done on the shells rounded to the canonical grid in the canonical frame
+/// turned onto their largest planes (faceAlignedFrame), in canonical order, so that the result
+/// does not follow the pose or the order of faces and shells; the vertices of the input come back
+/// with their exact coordinates, the points where shells cross within a grid step of theirs.
 ShellUnion uniteMeetingShells(const std::vector<TriMesh>& shells, bool invariant);
 
 }  // namespace acd
