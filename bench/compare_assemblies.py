@@ -2,7 +2,7 @@
 """acd against CoACD and V-HACD on meshes of many shells (CAD assemblies), run side by side with
 the same cache, peers and evaluators as bench/compare_peers.py.
 
-  compare_assemblies.py run   [--only acd|peers|all] [--models A,B] [--shard I/N] [--existing]
+  compare_assemblies.py run   [--only acd|peers|all] [--models A,B] [--shard I/N] [--existing] [--acd-flags=F]
   compare_assemblies.py table [--models A,B]            -> Markdown on stdout
 
 The meshes, chosen by rule before any result was seen:
@@ -82,12 +82,12 @@ def run(args, paths):
         for name, model, _ in models:
             for tau in ACD_TAUS:
                 cp.say("acd %s tau %g" % (name, tau))
-                d = cp.run_acd(paths, model, tau)  # --existing spares the peers only
+                d = cp.run_acd(paths, model, tau, flags=args.acd_flags)  # --existing spares the peers only
                 dst = os.path.join(paths.out, name, "acd-t%g" % tau)
                 cp.publish(d, dst, ["hulls.obj", "report.json", "log.txt", "run.json"])
                 if os.path.exists(os.path.join(d, "hulls.obj")):
-                    cp.publish(cp.evaluate(paths, scorable(paths, model), os.path.join(d, "hulls.obj")), dst,
-                               ["eval.json", "score.json"])
+                    cp.publish(cp.evaluate(paths, scorable(paths, model), os.path.join(d, "hulls.obj"), with_acd=False),
+                               dst, ["score.json"])
     if args.only in ("peers", "all"):
         cp.ensure_peers(paths)
         shard, shards = args.shard
@@ -101,8 +101,8 @@ def run(args, paths):
             dst = os.path.join(paths.out, name, label)
             cp.publish(d, dst, ["hulls.obj", "log.txt", "run.json"])
             if os.path.exists(os.path.join(d, "hulls.obj")):
-                cp.publish(cp.evaluate(paths, scorable(paths, model), os.path.join(d, "hulls.obj")), dst,
-                           ["eval.json", "score.json"])
+                cp.publish(cp.evaluate(paths, scorable(paths, model), os.path.join(d, "hulls.obj"), with_acd=False),
+                           dst, ["score.json"])
 
 
 # ---- the tables -------------------------------------------------------------------------------
@@ -195,6 +195,8 @@ def main():
     ap.add_argument("--models", type=lambda s: s.split(","), default=None)
     ap.add_argument("--only", choices=["acd", "peers", "all"], default="all")
     ap.add_argument("--out", default=os.path.join(cp.ROOT, "out/compare_assemblies"))
+    ap.add_argument("--acd-flags", type=lambda s: s.split(), default=[],
+                    help="more flags for every acd run, e.g. --acd-flags=--union (with its own --out)")
     ap.add_argument("--existing", action="store_true", help="publish and score only the peer runs already in the cache (acd always runs)")
     ap.add_argument("--shard", type=lambda s: tuple(int(x) for x in s.split("/")), default=(0, 1),
                     help="I/N: run only every N-th peer run from the I-th")

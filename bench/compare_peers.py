@@ -182,30 +182,36 @@ def run_peer(paths, obj, tool, flags, existing_only=False):
     return cached(paths, key_of("peer", tool, fixed_file_hash(binary), sha256(obj), *flags), make, existing_only)
 
 
-def run_acd(paths, model, tau, existing_only=False):
+def run_acd(paths, model, tau, existing_only=False, flags=()):
+    """acd at tau with its defaults, or with `flags` added (part of the cache key)."""
     def make(d):
-        cmd = [paths.acd, "decompose", model, "-t", str(tau), "-o", d, "-q", "--threads", "2"]
+        cmd = [paths.acd, "decompose", model, "-t", str(tau), "-o", d, "-q", "--threads", "2"] + list(flags)
         rc, sec, mb = timed(cmd, d, os.path.join(d, "log.txt"), PEER_TIMEOUT)
         for c in glob.glob(os.path.join(d, "component_*.off")):
             os.remove(c)
-        json.dump({"command": "acd decompose MODEL -t %g --threads 2" % tau, "rc": rc, "seconds": sec, "peak_mb": mb},
-                  open(os.path.join(d, "run.json"), "w"))
+        json.dump({"command": " ".join(["acd decompose MODEL -t %g --threads 2" % tau] + list(flags)), "rc": rc,
+                   "seconds": sec, "peak_mb": mb}, open(os.path.join(d, "run.json"), "w"))
 
-    return cached(paths, key_of("acd", fixed_file_hash(paths.acd), fixed_file_hash(model), "%g" % tau), make, existing_only)
+    return cached(paths, key_of("acd", fixed_file_hash(paths.acd), fixed_file_hash(model), "%g" % tau, *flags), make,
+                  existing_only)
 
 
-def evaluate(paths, model, hulls):
-    """Both evaluators' figures for a hull file, cached by model, hulls and evaluator binaries."""
+def evaluate(paths, model, hulls, with_acd=True):
+    """The evaluators' figures for a hull file: acd-score's score.json and, with_acd, acd evaluate's
+    eval.json; cached by model, hulls and the binaries that ran (acd-score alone needs no acd)."""
+    evaluators = [("score.json", [paths.score, model, hulls, "--samples", str(SAMPLES)])]
+    if with_acd:
+        evaluators.insert(0, ("eval.json", [paths.acd, "evaluate", model, hulls, "--json", "--samples", str(SAMPLES),
+                                            "--threads", "2"]))
+
     def make(d):
-        for name, cmd in (("eval.json", [paths.acd, "evaluate", model, hulls, "--json", "--samples", str(SAMPLES),
-                                         "--threads", "2"]),
-                          ("score.json", [paths.score, model, hulls, "--samples", str(SAMPLES)])):
+        for name, cmd in evaluators:
             p = subprocess.run(cmd, capture_output=True, text=True)
             open(os.path.join(d, name), "w").write(p.stdout if p.returncode == 0 else
                                                    json.dumps({"error": p.stderr.strip()[-300:]}))
 
-    return cached(paths, key_of("eval", fixed_file_hash(model), sha256(hulls), fixed_file_hash(paths.acd),
-                                fixed_file_hash(paths.score),
+    binaries = [fixed_file_hash(paths.acd)] if with_acd else ["score only"]
+    return cached(paths, key_of("eval", fixed_file_hash(model), sha256(hulls), *binaries, fixed_file_hash(paths.score),
                                 str(SAMPLES)), make)
 
 
