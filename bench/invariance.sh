@@ -13,7 +13,7 @@
 #   --out      cache (default out/invariance): finished runs are reused unless --fresh
 #   --data     folder of MODEL.off files (default data/meshes: the corpus)
 #   --invariant  pass acd's --invariant (the default of the acd command since 2026-11-25; for older builds)
-#   --flags "F"  more flags for every decompose (for example "--union")
+#   --flags "F"  more flags for every decompose (for example "--no-union")
 #
 # Prints a Markdown table model x tau: motions matching out of 10, the largest relative volume
 # difference between matched components, the part counts seen. Exits 1 when some model has

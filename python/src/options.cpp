@@ -89,9 +89,7 @@ void bindOptions(py::module_& m) {
   negated(solid, "no_merge", [](SolidOptions& o) -> bool& { return o.decompose.merge; });
   negated(solid, "no_fill_holes", [](SolidOptions& o) -> bool& { return o.decompose.fillHoles; });
   negated(solid, "no_wrap", [](SolidOptions& o) -> bool& { return o.decompose.wrap; });
-  solid.def_property(  // --union
-      "union", [](const SolidOptions& o) { return o.decompose.uniteShells; },
-      [](SolidOptions& o, bool v) { o.decompose.uniteShells = v; });
+  negated(solid, "no_union", [](SolidOptions& o) -> bool& { return o.decompose.uniteShells; });
   negated(solid, "no_repair", [](SolidOptions& o) -> bool& { return o.decompose.repair; });
   negated(solid, "no_invariant", [](SolidOptions& o) -> bool& { return o.decompose.invariant; });
   solid.def_property(  // --merge-scope

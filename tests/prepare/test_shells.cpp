@@ -44,19 +44,19 @@ TEST(Shells, PrepareDropsCavitiesAndKeepsOverlapsApart) {
     ASSERT_EQ(p.shells.size(), 1u) << name;
     EXPECT_NEAR(signedVolume(p.shells[0]), 27.0, 1e-12);
   }
-  // Overlapping shells become their union when asked (acd/algo/shell_union.hpp), else stay apart.
+  // Overlapping shells become their union (acd/algo/shell_union.hpp, the default), else stay apart.
   DecomposeOptions unite = atTau(0.1);
   unite.uniteShells = true;
   const PreparedModel loose = prepareModel(caseMesh("solid_in_cavity"), unite);
   EXPECT_EQ(loose.cavitiesDropped, 1);
   // With the cavity gone the solid inside it lies in the outer shell's solid: the union absorbs it.
   EXPECT_EQ(loose.shells.size(), 1u);
-  EXPECT_EQ(prepareModel(caseMesh("solid_in_cavity"), atTau(0.1)).shells.size(), 2u);  // apart: both
+  DecomposeOptions apart = atTau(0.1);
+  apart.uniteShells = false;
+  EXPECT_EQ(prepareModel(caseMesh("solid_in_cavity"), apart).shells.size(), 2u);  // apart: both
   const PreparedModel united = prepareModel(caseMesh("shells_overlapping"), unite);
   EXPECT_EQ(united.overlappingShells, 0);
   EXPECT_EQ(united.shells.size(), 1u);
-  DecomposeOptions apart = atTau(0.1);
-  apart.uniteShells = false;
   const PreparedModel overlap = prepareModel(caseMesh("shells_overlapping"), apart);
   EXPECT_EQ(overlap.overlappingShells, 2);
   EXPECT_EQ(overlap.shells.size(), 2u);

@@ -245,7 +245,7 @@ int runSolidDecompose(DecomposeArgs& a) {
   a.options.mergeScope = a.mergeScope == "component" ? acd::MergeScope::Component : acd::MergeScope::Model;
   a.options.fillHoles = !a.noFillHoles;
   a.options.wrap = !a.noWrap && !a.noRepair;
-  a.options.uniteShells = a.unite;
+  a.options.uniteShells = !a.noUnion;
   a.options.repair = !a.noRepair;
   if (a.perMesh) return runPerMesh(a);
   acd::ReadResult r = readModel(a.model);
@@ -287,10 +287,11 @@ CLI::App* addDecomposeCommand(CLI::App& app, DecomposeArgs& a) {
   dec->add_flag("--no-wrap", a.noWrap,
                 "Refuse a mesh that the repairs cannot make a clean solid instead of decomposing its watertight wrap; "
                 "self-intersecting pieces left above tau stay unresolved (exit 4)");
-  dec->add_flag("--union", a.unite,
-                "Also decompose the shells that pass through, touch or lie in another (an assembly exported from CAD) "
-                "as the solid they bound together, and keep whichever gives fewer hulls; not yet the same result "
-                "under rigid motion");
+  dec->add_flag("--no-union", a.noUnion,
+                "Decompose each shell on its own only: by default, shells that pass through, touch or lie in another "
+                "(an assembly exported from CAD) are also decomposed as the solid they bound together, and whichever "
+                "gives fewer hulls is kept (slower where shells meet)");
+  dec->add_flag("--union", a.unionFlag, "Shells that meet also decomposed as their union (the default)")->group("");
   dec->add_flag("--no-repair", a.noRepair,
                 "Only the strict checks and safe repairs of earlier versions: no vertex merging, double-sided face, "
                 "non-manifold, degenerate-face repairs, no cavity handling and no wrap");

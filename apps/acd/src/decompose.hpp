@@ -24,7 +24,8 @@ struct DecomposeArgs {
   std::string mergeScope = "model";  // --merge-scope
   bool noFillHoles = false;
   bool noWrap = false;
-  bool unite = false;  // --union
+  bool noUnion = false;    // --no-union
+  bool unionFlag = false;  // --union: the default since 2026-11-29, still accepted
   bool noRepair = false;
   bool surface = false;
   bool quiet = false;

@@ -39,9 +39,8 @@ struct DecomposeOptions {
   bool wrap = true;              // with repair: wrap what cannot be made a clean solid (false: refuse it)
   /// With repair: shells that pass through, touch or lie in another are also decomposed as the solid
   /// they bound together, their union (acd/algo/shell_union.hpp), and the route with fewer hulls is
-  /// kept. Off by default: the union's rounding depends on the pose, so the result is not yet the
-  /// same under rigid motion (docs/ALGORITHM.md). false: each shell on its own.
-  bool uniteShells = false;
+  /// kept (docs/ALGORITHM.md). false: each shell on its own only, which is faster where shells meet.
+  bool uniteShells = true;
   /// Decompose in a frame computed from the shape (acd/algo/canonical_frame.hpp): the same parts for any
   /// rotation, translation or order of faces. Input vertices come back exactly; the cuts are computed
   /// on coordinates rounded to the frame's grid (2.4e-7 of the model's radius), so a cut face through
