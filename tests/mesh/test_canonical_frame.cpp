@@ -246,18 +246,15 @@ TEST(FaceAlignedFrame, PlanesOfACadPartKeepOneCoordinateInEveryPose) {
       EXPECT_GT(along, 1.0 - 1e-12) << "axis " << k;
     }
     // The vertices with one original x (y, z) share one rounded coordinate in the aligned frame.
+    std::vector<acd::CanonicalMesh> rounded;
+    for (const TriMesh& m : pose) rounded.push_back(acd::canonicalMesh(m, aligned));
     for (int axis = 0; axis < 3; ++axis) {
+      int frameAxis = 0;  // the aligned frame's axis along the part's own `axis`
+      (aligned.rotation * r.col(axis)).cwiseAbs().maxCoeff(&frameAxis);
       std::map<double, std::set<double>> byPlane;  // original coordinate -> rounded coordinates seen
-      for (std::size_t p = 0; p < parts.size(); ++p) {
-        const acd::CanonicalMesh c = acd::canonicalMesh(pose[p], aligned);
-        for (std::size_t v = 0; v < c.source.size(); ++v) {
-          const Vec3 original = parts[p].vertices[c.source[v]];
-          const Eigen::Vector3d axes = aligned.rotation * r.col(axis);
-          int frameAxis = 0;
-          axes.cwiseAbs().maxCoeff(&frameAxis);
-          byPlane[original[axis]].insert(c.mesh.vertices[v][frameAxis]);
-        }
-      }
+      for (std::size_t p = 0; p < parts.size(); ++p)
+        for (std::size_t v = 0; v < rounded[p].source.size(); ++v)
+          byPlane[parts[p].vertices[rounded[p].source[v]][axis]].insert(rounded[p].mesh.vertices[v][frameAxis]);
       for (const auto& [plane, seen] : byPlane) EXPECT_EQ(seen.size(), 1u) << "axis " << axis << " plane " << plane;
     }
     // The plain canonical frame is turned in the plane of the L: x = 1 is not one of its planes.
