@@ -135,6 +135,7 @@ int run(int argc, char** argv) {
     ompl::RNG::setSeed(scenario.seed);
     pre = planner::preprocess(scenario);
     problem = std::make_unique<planner::PlanningProblem>(scenario, pre.freeSpace, pre.openings, pre.solids);
+    problem->useThreading(pre.robotParts, pre.obstacleParts);
   } catch (const planner::ScenarioError& e) {
     return kConsole.fail(kBadInput, e.what());
   }

@@ -16,6 +16,7 @@ AcdValidStateSampler::AcdValidStateSampler(const ompl::base::SpaceInformation* s
       spread_(spread),
       uniformFraction_(settings.uniformFraction),
       alignedFraction_(settings.alignedFraction),
+      threadFraction_(settings.threadFraction),
       tilt_(settings.tilt),
       orientationTries_(static_cast<unsigned>(std::max(1, settings.orientationTries))),
       alignment_(problem.alignment()),
@@ -63,7 +64,13 @@ acd::Vec3 AcdValidStateSampler::pointNearOpening(int which) {
 
 bool AcdValidStateSampler::candidate(ompl::base::State* state) {
   sampler_->sampleUniform(state);  // uniform orientation (and position, kept for the uniform share)
-  if (problem_.openings().empty() || rng_.uniform01() < uniformFraction_) return false;
+  const ThreadingPoses* threading = problem_.threading();
+  if ((problem_.openings().empty() && !threading) || rng_.uniform01() < uniformFraction_) return false;
+  if (threading && (problem_.openings().empty() || rng_.uniform01() < threadFraction_)) {
+    const Pose pose = threading->sample(rng_, tilt_);
+    problem_.setPose(state, pose.position, pose.orientation);
+    return true;
+  }
   const int which = chooseOpening();
   if (alignment_ && rng_.uniform01() < alignedFraction_) {
     const Pose pose = alignment_->sample(which, rng_, tilt_, spread_);

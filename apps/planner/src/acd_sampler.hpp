@@ -1,5 +1,6 @@
 // The ACD sampler: robot reference points on and around the openings between the ACD
-// components of the free space (Lien & Amato 2007, Section 7, "Motion planning", Figure 3).
+// components of the free space (Lien & Amato 2007, Section 7, "Motion planning", Figure 3), and
+// poses that thread a convex part of the robot or of the obstacles through a gap of the other.
 #pragma once
 
 #include "aligned_poses.hpp"
@@ -17,7 +18,9 @@ namespace planner {
 class PlanningProblem;
 
 /// Each attempt draws a candidate: with probability `uniformFraction` a plain uniform state;
-/// otherwise an opening chosen with probability proportional to 1 / max(area, pi spread^2)
+/// otherwise, where the problem has threading poses (a part of the robot that fits a gap between
+/// the obstacles' ACD components, or an obstacle's part that fits a gap of the robot's;
+/// threading_poses.hpp), with probability `threadFraction` one of those; otherwise an opening chosen with probability proportional to 1 / max(area, pi spread^2)
 /// (narrow openings first), and there, for a robot that turns, with probability
 /// `alignedFraction` a pose aligned to the opening (OpeningAlignment::sample, tilt `tilt`),
 /// else a point uniform on the opening's triangles, moved along its normal by a normal deviate
@@ -46,6 +49,7 @@ class AcdValidStateSampler : public ompl::base::ValidStateSampler {
   double spread_;
   double uniformFraction_;
   double alignedFraction_;
+  double threadFraction_;
   double tilt_;
   unsigned orientationTries_;
   const OpeningAlignment* alignment_;                // null: the robot does not turn (a point or a sphere)

@@ -81,6 +81,24 @@ Preprocessing preprocess(const Scenario& scenario) {
   t0 = acd::Clock::now();
   pre.openings = extractOpenings(pre.freeSpace, pre.components);
   pre.openingsSeconds = acd::secondsSince(t0);
+
+  const Robot& robot = scenario.robot;
+  if ((robot.kind == RobotKind::Box || robot.kind == RobotKind::Mesh) && !robot.planar) {
+    t0 = acd::Clock::now();
+    // A gap wider than the robot is no passage for it.
+    const double widest = 2.0 * robot.boundingRadius();
+    pre.robotParts = bodyParts(robot.mesh, {robot.closedMesh()}, scenario.acd.tau, widest);
+    acd::TriMesh triangles;
+    for (const Obstacle& o : scenario.obstacles) {
+      const int base = static_cast<int>(triangles.vertices.size());
+      triangles.vertices.insert(triangles.vertices.end(), o.triangles.vertices.begin(), o.triangles.vertices.end());
+      for (const acd::Face& f : o.triangles.faces) triangles.faces.push_back({f[0] + base, f[1] + base, f[2] + base});
+    }
+    std::vector<acd::TriMesh> solids;
+    for (const NamedSolid& s : pre.solids) solids.push_back(s.mesh);
+    pre.obstacleParts = bodyParts(triangles, solids, scenario.acd.tau, widest);
+    pre.partsSeconds = acd::secondsSince(t0);
+  }
   return pre;
 }
 

@@ -2,6 +2,7 @@
 // over seeded trials; success = start and goal in one roadmap component.
 #pragma once
 
+#include "body_parts.hpp"
 #include "fixed_prm.hpp"
 #include "openings.hpp"
 #include "problem.hpp"
@@ -29,8 +30,13 @@ struct Preprocessing {
   int freeSpacePieces = 1;            // pieces decomposed apart (cut through the cavities)
   std::vector<acd::TriMesh> components;
   std::vector<Opening> openings;
-  double solidSeconds = 0.0, freeSpaceSeconds = 0.0, decomposeSeconds = 0.0, openingsSeconds = 0.0;
-  double totalSeconds() const { return solidSeconds + freeSpaceSeconds + decomposeSeconds + openingsSeconds; }
+  // The parts and gaps of the robot (its frame) and of the obstacles (the world), for the
+  // threading poses; empty for a robot that does not turn in 3D (a point, a sphere, SE(2)).
+  BodyParts robotParts, obstacleParts;
+  double solidSeconds = 0.0, freeSpaceSeconds = 0.0, decomposeSeconds = 0.0, openingsSeconds = 0.0, partsSeconds = 0.0;
+  double totalSeconds() const {
+    return solidSeconds + freeSpaceSeconds + decomposeSeconds + openingsSeconds + partsSeconds;
+  }
 };
 
 /// The obstacles made solids (solid_obstacles.hpp), the free space, its ACD and the openings.

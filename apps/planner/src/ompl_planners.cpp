@@ -38,6 +38,17 @@ namespace {
 
 using Allocator = std::function<ob::PlannerPtr(const ob::SpaceInformationPtr&)>;
 
+/// PRM as Kavraki et al. (1996) grow it, the race's PRM for every sampler: no motion check
+/// between milestones already in one component (OMPL's PRM checks every neighbour, to shorten
+/// paths later). Which milestones end up connected is the same; the first solution comes sooner.
+class KavrakiPRM : public og::PRM {
+ public:
+  explicit KavrakiPRM(const ob::SpaceInformationPtr& si) : PRM(si) {
+    // Runs inside addMilestone, under the graph's lock, as PRM's own solution check does.
+    setConnectionFilter([this](const Vertex& a, const Vertex& b) { return !sameComponent(a, b); });
+  }
+};
+
 template <class P>
 Allocator make() {
   return [](const ob::SpaceInformationPtr& si) -> ob::PlannerPtr { return std::make_shared<P>(si); };
@@ -139,7 +150,7 @@ std::vector<PlannerTimes> raceOmplPlanners(PlanningProblem& problem, const Prepr
   for (const RacePlanner& rp : racePlanners(problem.scenario().race.planners, nullptr)) {
     if (!only.empty() && std::find(only.begin(), only.end(), rp.name) == only.end()) continue;
     if (rp.sampler == "acd" && !withAcd) continue;
-    ob::PlannerPtr p = rp.key.empty() ? std::make_shared<og::PRM>(si) : plannersByKey().at(rp.key).second(si);
+    ob::PlannerPtr p = rp.key.empty() ? std::make_shared<KavrakiPRM>(si) : plannersByKey().at(rp.key).second(si);
     for (const auto& [param, value] : rp.params) p->params().setParam(param, value);
     p->setName(rp.name);
     samplerOf[rp.name] = rp.sampler;

@@ -95,6 +95,11 @@ PlanningProblem::PlanningProblem(const Scenario& scenario, const acd::TriMesh& f
   refuseInvalid("goal", scenario.goal);
 }
 
+void PlanningProblem::useThreading(const BodyParts& robot, const BodyParts& obstacles) {
+  threading_ = std::make_unique<ThreadingPoses>(robot, obstacles);
+  if (threading_->threadings().empty()) threading_.reset();
+}
+
 void PlanningProblem::refuseInvalid(const std::string& which, const Pose& pose) const {
   ob::State* state = which == "start" ? start_ : goal_;
   if (si_->isValid(state)) return;

@@ -8,6 +8,7 @@
 #include "openings.hpp"
 #include "scenario.hpp"
 #include "seeding.hpp"
+#include "threading_poses.hpp"
 
 #include <ompl/base/SpaceInformation.h>
 #include <ompl/base/ValidStateSampler.h>
@@ -51,6 +52,11 @@ class PlanningProblem {
   /// Poses aligned to the openings; null for a robot that does not turn (a point or a sphere).
   const OpeningAlignment* alignment() const { return alignment_.get(); }
 
+  /// Poses that thread a part of the robot through a gap of the obstacles or the reverse;
+  /// null when there are none (useThreading not called, or no part fits a gap).
+  const ThreadingPoses* threading() const { return threading_.get(); }
+  void useThreading(const BodyParts& robot, const BodyParts& obstacles);
+
   /// Std. deviation of the ACD sampler across the openings (length units), as resolved.
   double acdSpread() const { return spread_; }
 
@@ -62,6 +68,7 @@ class PlanningProblem {
   std::vector<Opening> openings_;
   std::unique_ptr<CollisionWorld> world_;
   std::unique_ptr<OpeningAlignment> alignment_;
+  std::unique_ptr<ThreadingPoses> threading_;
   ompl::base::StateSpacePtr space_;
   ompl::base::SpaceInformationPtr si_;
   std::shared_ptr<SeedSource> seeds_;

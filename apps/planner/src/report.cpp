@@ -49,11 +49,33 @@ void printPreprocessing(std::ostream& out, const Preprocessing& pre, double spre
     out << "  opening " << o.a << "-" << o.b << ": centre (" << o.centroid.x() << ", " << o.centroid.y() << ", "
         << o.centroid.z() << "), normal (" << o.normal.x() << ", " << o.normal.y() << ", " << o.normal.z()
         << "), area " << o.area << ", radius " << o.radius << "\n";
+  if (!pre.robotParts.parts.empty() || !pre.obstacleParts.parts.empty()) {
+    out << "parts for the threading poses (" << pre.partsSeconds << " s): robot " << pre.robotParts.parts.size()
+        << " parts, " << pre.robotParts.gaps.size() << " gaps; obstacles " << pre.obstacleParts.parts.size() << " parts, "
+        << pre.obstacleParts.gaps.size() << " gaps\n";
+    for (const auto* body : {&pre.robotParts, &pre.obstacleParts})
+      for (const PartGap& g : body->gaps)
+        out << "  gap in the " << (body == &pre.robotParts ? "robot" : "obstacles") << " between parts " << g.a << " and "
+            << g.b << ": width " << g.width << ", middle (" << g.middle.x() << ", " << g.middle.y() << ", "
+            << g.middle.z() << "), direction (" << g.direction.x() << ", " << g.direction.y() << ", "
+            << g.direction.z() << ")\n";
+  }
   out.unsetf(std::ios::floatfield);
   out << std::setprecision(6);
 }
 
 namespace {
+nlohmann::json gapsJson(const BodyParts& body) {
+  nlohmann::json gaps = nlohmann::json::array();
+  for (const PartGap& g : body.gaps)
+    gaps.push_back({{"parts", {g.a, g.b}},
+                    {"width", g.width},
+                    {"middle", {g.middle.x(), g.middle.y(), g.middle.z()}},
+                    {"direction", {g.direction.x(), g.direction.y(), g.direction.z()}},
+                    {"through", {g.through.x(), g.through.y(), g.through.z()}}});
+  return gaps;
+}
+
 nlohmann::json summaryJson(const SamplerSummary& s) {
   return {{"sampler", s.sampler},        {"samples", s.samples},
           {"trials", s.trials},          {"successes", s.successes},
@@ -89,9 +111,14 @@ std::string resultsJson(const Scenario& scenario, const Preprocessing& pre, doub
                         {"free_space_pieces", pre.freeSpacePieces},
                         {"components", pre.components.size()},
                         {"openings", openings},
+                        {"threading", {{"robot_parts", pre.robotParts.parts.size()},
+                                       {"robot_gaps", gapsJson(pre.robotParts)},
+                                       {"obstacle_parts", pre.obstacleParts.parts.size()},
+                                       {"obstacle_gaps", gapsJson(pre.obstacleParts)}}},
                         {"seconds", {{"solids", pre.solidSeconds}, {"free_space", pre.freeSpaceSeconds},
                                      {"decompose", pre.decomposeSeconds},
-                                     {"openings", pre.openingsSeconds}, {"total", pre.totalSeconds()}}}};
+                                     {"openings", pre.openingsSeconds}, {"parts", pre.partsSeconds},
+                                     {"total", pre.totalSeconds()}}}};
   j["samplers"] = nlohmann::json::array();
   for (const SamplerRuns& r : runs) j["samplers"].push_back(summaryJson(r.summary));
   if (!sweep.empty()) {

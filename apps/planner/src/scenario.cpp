@@ -412,7 +412,8 @@ class Parser {
     }
     if (root["acd"]) {
       const YAML::Node& n = root["acd"];
-      checkKeys(n, "acd", {"tau", "spread", "uniform_fraction", "orientation_tries", "aligned_fraction", "tilt"});
+      checkKeys(n, "acd", {"tau", "spread", "uniform_fraction", "orientation_tries", "aligned_fraction", "tilt",
+                                 "thread_fraction"});
       if (n["orientation_tries"]) s.acd.orientationTries = positiveInt(n["orientation_tries"], "acd.orientation_tries");
       if (n["tau"]) s.acd.tau = positive(n["tau"], "acd.tau");
       if (n["spread"]) s.acd.spread = positive(n["spread"], "acd.spread");
@@ -423,6 +424,10 @@ class Parser {
       if (n["aligned_fraction"]) {
         s.acd.alignedFraction = finite(n["aligned_fraction"], "acd.aligned_fraction");
         if (s.acd.alignedFraction < 0 || s.acd.alignedFraction > 1) fail("'acd.aligned_fraction' must be in [0, 1]");
+      }
+      if (n["thread_fraction"]) {
+        s.acd.threadFraction = finite(n["thread_fraction"], "acd.thread_fraction");
+        if (s.acd.threadFraction < 0 || s.acd.threadFraction > 1) fail("'acd.thread_fraction' must be in [0, 1]");
       }
       if (n["tilt"]) {
         s.acd.tilt = finite(n["tilt"], "acd.tilt");

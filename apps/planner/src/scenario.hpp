@@ -74,6 +74,7 @@ struct AcdSamplerSettings {
   int orientationTries = 20;      // random orientations tried at one free position
   double alignedFraction = 0.5;   // share of the opening samples posed aligned to the opening (turning robots)
   double tilt = 0.1;              // std. deviation of the aligned poses' random tilt, radians
+  double threadFraction = 0.5;    // share of the non-uniform samples that thread a part through a gap (threading_poses.hpp)
 };
 
 /// One planner of the race (--race), as OMPL.app's [planner] section names it ("rrtconnect",
