@@ -91,7 +91,8 @@ def run(args, paths):
     if args.only in ("peers", "all"):
         cp.ensure_peers(paths)
         shard, shards = args.shard
-        jobs = [(label, tool, flags, name, model) for label, tool, flags in PEERS for name, model, _ in models]
+        jobs = [(label, tool, flags, name, model) for label, tool, flags in PEERS for name, model, _ in models
+                if not args.peers or label in args.peers]
         for label, tool, flags, name, model in jobs[shard::shards]:
             if not args.existing:
                 cp.say("%s %s" % (label, name))
@@ -197,6 +198,8 @@ def main():
     ap.add_argument("--out", default=os.path.join(cp.ROOT, "out/compare_assemblies"))
     ap.add_argument("--acd-flags", type=lambda s: s.split(), default=[],
                     help="more flags for every acd run, e.g. --acd-flags=--union (with its own --out)")
+    ap.add_argument("--peers", type=lambda s: s.split(","), default=None,
+                    help="only these peer runs, e.g. coacd-t0.02-s0 (default: all of them)")
     ap.add_argument("--existing", action="store_true", help="publish and score only the peer runs already in the cache (acd always runs)")
     ap.add_argument("--shard", type=lambda s: tuple(int(x) for x in s.split("/")), default=(0, 1),
                     help="I/N: run only every N-th peer run from the I-th")
