@@ -108,6 +108,9 @@ BodyParts bodyParts(const acd::TriMesh& soup, const std::vector<acd::TriMesh>& c
   acd::DecomposeOptions options;
   options.tau = tau;
   options.threads = 1;  // timed as part of the planner's preprocessing
+  // Shells apart: where they touch or overlap they have no gap between them anyway, and their
+  // union (an exact corefinement) would cost more than the rest of the preprocessing.
+  options.uniteShells = false;
   std::vector<acd::TriMesh> hulls;
   auto take = [&](const acd::Decomposition& d) {
     for (const acd::Component& c : d.components) {
@@ -117,8 +120,8 @@ BodyParts bodyParts(const acd::TriMesh& soup, const std::vector<acd::TriMesh>& c
       hulls.push_back(std::move(hull));
     }
   };
-  // The soup as the acd command takes it (repairs, the union of the shells that meet, a wrap only
-  // where nothing else closes it); the closed solids when that fails.
+  // The soup as the acd command takes it, shells apart (repairs, a wrap only where nothing else
+  // closes the surface); the closed solids when that fails.
   const acd::Decomposition whole = acd::decomposeRepaired(soup, options);
   if (whole.status.ok()) {
     take(whole);

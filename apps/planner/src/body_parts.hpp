@@ -42,8 +42,9 @@ struct BodyParts {
 
 /// The ACD components (solid ACD at `tau`, single-threaded) of a body, and the gaps between any
 /// two of them no wider than `widestGap` whose middle lies outside the body. `soup`: the body's
-/// triangles as given, decomposed as the acd command decomposes them (acd::decomposeRepaired:
-/// repairs, the union of shells that meet, a wrap only where nothing else closes the surface);
+/// triangles as given, decomposed as the acd command decomposes them with --no-union
+/// (acd::decomposeRepaired: repairs, a wrap only where nothing else closes the surface; shells
+/// that touch or overlap have no gap between them, so they need not be united);
 /// when that fails, each of `solids` (the body made closed for the free space, whose wrap may
 /// close gaps) on its own.
 BodyParts bodyParts(const acd::TriMesh& soup, const std::vector<acd::TriMesh>& solids, double tau, double widestGap);
