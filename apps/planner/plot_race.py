@@ -34,6 +34,7 @@ def main():
     ax.set_ylabel("runs solved [%]")
     ax.set_ylim(-2, 102)
     ax.set_xscale("symlog", linthresh=0.1)
+    ax.set_xlim(left=0)  # no negative times on the axis
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=7, ncol=2)
     if len(sys.argv) > 3:
