@@ -147,7 +147,9 @@ int run(int argc, char** argv) {
                          "cannot create the output folder " + scenario.outputDir + (ec ? ": " + ec.message() : ""));
   if (pre.openings.empty() && std::find(scenario.samplers.begin(), scenario.samplers.end(), "acd") != scenario.samplers.end())
     std::cerr << "planner: warning: the ACD of the free space has no openings (one component at tau " << scenario.acd.tau
-              << "); the acd sampler falls back to uniform samples\n";
+              << "); the acd sampler "
+              << (problem->threading() ? "draws threading poses and uniform samples only" : "falls back to uniform samples")
+              << "\n";
   if (!quiet && !scenario.robot.solidSummary.empty())
     std::cout << "robot " << scenario.robot.meshPath << ": " << scenario.robot.solidSummary << "\n";
   if (!quiet) planner::printPreprocessing(std::cout, pre, problem->acdSpread());
