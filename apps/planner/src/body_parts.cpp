@@ -1,6 +1,8 @@
 #include "body_parts.hpp"
 
 #include "aligned_poses.hpp"
+#include "fcl_bvh.hpp"
+#include "smallest_rectangle.hpp"
 
 #include <acd/algo/hull.hpp>
 #include <acd/algo/shell_inside.hpp>
@@ -24,53 +26,16 @@ namespace {
 /// direction (two bars side by side); parts end to end (less) leave the gap open on every side.
 constexpr double kThroughSine = 0.5;
 
-/// The smallest-area rectangle around 2D points (rotating calipers on their convex hull): the
-/// unit direction of one of its sides. A bar's square section has no principal axes of its own
-/// (equal variances): its box is found here, not by the eigenvectors.
-Eigen::Vector2d smallestRectangleSide(std::vector<Eigen::Vector2d> points) {
-  std::sort(points.begin(), points.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-  });
-  auto turn = [](const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-    return (a - o).x() * (b - o).y() - (a - o).y() * (b - o).x();
-  };
-  std::vector<Eigen::Vector2d> hull(2 * points.size());
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < points.size(); ++i) {  // Andrew's monotone chain
-    while (k >= 2 && turn(hull[k - 2], hull[k - 1], points[i]) <= 0) --k;
-    hull[k++] = points[i];
-  }
-  for (std::size_t i = points.size() - 1, t = k + 1; i-- > 0;) {
-    while (k >= t && turn(hull[k - 2], hull[k - 1], points[i]) <= 0) --k;
-    hull[k++] = points[i];
-  }
-  hull.resize(k > 1 ? k - 1 : k);
-  Eigen::Vector2d best = Eigen::Vector2d::UnitX();
-  double bestArea = INFINITY;
-  for (std::size_t i = 0; i < hull.size(); ++i) {
-    const Eigen::Vector2d edge = hull[(i + 1) % hull.size()] - hull[i];
-    if (!(edge.norm() > 0)) continue;
-    const Eigen::Vector2d d = edge.normalized(), n(-d.y(), d.x());
-    double lo = INFINITY, hi = -INFINITY, nlo = INFINITY, nhi = -INFINITY;
-    for (const Eigen::Vector2d& p : hull) {
-      lo = std::min(lo, d.dot(p)), hi = std::max(hi, d.dot(p));
-      nlo = std::min(nlo, n.dot(p)), nhi = std::max(nhi, n.dot(p));
-    }
-    const double area = (hi - lo) * (nhi - nlo);
-    if (area < bestArea * (1 - 1e-12)) bestArea = area, best = d;
-  }
-  return best;
-}
-
 BodyPart partOf(const acd::TriMesh& hull) {
   BodyPart p;
   // The long axis by the second moment; across it, the smallest rectangle around the section.
   const Eigen::Matrix3d principal = robotPrincipalAxes(hull, false);
   const acd::Vec3 e0 = principal.col(0), e1 = principal.col(1), e2 = principal.col(2);
-  std::vector<Eigen::Vector2d> section;
-  for (const acd::Vec3& v : hull.vertices) section.emplace_back(e1.dot(v), e2.dot(v));
-  const Eigen::Vector2d side = smallestRectangleSide(section);
-  std::array<acd::Vec3, 3> axes{e0, side.x() * e1 + side.y() * e2, -side.y() * e1 + side.x() * e2};
+  // (A bar's square section has no principal axes of its own: its box is found here.)
+  std::vector<Point2> section;
+  for (const acd::Vec3& v : hull.vertices) section.push_back({e1.dot(v), e2.dot(v)});
+  const Point2 side = smallestRectangle(section).side;
+  std::array<acd::Vec3, 3> axes{e0, side[0] * e1 + side[1] * e2, -side[1] * e1 + side[0] * e2};
   std::array<double, 3> lo, hi;
   for (int i = 0; i < 3; ++i) lo[i] = INFINITY, hi[i] = -INFINITY;
   for (const acd::Vec3& v : hull.vertices)
@@ -87,17 +52,6 @@ BodyPart partOf(const acd::TriMesh& hull) {
   p.centre = centre;
   for (const acd::Vec3& v : hull.vertices) p.radius = std::max(p.radius, (v - p.centre).norm());
   return p;
-}
-
-std::shared_ptr<fcl::BVHModel<fcl::OBBRSSd>> bvhOf(const acd::TriMesh& m) {
-  auto model = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
-  std::vector<fcl::Vector3d> points(m.vertices.begin(), m.vertices.end());
-  std::vector<fcl::Triangle> triangles;
-  for (const acd::Face& f : m.faces) triangles.emplace_back(f[0], f[1], f[2]);
-  model->beginModel();
-  model->addSubModel(points, triangles);
-  model->endModel();
-  return model;
 }
 
 }  // namespace
@@ -126,13 +80,9 @@ BodyParts bodyParts(const acd::TriMesh& soup, const std::vector<acd::TriMesh>& c
   if (whole.status.ok()) {
     take(whole);
   } else {
-    body.usedSolids = true;
     for (const acd::TriMesh& solid : closedSolids) {
       const acd::Decomposition d = acd::decompose(solid, options);
-      if (d.status.ok())
-        take(d);
-      else
-        ++body.unresolved;
+      if (d.status.ok()) take(d);  // a solid that cannot be decomposed gives no parts
     }
   }
   // The hulls' surfaces, in world coordinates (identity transforms: FCL's nearest points need no

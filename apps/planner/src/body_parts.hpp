@@ -36,8 +36,6 @@ struct PartGap {
 struct BodyParts {
   std::vector<BodyPart> parts;
   std::vector<PartGap> gaps;   // sorted by width, then parts
-  int unresolved = 0;          // solids whose decomposition failed (they give no parts)
-  bool usedSolids = false;     // the soup could not be decomposed: the closed solids were
 };
 
 /// The ACD components (solid ACD at `tau`, single-threaded) of a body, and the gaps between any

@@ -88,15 +88,10 @@ Preprocessing preprocess(const Scenario& scenario) {
     // A gap wider than the robot is no passage for it.
     const double widest = 2.0 * robot.boundingRadius();
     pre.robotParts = bodyParts(robot.mesh, {robot.closedMesh()}, scenario.acd.tau, widest);
-    acd::TriMesh triangles;
-    for (const Obstacle& o : scenario.obstacles) {
-      const int base = static_cast<int>(triangles.vertices.size());
-      triangles.vertices.insert(triangles.vertices.end(), o.triangles.vertices.begin(), o.triangles.vertices.end());
-      for (const acd::Face& f : o.triangles.faces) triangles.faces.push_back({f[0] + base, f[1] + base, f[2] + base});
-    }
-    std::vector<acd::TriMesh> solids;
+    std::vector<acd::TriMesh> triangles, solids;
+    for (const Obstacle& o : scenario.obstacles) triangles.push_back(o.triangles);
     for (const NamedSolid& s : pre.solids) solids.push_back(s.mesh);
-    pre.obstacleParts = bodyParts(triangles, solids, scenario.acd.tau, widest);
+    pre.obstacleParts = bodyParts(acd::concatenate(triangles), solids, scenario.acd.tau, widest);
     pre.partsSeconds = acd::secondsSince(t0);
   }
   return pre;

@@ -5,12 +5,14 @@
 
 namespace planner {
 
-FixedSamplePRM::FixedSamplePRM(const ompl::base::SpaceInformationPtr& si, unsigned neighbors) : PRM(si) {
+KavrakiPRM::KavrakiPRM(const ompl::base::SpaceInformationPtr& si) : PRM(si) {
+  // Runs inside addMilestone, under the graph's lock, as PRM's own solution check does.
+  setConnectionFilter([this](const Vertex& a, const Vertex& b) { return !sameComponent(a, b); });
+}
+
+FixedSamplePRM::FixedSamplePRM(const ompl::base::SpaceInformationPtr& si, unsigned neighbors) : KavrakiPRM(si) {
   setNearestNeighbors<ompl::NearestNeighborsLinear>();
   setMaxNearestNeighbors(neighbors);
-  // Kavraki et al.'s rule: no motion check between milestones already in one component. Which
-  // milestones end up connected is exactly the same; most motion checks in open rooms go.
-  setConnectionFilter([this](const Vertex& a, const Vertex& b) { return !sameComponent(a, b); });
 }
 
 RoadmapOutcome FixedSamplePRM::grow(const ompl::base::State* start, const ompl::base::State* goal, int samples,

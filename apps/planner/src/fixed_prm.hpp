@@ -20,7 +20,16 @@ struct RoadmapOutcome {
   std::shared_ptr<ompl::geometric::PathGeometric> path;
 };
 
-class FixedSamplePRM : public ompl::geometric::PRM {
+/// PRM as Kavraki et al. (1996) grow it: no motion check between milestones already in one
+/// component. Which milestones end up connected is the same as with every connection (OMPL's
+/// PRM checks every neighbour, to shorten paths later); the first solution comes sooner. The
+/// race's PRM for every sampler (ompl_planners.hpp).
+class KavrakiPRM : public ompl::geometric::PRM {
+ public:
+  explicit KavrakiPRM(const ompl::base::SpaceInformationPtr& si);
+};
+
+class FixedSamplePRM : public KavrakiPRM {
  public:
   /// `neighbors`: k of the k-nearest connection strategy. Nearest neighbours by linear scan
   /// (exact and deterministic at these sizes). Pairs already in one component are not

@@ -1,5 +1,7 @@
 #include "ompl_planners.hpp"
 
+#include "fixed_prm.hpp"
+
 #include <ompl/geometric/SimpleSetup.h>
 #include <ompl/geometric/planners/est/EST.h>
 #include <ompl/geometric/planners/fmt/FMT.h>
@@ -37,17 +39,6 @@ namespace ob = ompl::base;
 namespace {
 
 using Allocator = std::function<ob::PlannerPtr(const ob::SpaceInformationPtr&)>;
-
-/// PRM as Kavraki et al. (1996) grow it, the race's PRM for every sampler: no motion check
-/// between milestones already in one component (OMPL's PRM checks every neighbour, to shorten
-/// paths later). Which milestones end up connected is the same; the first solution comes sooner.
-class KavrakiPRM : public og::PRM {
- public:
-  explicit KavrakiPRM(const ob::SpaceInformationPtr& si) : PRM(si) {
-    // Runs inside addMilestone, under the graph's lock, as PRM's own solution check does.
-    setConnectionFilter([this](const Vertex& a, const Vertex& b) { return !sameComponent(a, b); });
-  }
-};
 
 template <class P>
 Allocator make() {
