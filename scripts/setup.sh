@@ -21,7 +21,7 @@ CORE_PKGS=(
     libcgal-dev libeigen3-dev libgmp-dev libmpfr-dev libboost-dev libtbb-dev
     libcli11-dev nlohmann-json3-dev libgtest-dev googletest
     libcgal-demo time jq python3
-    libtet1.5-dev libompl-dev libfcl-dev libyaml-cpp-dev libassimp-dev
+    libtet1.5-dev libompl-dev libfcl-dev libyaml-cpp-dev libassimp-dev libglpk-dev
     libboost-filesystem-dev libboost-serialization-dev libboost-graph-dev
     python3-matplotlib python3-networkx
     python3-distributed python3-tqdm chromium python3-pil

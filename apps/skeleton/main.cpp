@@ -48,6 +48,9 @@ int main(int argc, char** argv) {
       "--exact-max-nodes", p.exactMaxNodes,
       "exact graph edit distance when both graphs have at most this many nodes; bipartite approximation above");
   app.add_option("--max-expansions", p.maxExpansions, "search budget of the exact graph edit distance");
+  app.add_option("--mip-max-columns", p.mipMaxColumns,
+                 "above --exact-max-nodes, solve the edit distance as a binary program (GLPK) when it has at most "
+                 "this many variables (n1*n2 + m1*m2); 0 = never");
   app.add_option("--mcf-runs", p.mcfRuns, "run CGAL's skeletonization this many times per model (node counts vary)");
   app.add_option("--tubes", p.tubeRadius,
                  "also write each skeleton as thin tubes (NAME.*_skeleton_tubes.off) of this radius, as a fraction "

@@ -3,6 +3,7 @@
 #include <acd/algo/stopwatch.hpp>
 
 #include "assignment.hpp"
+#include "ged_mip.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -333,6 +334,7 @@ GedResult bipartiteOneWay(const Graph& a, const Graph& b) {
       (ca.graph.nodeCount() < a.nodeCount() || cb.graph.nodeCount() < b.nodeCount())) {
     GedOptions inner;
     inner.maxExpansions = 200000;  // a start only: no need to prove the small map optimal
+    inner.mipMaxColumns = 0;       // nor by the binary program
     const GedResult small = graphEditDistance(ca.graph, cb.graph, inner);
     std::vector<int> lifted = liftThroughChains(ca, cb, small.mapping, a.nodeCount());
     const int cost = improveMapping(a, b, lifted, kicksFor(a, b));
@@ -394,9 +396,15 @@ GedResult exactGed(const Graph& a, const Graph& b, long long maxExpansions) {
 }
 
 GedResult graphEditDistance(const Graph& a, const Graph& b, const GedOptions& options) {
-  if (a.nodeCount() <= options.exactMaxNodes && b.nodeCount() <= options.exactMaxNodes)
-    return exactGed(a, b, options.maxExpansions);
-  return bipartiteGed(a, b);
+  const auto fits = [&](int limit) { return a.nodeCount() <= limit && b.nodeCount() <= limit; };
+  GedResult r = fits(options.exactMaxNodes) ? exactGed(a, b, options.maxExpansions) : bipartiteGed(a, b);
+  const long long columns = 1LL * a.nodeCount() * b.nodeCount() + 1LL * a.edges.size() * b.edges.size();
+  if (!r.exact && columns <= options.mipMaxColumns) {
+    const double before = r.seconds;
+    r = mipGed(a, b, r, options.mipMaxBranchNodes);
+    r.seconds += before;
+  }
+  return r;
 }
 
 }  // namespace skeleton

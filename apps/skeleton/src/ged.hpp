@@ -29,13 +29,16 @@ namespace skeleton {
 struct GedOptions {
   int exactMaxNodes = 12;             // exact when both graphs have at most this many nodes
   long long maxExpansions = 20000000; // search budget of the exact method; beyond it the best path found is reported
+  long long mipMaxColumns = 4000;     // larger graphs whose program (ged_mip.hpp) has at most this many variables:
+                                      // n1 n2 + m1 m2 (contracted skeletons of 40 nodes have about 3000)
+  int mipMaxBranchNodes = 5000;       // its search budget
 };
 
 struct GedResult {
   int distance = 0;         // cost of the best edit path found (the distance when `exact`)
   int lowerBound = 0;       // proven lower bound (== distance when `exact`)
   bool exact = false;       // distance proven optimal (exact search finished, or the bounds met)
-  std::string method;       // "exact" or "bipartite"
+  std::string method;       // "exact" (branch and bound), "mip" (binary program) or "bipartite"
   int assignmentCost = 0;   // bipartite: cost of the Riesen-Bunke path before local search
   std::vector<int> mapping; // node of the first graph -> node of the second, -1 = deleted
   long long expansions = 0; // search nodes expanded by the exact method
@@ -58,7 +61,8 @@ GedResult bipartiteGed(const Graph& a, const Graph& b);
 /// improved map, never worse than the given one.
 int improveMapping(const Graph& a, const Graph& b, std::vector<int>& mapping, int kicks = 300);
 
-/// Exact when both graphs are small enough (options.exactMaxNodes), bipartite otherwise.
+/// Exact when both graphs are small enough (options.exactMaxNodes); else the bipartite path,
+/// proven or improved by the binary program when it has at most options.mipMaxColumns variables.
 GedResult graphEditDistance(const Graph& a, const Graph& b, const GedOptions& options = {});
 
 }  // namespace skeleton

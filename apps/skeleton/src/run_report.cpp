@@ -41,7 +41,7 @@ int writeRunFiles(const RunParameters& p, const std::vector<Model>& models, bool
   const std::string& outDir = p.outDir;
   const double tau = p.tau, tubeRadius = p.tubeRadius;
   const int exactMaxNodes = p.exactMaxNodes, mcfRuns = p.mcfRuns, threads = p.threads;
-  const long long maxExpansions = p.maxExpansions;
+  const long long maxExpansions = p.maxExpansions, mipMaxColumns = p.mipMaxColumns;
   const bool noMcf = p.noMcf;
   const Model& original = models[0];
   // Files: per model the two skeletons as JSON and OBJ; report.json for the whole run.
@@ -50,6 +50,7 @@ int writeRunFiles(const RunParameters& p, const std::vector<Model>& models, bool
   report["parameters"] = {{"tau", tau},
                           {"exact_max_nodes", exactMaxNodes},
                           {"max_expansions", maxExpansions},
+                          {"mip_max_columns", mipMaxColumns},
                           {"mcf_runs", noMcf ? 0 : mcfRuns},
                           {"cost_model", "node insertion/deletion 1, edge insertion/deletion 1, substitution 0"}};
   report["models"] = json::array();

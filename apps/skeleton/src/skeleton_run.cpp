@@ -204,6 +204,7 @@ void compareSkeletons(const RunParameters& p, std::vector<Model>& models) {
   GedOptions ged;
   ged.exactMaxNodes = p.exactMaxNodes;
   ged.maxExpansions = p.maxExpansions;
+  ged.mipMaxColumns = p.mipMaxColumns;
   Model& first = models[0];
   if (first.hasSecond) {
     // The noise floor of the CGAL skeleton: the same mesh, skeletonized twice.

@@ -147,12 +147,21 @@ TEST(Ged, ExactUpToTwelveNodesWithinBudget) {
 }
 
 TEST(Ged, LargeGraphsUseTheBipartiteMethod) {
-  const GedResult r = graphEditDistance(path(30), star(29));
+  const GedResult r = graphEditDistance(path(50), star(49));
   EXPECT_EQ(r.method, "bipartite");
   EXPECT_EQ(r.exact, r.lowerBound == r.distance);
   // Same counts: at least 2 (degree sequences differ); a path keeps at most 2 star edges.
   EXPECT_GE(r.lowerBound, 2);
-  EXPECT_GE(r.distance, 2 * (29 - 2));
+  EXPECT_GE(r.distance, 2 * (49 - 2));
+}
+
+TEST(Ged, MidSizedGraphsUseTheBinaryProgram) {
+  // A path keeps at most 2 of a star's edges and every node can be matched: 2 * (29 - 2).
+  const GedResult r = graphEditDistance(path(30), star(29));
+  EXPECT_EQ(r.method, "mip");
+  EXPECT_EQ(r.exact, r.lowerBound == r.distance);
+  EXPECT_GE(r.lowerBound, 2);
+  EXPECT_EQ(r.distance, 2 * (29 - 2));
 }
 
 TEST(Ged, BudgetExhaustedIsReportedNotHidden) {

@@ -1,6 +1,7 @@
 // Agreement with networkx's exact graph_edit_distance (Debian's python3-networkx) on random
-// small graphs. Skipped only when networkx cannot be imported.
+// small graphs, for the branch and bound and the binary program. Skipped only when networkx cannot be imported.
 #include "ged.hpp"
+#include "ged_mip.hpp"
 
 #include <gtest/gtest.h>
 
@@ -67,6 +68,9 @@ TEST(Networkx, ExactDistanceAgreesOnRandomGraphs) {
     const GedResult ours = exactGed(a, b);
     ASSERT_TRUE(ours.exact);
     EXPECT_EQ(ours.distance, reference) << encode(a) << " | " << encode(b);
+    const GedResult program = mipGed(a, b, bipartiteGed(a, b));
+    EXPECT_TRUE(program.exact);
+    EXPECT_EQ(program.distance, reference) << encode(a) << " | " << encode(b);
     ++compared;
     nonZero += reference > 0;
   }
