@@ -401,7 +401,7 @@ GedResult graphEditDistance(const Graph& a, const Graph& b, const GedOptions& op
   const long long columns = 1LL * a.nodeCount() * b.nodeCount() + 1LL * a.edges.size() * b.edges.size();
   if (!r.exact && columns <= options.mipMaxColumns) {
     const double before = r.seconds;
-    r = mipGed(a, b, r, options.mipMaxBranchNodes);
+    r = mipGed(a, b, r, options.mipMaxBranchNodes, options.mipMaxIterations);
     r.seconds += before;
   }
   return r;

@@ -29,9 +29,10 @@ namespace skeleton {
 struct GedOptions {
   int exactMaxNodes = 12;             // exact when both graphs have at most this many nodes
   long long maxExpansions = 20000000; // search budget of the exact method; beyond it the best path found is reported
-  long long mipMaxColumns = 4000;     // larger graphs whose program (ged_mip.hpp) has at most this many variables:
-                                      // n1 n2 + m1 m2 (contracted skeletons of 40 nodes have about 3000)
-  int mipMaxBranchNodes = 5000;       // its search budget
+  long long mipMaxColumns = 3000;     // larger graphs whose program (ged_mip.hpp) has at most this many variables:
+                                      // n1 n2 + m1 m2 (the table's contracted CGAL skeletons: at most 2665)
+  int mipMaxBranchNodes = 1000;       // its search budget (the table's CGAL skeletons need at most 191 nodes
+  int mipMaxIterations = 100000;      // and 50 000 simplex iterations)
 };
 
 struct GedResult {

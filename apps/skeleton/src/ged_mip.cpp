@@ -26,6 +26,7 @@ struct Search {
   std::vector<double> seedPoint;  // the seed path as a point of the program, GLPK-indexed
   bool seeded = false;
   int maxBranchNodes = 0;
+  int maxIterations = 0;
   double bestBound = std::numeric_limits<double>::infinity();  // on matched nodes + edges
 };
 
@@ -39,7 +40,8 @@ void callback(glp_tree* tree, void* info) {
     search.bestBound = std::min(search.bestBound, glp_ios_node_bound(tree, node));
   int active = 0, current = 0, total = 0;
   glp_ios_tree_size(tree, &active, &current, &total);
-  if (total > search.maxBranchNodes) glp_ios_terminate(tree);
+  if (total > search.maxBranchNodes || glp_get_it_cnt(glp_ios_get_prob(tree)) > search.maxIterations)
+    glp_ios_terminate(tree);
 }
 
 struct ProblemDeleter {
@@ -48,7 +50,7 @@ struct ProblemDeleter {
 
 }  // namespace
 
-GedResult mipGed(const Graph& a, const Graph& b, const GedResult& seed, int maxBranchNodes) {
+GedResult mipGed(const Graph& a, const Graph& b, const GedResult& seed, int maxBranchNodes, int maxIterations) {
   const auto start = acd::Clock::now();
   const Columns col{a.nodeCount(), b.nodeCount(), static_cast<int>(a.edges.size()), static_cast<int>(b.edges.size())};
   const int total = col.n1 + col.n2 + col.m1 + col.m2;
@@ -111,6 +113,7 @@ GedResult mipGed(const Graph& a, const Graph& b, const GedResult& seed, int maxB
   // The seed as a point of the program: its matched nodes, and the edges whose ends it matches.
   Search search;
   search.maxBranchNodes = maxBranchNodes;
+  search.maxIterations = maxIterations;
   search.seedPoint.assign(col.count() + 1, 0.0);
   for (int i = 0; i < col.n1; ++i)
     if (i < static_cast<int>(seed.mapping.size()) && seed.mapping[i] >= 0) search.seedPoint[col.x(i, seed.mapping[i])] = 1.0;
@@ -125,6 +128,7 @@ GedResult mipGed(const Graph& a, const Graph& b, const GedResult& seed, int maxB
   glp_smcp simplex;
   glp_init_smcp(&simplex);
   simplex.msg_lev = GLP_MSG_OFF;
+  simplex.it_lim = maxIterations;
   if (glp_simplex(lp.get(), &simplex) != 0 || glp_get_status(lp.get()) != GLP_OPT) return r;
   // The relaxation alone bounds the matching from above.
   search.bestBound = glp_get_obj_val(lp.get());

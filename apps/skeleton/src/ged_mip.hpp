@@ -13,8 +13,9 @@
 //   for every edge f = {k, l} and node i:  sum of y[e][f] over edges e at i <= x[i][k] + x[i][l],
 // so an edge is matched only onto an edge whose two ends are the images of its own.
 // The search starts from a known edit path (the bipartite answer) and stops after a number of
-// branch-and-bound nodes; the best bound of the open nodes then still gives a proven lower bound.
-// A node budget rather than a time limit: the same graphs give the same answer on any machine.
+// branch-and-bound nodes or simplex iterations; the best bound of the open nodes then still gives a
+// proven lower bound. Counts rather than a time limit: the same graphs give the same answer on any
+// machine.
 #pragma once
 
 #include "ged.hpp"
@@ -22,8 +23,10 @@
 namespace skeleton {
 
 /// Exact distance by the program above, started from `seed` (an edit path: its mapping and
-/// distance) and stopped after `maxBranchNodes` branch-and-bound nodes. `exact` when the search
+/// distance) and stopped after `maxBranchNodes` branch-and-bound nodes or `maxIterations` simplex
+/// iterations in all (the relaxation included). `exact` when the search
 /// finished or its bound met the best path; `lowerBound` is never below seed.lowerBound.
-GedResult mipGed(const Graph& a, const Graph& b, const GedResult& seed, int maxBranchNodes = 20000);
+GedResult mipGed(const Graph& a, const Graph& b, const GedResult& seed, int maxBranchNodes = 1000,
+                 int maxIterations = 100000);
 
 }  // namespace skeleton

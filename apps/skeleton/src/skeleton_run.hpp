@@ -26,7 +26,7 @@ struct RunParameters {
   double tau = 0.1;
   int exactMaxNodes = 12, mcfRuns = 1, threads = 0;
   double tubeRadius = 0.0;
-  long long maxExpansions = 20000000, mipMaxColumns = 4000;
+  long long maxExpansions = 20000000, mipMaxColumns = 3000;
   bool noMcf = false, quiet = false;
 };
 

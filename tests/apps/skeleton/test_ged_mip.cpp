@@ -78,13 +78,15 @@ TEST(GedMip, StoppedSearchStillBracketsTheDistance) {
   const GedResult reference = exactGed(a, b);
   ASSERT_TRUE(reference.exact);
   const GedResult seed = bipartiteGed(a, b);
-  const GedResult r = mipGed(a, b, seed, 0);  // stopped at the first branch
-  EXPECT_LE(r.lowerBound, reference.distance);
-  EXPECT_GE(r.lowerBound, seed.lowerBound);
-  EXPECT_GE(r.distance, reference.distance);
-  EXPECT_LE(r.distance, seed.distance);
-  EXPECT_EQ(r.exact, r.lowerBound == r.distance);
-  EXPECT_EQ(editPathCost(a, b, r.mapping), r.distance);
+  // Stopped at the first branch, then after one simplex iteration.
+  for (const GedResult& r : {mipGed(a, b, seed, 0), mipGed(a, b, seed, 1000, 1)}) {
+    EXPECT_LE(r.lowerBound, reference.distance);
+    EXPECT_GE(r.lowerBound, seed.lowerBound);
+    EXPECT_GE(r.distance, reference.distance);
+    EXPECT_LE(r.distance, seed.distance);
+    EXPECT_EQ(r.exact, r.lowerBound == r.distance);
+    EXPECT_EQ(editPathCost(a, b, r.mapping), r.distance);
+  }
 }
 
 TEST(GedMip, EmptySideCostsEverything) {
