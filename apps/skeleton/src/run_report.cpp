@@ -99,6 +99,10 @@ int writeRunFiles(const RunParameters& p, const std::vector<Model>& models, bool
         entry["mcf"] = graphSummary(m.mcf, m.mcfContracted);
         entry["mcf"]["seconds_per_run"] = m.mcfSeconds / std::max<std::size_t>(1, m.mcfRunNodes.size());
         entry["mcf"]["run_node_counts"] = m.mcfRunNodes;
+        if (!m.mcfRunPairsD2.empty()) {
+          entry["mcf"]["run_pairs_D2"] = json::array();  // original run i against this mesh's run j, i major
+          for (const GedResult& r : m.mcfRunPairsD2) entry["mcf"]["run_pairs_D2"].push_back(toJson(r));
+        }
         if (m.hasSecond) {
           entry["mcf"]["run2_vs_run1_D"] = toJson(m.runD);
           entry["mcf"]["run2_vs_run1_D2"] = toJson(m.runD2);

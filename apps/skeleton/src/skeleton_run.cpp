@@ -184,6 +184,7 @@ int decomposeModels(const RunParameters& p, std::vector<Model>& models) {
           break;
         }
         m.mcfRunNodes.push_back(s.graph.nodeCount());
+        m.mcfRunContracted.push_back(contractDegreeTwo(s.graph));
         m.mcfSeconds += s.seconds;
         if (run == 0) {
           m.mcfOk = true;
@@ -234,6 +235,9 @@ void compareSkeletons(const RunParameters& p, std::vector<Model>& models) {
     if (m.mcfOk && original.mcfOk) {
       m.mcfD = graphEditDistance(m.mcf, original.mcf, ged);
       m.mcfD2 = graphEditDistance(m.mcfContracted, original.mcfContracted, ged);
+      if (m.mcfRunContracted.size() > 1 || original.mcfRunContracted.size() > 1)
+        for (const Graph& before : original.mcfRunContracted)
+          for (const Graph& after : m.mcfRunContracted) m.mcfRunPairsD2.push_back(graphEditDistance(after, before, ged));
     }
   }
 }

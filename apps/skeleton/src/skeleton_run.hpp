@@ -45,6 +45,7 @@ struct Model {
   bool mcfOk = false;
   std::string mcfError;
   std::vector<int> mcfRunNodes;  // node counts of repeated MCF runs
+  std::vector<Graph> mcfRunContracted;  // every run's skeleton, degree-2 nodes contracted
   double decomposeSeconds = 0, mcfSeconds = 0;
   GedResult d, d2, mcfD, mcfD2;
   GedResult componentsD, componentsD2;  // of the component skeletons
@@ -53,6 +54,7 @@ struct Model {
   Graph mcfSecond;               // second CGAL run of the same mesh, for the run-to-run distance
   bool hasSecond = false;
   GedResult runD, runD2;         // CGAL skeleton, run 1 against run 2 of the same mesh
+  std::vector<GedResult> mcfRunPairsD2;  // D2 of every run of this mesh against every run of the original
 };
 
 /// The ranges of the parameters; kOk or kBadParameter after a message.
@@ -65,7 +67,8 @@ int makeDeformations(const RunParameters& p, std::vector<Model>& models);
 /// Each model's decomposition (rigid-motion invariant), its ACD skeleton and CGAL's.
 int decomposeModels(const RunParameters& p, std::vector<Model>& models);
 /// The graph edit distances of every deformed model's skeletons to the original's (and of
-/// CGAL's second run to its first: its noise floor).
+/// CGAL's second run to its first: its noise floor; and CGAL's D2 over every pair of runs, since
+/// its skeleton differs from run to run).
 void compareSkeletons(const RunParameters& p, std::vector<Model>& models);
 
 }  // namespace skeleton

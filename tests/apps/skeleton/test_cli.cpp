@@ -47,10 +47,15 @@ TEST(SkeletonCli, DumbbellWithTwoDeformations) {
       for (const char* d : {"D", "D2"}) {
         const json& g = m[which][d];
         EXPECT_LE(g["lower_bound"].get<int>(), g["distance"].get<int>());
-        EXPECT_TRUE(g["method"] == "exact" || g["method"] == "bipartite");
+        EXPECT_TRUE(g["method"] == "exact" || g["method"] == "mip" || g["method"] == "bipartite");
         EXPECT_EQ(g["exact"].get<bool>(), g["lower_bound"] == g["distance"]);
       }
     }
+    // CGAL's D2 for every pair of runs (2 of the original by 2 of this mesh), run 1 by run 1 first.
+    const json& pairs = m["mcf"]["run_pairs_D2"];
+    ASSERT_EQ(pairs.size(), 4u);
+    EXPECT_EQ(pairs[0]["distance"], m["mcf"]["D2"]["distance"]);
+    for (const json& g : pairs) EXPECT_LE(g["lower_bound"].get<int>(), g["distance"].get<int>());
   }
   // The written skeleton matches the report.
   const json skel = json::parse(acdtest::slurp(out + "/original.acd_skeleton.json"));
