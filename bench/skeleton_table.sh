@@ -5,7 +5,8 @@
 # whole limb chain (a wide bend at the root, then a bend of the end), a rigid motion with
 # non-uniform scaling, and a rigid motion alone (a control: the ACD skeleton should not change at
 # all); the ACD skeleton of parts, the skeleton of the components themselves, and CGAL's
-# mean-curvature-flow skeleton (three runs per mesh, since its size varies run to run).
+# mean-curvature-flow skeleton (three runs per mesh, since it differs run to run: its D2 is given for
+# run 1 against run 1 and over all nine pairs of runs, with verdicts against both).
 # The deformations were fixed before any result was looked at; a limb is named by the direction
 # of its tip (see the figures in docs/SKELETON.md).
 # Writes OUT/<model>/ (skeletons, deformed meshes, report.json) and OUT/table.md.
