@@ -396,8 +396,8 @@ GedResult exactGed(const Graph& a, const Graph& b, long long maxExpansions) {
 }
 
 GedResult graphEditDistance(const Graph& a, const Graph& b, const GedOptions& options) {
-  const auto fits = [&](int limit) { return a.nodeCount() <= limit && b.nodeCount() <= limit; };
-  GedResult r = fits(options.exactMaxNodes) ? exactGed(a, b, options.maxExpansions) : bipartiteGed(a, b);
+  const bool small = a.nodeCount() <= options.exactMaxNodes && b.nodeCount() <= options.exactMaxNodes;
+  GedResult r = small ? exactGed(a, b, options.maxExpansions) : bipartiteGed(a, b);
   const long long columns = 1LL * a.nodeCount() * b.nodeCount() + 1LL * a.edges.size() * b.edges.size();
   if (!r.exact && columns <= options.mipMaxColumns) {
     const double before = r.seconds;

@@ -44,6 +44,16 @@ void callback(glp_tree* tree, void* info) {
     glp_ios_terminate(tree);
 }
 
+/// Per node, the indices of the edges at it.
+std::vector<std::vector<int>> edgesAtNodes(const Graph& g) {
+  std::vector<std::vector<int>> at(g.nodeCount());
+  for (int e = 0; e < static_cast<int>(g.edges.size()); ++e) {
+    at[g.edges[e].first].push_back(e);
+    at[g.edges[e].second].push_back(e);
+  }
+  return at;
+}
+
 struct ProblemDeleter {
   void operator()(glp_prob* p) const { glp_delete_prob(p); }
 };
@@ -84,30 +94,21 @@ GedResult mipGed(const Graph& a, const Graph& b, const GedResult& seed, int maxB
     for (int i = 0; i < col.n1; ++i) terms.push_back({col.x(i, k), 1.0});
     addRow(terms, 1.0);
   }
-  for (int e = 0; e < col.m1; ++e) {
-    const auto [i, j] = a.edges[e];
+  const std::vector<std::vector<int>> edgesAt1 = edgesAtNodes(a), edgesAt2 = edgesAtNodes(b);
+  for (int e = 0; e < col.m1; ++e)  // edge e = {i, j} onto edges at k only if i or j goes to k
     for (int k = 0; k < col.n2; ++k) {
-      std::vector<std::pair<int, double>> terms;
-      for (int f = 0; f < col.m2; ++f)
-        if (b.edges[f].first == k || b.edges[f].second == k) terms.push_back({col.y(e, f), 1.0});
-      if (terms.empty()) continue;
-      terms.push_back({col.x(i, k), -1.0});
-      terms.push_back({col.x(j, k), -1.0});
+      if (edgesAt2[k].empty()) continue;
+      std::vector<std::pair<int, double>> terms{{col.x(a.edges[e].first, k), -1.0}, {col.x(a.edges[e].second, k), -1.0}};
+      for (int f : edgesAt2[k]) terms.push_back({col.y(e, f), 1.0});
       addRow(terms, 0.0);
     }
-  }
-  for (int f = 0; f < col.m2; ++f) {
-    const auto [k, l] = b.edges[f];
+  for (int f = 0; f < col.m2; ++f)  // and the same from the second graph's side
     for (int i = 0; i < col.n1; ++i) {
-      std::vector<std::pair<int, double>> terms;
-      for (int e = 0; e < col.m1; ++e)
-        if (a.edges[e].first == i || a.edges[e].second == i) terms.push_back({col.y(e, f), 1.0});
-      if (terms.empty()) continue;
-      terms.push_back({col.x(i, k), -1.0});
-      terms.push_back({col.x(i, l), -1.0});
+      if (edgesAt1[i].empty()) continue;
+      std::vector<std::pair<int, double>> terms{{col.x(i, b.edges[f].first), -1.0}, {col.x(i, b.edges[f].second), -1.0}};
+      for (int e : edgesAt1[i]) terms.push_back({col.y(e, f), 1.0});
       addRow(terms, 0.0);
     }
-  }
   glp_load_matrix(lp.get(), static_cast<int>(value.size()) - 1, rowIndex.data(), colIndex.data(), value.data());
 
   // The seed as a point of the program: its matched nodes, and the edges whose ends it matches.
@@ -115,14 +116,15 @@ GedResult mipGed(const Graph& a, const Graph& b, const GedResult& seed, int maxB
   search.maxBranchNodes = maxBranchNodes;
   search.maxIterations = maxIterations;
   search.seedPoint.assign(col.count() + 1, 0.0);
-  for (int i = 0; i < col.n1; ++i)
-    if (i < static_cast<int>(seed.mapping.size()) && seed.mapping[i] >= 0) search.seedPoint[col.x(i, seed.mapping[i])] = 1.0;
-  for (int e = 0; e < col.m1; ++e) {
-    const int k = seed.mapping.empty() ? -1 : seed.mapping[a.edges[e].first];
-    const int l = seed.mapping.empty() ? -1 : seed.mapping[a.edges[e].second];
-    if (k < 0 || l < 0) continue;
-    for (int f = 0; f < col.m2; ++f)
-      if (std::minmax(k, l) == std::minmax(b.edges[f].first, b.edges[f].second)) search.seedPoint[col.y(e, f)] = 1.0;
+  if (static_cast<int>(seed.mapping.size()) == col.n1) {
+    for (int i = 0; i < col.n1; ++i)
+      if (seed.mapping[i] >= 0) search.seedPoint[col.x(i, seed.mapping[i])] = 1.0;
+    for (int e = 0; e < col.m1; ++e) {
+      const int k = seed.mapping[a.edges[e].first], l = seed.mapping[a.edges[e].second];
+      if (k < 0 || l < 0) continue;
+      for (int f : edgesAt2[k])
+        if (b.edges[f].first == l || b.edges[f].second == l) search.seedPoint[col.y(e, f)] = 1.0;
+    }
   }
 
   glp_smcp simplex;

@@ -189,7 +189,7 @@ int decomposeModels(const RunParameters& p, std::vector<Model>& models) {
         if (run == 0) {
           m.mcfOk = true;
           m.mcf = std::move(s.graph);
-          m.mcfContracted = contractDegreeTwo(m.mcf);
+          m.mcfContracted = m.mcfRunContracted.front();
         } else if (run == 1 && &m == &models[0]) {
           m.mcfSecond = std::move(s.graph);
           m.hasSecond = true;
@@ -236,8 +236,10 @@ void compareSkeletons(const RunParameters& p, std::vector<Model>& models) {
       m.mcfD = graphEditDistance(m.mcf, original.mcf, ged);
       m.mcfD2 = graphEditDistance(m.mcfContracted, original.mcfContracted, ged);
       if (m.mcfRunContracted.size() > 1 || original.mcfRunContracted.size() > 1)
-        for (const Graph& before : original.mcfRunContracted)
-          for (const Graph& after : m.mcfRunContracted) m.mcfRunPairsD2.push_back(graphEditDistance(after, before, ged));
+        for (std::size_t i = 0; i < original.mcfRunContracted.size(); ++i)
+          for (std::size_t j = 0; j < m.mcfRunContracted.size(); ++j)  // run 1 against run 1 is mcfD2
+            m.mcfRunPairsD2.push_back(i + j == 0 ? m.mcfD2
+                                                 : graphEditDistance(m.mcfRunContracted[j], original.mcfRunContracted[i], ged));
     }
   }
 }
