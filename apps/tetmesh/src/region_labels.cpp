@@ -10,6 +10,9 @@ namespace tetmesh {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+/// A face's plane supports its region when no corner lies farther beyond it than this share of
+/// the region's box diagonal (rounding of a true face plane is some 1e-16 of it).
+constexpr double kPlaneSlack = 1e-9;
 
 }  // namespace
 
@@ -23,14 +26,21 @@ RegionLabels::RegionLabels(const std::vector<acd::TriMesh>& regions, const std::
     gap_ = std::max(gap_, r.gap);
     r.lower = Vec3::Constant(kInf);
     r.upper = Vec3::Constant(-kInf);
+    for (const Vec3& v : mesh.vertices) r.lower = r.lower.cwiseMin(v), r.upper = r.upper.cwiseMax(v);
+    const double slack = kPlaneSlack * (r.upper - r.lower).norm();
     for (const acd::Face& f : mesh.faces) {
       const Vec3& a = mesh.vertices[f[0]];
       const Vec3 n = (mesh.vertices[f[1]] - a).cross(mesh.vertices[f[2]] - a);
       const double length = n.norm();
       if (!(length > 0)) continue;  // a flat face bounds nothing its neighbours do not
-      r.planes.push_back({n / length, n.dot(a) / length});
+      const Plane plane{n / length, n.dot(a) / length};
+      // A face of nearly collinear corners (a CAD edge's points on the hull) has a normal of
+      // rounding noise: its plane may cut the region in half (fandisk at tau 0.2 lost two of
+      // its four regions whole). A face plane of a convex region has every corner behind it.
+      bool supporting = true;
+      for (const Vec3& v : mesh.vertices) supporting = supporting && plane.distance(v) <= slack;
+      if (supporting) r.planes.push_back(plane);
     }
-    for (const Vec3& v : mesh.vertices) r.lower = r.lower.cwiseMin(v), r.upper = r.upper.cwiseMax(v);
     if (r.planes.size() < 4) r.planes.clear();  // empty or degenerate: never a label
     r.width = r.planes.empty() ? 0.0 : kInf;
     for (const Plane& plane : r.planes) {

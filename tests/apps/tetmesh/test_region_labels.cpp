@@ -65,3 +65,25 @@ TEST(RegionLabels, TheOrderOfTheRegionsOnlyRenamesThem) {
       }
   EXPECT_GT(checked, 3000);
 }
+
+TEST(RegionLabels, AFaceOfNearlyCollinearCornersDoesNotCutTheRegion) {
+  // A unit box whose hull mesh also carries a sliver face on the edge (0,0,0)-(1,0,0): its middle
+  // corner lies 1e-13 off the edge, so its normal is rounding noise, here (0, 1, -1)/sqrt(2).
+  // Taken as a plane it would cut the box along its diagonal y = z (fandisk's regions lost
+  // whole components this way).
+  acd::TriMesh box = acd::shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1));
+  const int a = static_cast<int>(box.vertices.size());
+  box.vertices.push_back(Vec3(0, 0, 0));
+  box.vertices.push_back(Vec3(0.5, 1e-13, 1e-13));
+  box.vertices.push_back(Vec3(1, 0, 0));
+  for (const acd::Face& sliver : {acd::Face{a, a + 1, a + 2}, acd::Face{a, a + 2, a + 1}}) {
+    acd::TriMesh region = box;
+    region.faces.push_back(sliver);  // either orientation
+    const RegionLabels labels({region}, 0.0);
+    EXPECT_EQ(labels(Vec3(0.5, 0.2, 0.8)), 1);
+    EXPECT_EQ(labels(Vec3(0.5, 0.8, 0.2)), 1);
+    EXPECT_EQ(labels(Vec3(0.5, 0.5, 0.5)), 1);
+    EXPECT_EQ(labels(Vec3(0.5, 0.5, 1.1)), 0);
+    EXPECT_EQ(labels(Vec3(-0.1, 0.5, 0.5)), 0);
+  }
+}
