@@ -56,7 +56,7 @@ def above2(q):
     hist = q["radius_edge_histogram"]
     return 100.0 * sum(b["tets"] for b in hist if b["upto"] is None or b["upto"] > 2.0) / max(1, q["tets"])
 ratio = f"{h['tets'] / o['tets']:.2f}" if ok else "–"
-mesh_s = s["tetgen"] + s["refine"]
+mesh_s = s["tetgen"] + s["refine"] + s.get("coarsen", 0.0)
 total = sum(s.values())
 print(f"| {m} | {t} | {len(j['components'])} | {pair(h['tets'], o.get('tets', 0), '{}')} | {ratio} | "
       f"{pair(h['min_dihedral_deg'], o.get('min_dihedral_deg', 0))} | {pair(h['max_dihedral_deg'], o.get('max_dihedral_deg', 0), '{:.1f}')} | "

@@ -143,8 +143,13 @@ int main(int argc, char** argv) {
                  "Keep the hull regions' edges whose faces turn by more than DEG degrees exactly (refine; CAD parts); "
                  "0: all edges are followed within the facet distance")
       ->capture_default_str();
+  app.add_flag("--no-coarsen", [&a](std::int64_t) { a.options.coarsen = false; },
+               "Coarse refinement: keep the refinement's mesh as it is (no edge collapses that coarsen it)");
+  app.add_option("--surface-distance", a.options.surfaceDistance,
+                 "Refinement: its surface follows the hull regions within S tau (default 0.5 when coarsened, "
+                 "else 0.25); the collapses may take it the rest of tau from them");
   app.add_option("--quality", a.options.tetgen.radiusEdge,
-                 "Radius-edge bound of the tets (e.g. 1.5); 0: the coarse mesh (refine: bound 3; complex: TetGen's "
+                 "Radius-edge bound of the tets (e.g. 1.5); 0: the coarse mesh (refine: bound 2, then coarsened; complex: TetGen's "
                  "constrained Delaunay mesh, no refinement)")
       ->capture_default_str();
   app.add_option("--max-volume", a.options.tetgen.maxVolume, "Largest tet volume, input units; 0: none");

@@ -34,6 +34,9 @@ int checkArgs(Args& a, TetFormat& format) {
   if (!(a.options.sharpAngle >= 0 && a.options.sharpAngle < 180)) {
     return kConsole.failf(kBadParameter, "--sharp must be an angle in degrees in [0, 180), got %g", a.options.sharpAngle);
   }
+  if (a.options.surfaceDistance != -1 && !(a.options.surfaceDistance > 0 && std::isfinite(a.options.surfaceDistance))) {
+    return kConsole.failf(kBadParameter, "--surface-distance must be a positive share of tau, got %g", a.options.surfaceDistance);
+  }
   if (a.options.simplify != -1 && a.options.simplify != 0 && a.options.simplify < 4) {
     return kConsole.failf(kBadParameter, "--simplify must be at least 4 (a tetrahedron), got %d", a.options.simplify);
   }

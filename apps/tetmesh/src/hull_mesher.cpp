@@ -33,6 +33,14 @@ constexpr double kFacetDistancePerTau = 0.25;
 /// Radius-edge bound of the coarse refinement: the 2 from which Delaunay refinement is proven to
 /// end; slivers, which a radius-edge bound does not see, are the sliver passes' work.
 constexpr double kCoarseRadiusEdge = 2.0;
+/// Coarse mode: edge collapses keep every tet's dihedral angles within [this, 180 - this]: the
+/// angle CGAL's exudation works towards, twice the 5 degrees a sliver is counted below.
+constexpr double kCoarseDihedral = 10.0;
+/// Coarse mode: the refinement is only where the collapses start, and follows the regions within
+/// this share of tau; the collapses may take the surface the rest of kCoarseSurfacePerTau from
+/// the refinement's surface points: in all, as far as the hulls themselves may stand off the model.
+constexpr double kCoarseFacetDistancePerTau = 0.5;
+constexpr double kCoarseSurfacePerTau = 1.0;
 /// With `--sharp`: the largest protecting ball along a kept edge, in tau (normalised units).
 constexpr double kEdgeSizePerTau = 1.0;
 /// The last slivers' corners may move by this share of the facet distance (the surface follows
@@ -156,9 +164,14 @@ void meshRefined(const acd::TriMesh& model, const std::vector<acd::TriMesh>& exa
   r.regions = r.hulls;
   const double unit = 1.0 / r.decomposition.normalization.scale;  // tau's unit in input lengths
   RefineOptions& o = r.refineOptions;
-  o.facetDistance = kFacetDistancePerTau * options.tau * unit;
-  o.closedGap = o.facetDistance;
   const bool quality = options.tetgen.radiusEdge > 0;
+  // Clipped components are asked for their volume: the refinement's closer surface, not coarsened.
+  const bool coarsen = !quality && options.coarsen && !options.clip;
+  const double share = options.surfaceDistance > 0 ? options.surfaceDistance
+                       : coarsen                   ? kCoarseFacetDistancePerTau
+                                                   : kFacetDistancePerTau;
+  o.facetDistance = share * options.tau * unit;
+  o.closedGap = o.facetDistance;
   o.radiusEdge = quality ? options.tetgen.radiusEdge : kCoarseRadiusEdge;
   o.sliverMove = kSliverMoveShare * o.facetDistance;
   o.featureAngle = options.sharpAngle;
@@ -179,6 +192,15 @@ void meshRefined(const acd::TriMesh& model, const std::vector<acd::TriMesh>& exa
   }
   r.mesh = std::move(r.refine.mesh);
   r.refine.mesh = {};
+  if (coarsen) {
+    CoarsenOptions& c = r.coarsenOptions;
+    c.minDihedral = kCoarseDihedral;
+    c.maxDistance = std::max(0.0, kCoarseSurfacePerTau * options.tau * unit - o.facetDistance);
+    const auto t0 = acd::Clock::now();
+    r.coarsening = coarsenMesh(r.mesh, c);
+    r.coarsened = true;
+    r.times.coarsen = acd::secondsSince(t0);
+  }
 }
 
 }  // namespace

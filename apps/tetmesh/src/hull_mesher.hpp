@@ -4,6 +4,7 @@
 #pragma once
 
 #include "hull_complex.hpp"
+#include "mesh_coarsening.hpp"
 #include "mesh_quality.hpp"
 #include "region_refiner.hpp"
 #include "tetgen_run.hpp"
@@ -28,6 +29,8 @@ struct HullMeshOptions {
   int simplify = -1;         // > 0: hulls with at most this many vertices (>= 4); 0: exact; -1: the mesher's default
   bool clip = false;         // Refine only: mesh the components themselves (the regions clipped to the model)
   double sharpAngle = 0.0;   // Refine only, degrees: the regions' edges turning more are kept exactly; 0: all rounded
+  bool coarsen = true;       // Refine, coarse mode only: edge collapses that keep the tets well shaped
+  double surfaceDistance = -1;  // Refine only, share of tau: the surface follows the regions within it; < 0: the default
   bool merge = false;        // the decomposition's merge pass; off keeps hulls apart along cut planes
   int threads = 0;           // decomposition threads, 0 = all cores
   double tolerance = 1e-8;   // complex snapping tolerance (relative); raised 10x if TetGen refuses
@@ -41,7 +44,7 @@ struct HullMeshOptions {
 };
 
 struct HullMeshTimes {
-  double decompose = 0, hulls = 0, complex = 0, tetgen = 0, refine = 0, quality = 0;  // wall seconds
+  double decompose = 0, hulls = 0, complex = 0, tetgen = 0, refine = 0, coarsen = 0, quality = 0;  // wall seconds
 };
 
 struct HullMeshResult {
@@ -71,6 +74,9 @@ struct HullMeshResult {
   // Mesher::Refine
   RefineOptions refineOptions;           // as used (input units)
   RefineResult refine;                   // its mesh moved to `mesh`
+  bool coarsened = false;                // the refined mesh was coarsened
+  CoarsenOptions coarsenOptions;
+  CoarsenResult coarsening;
   double modelVolume = 0.0;              // input units
   double hullsVolume = 0.0;              // volume of the union of the hull regions
   HullMeshTimes times;

@@ -161,6 +161,12 @@ void printReport(const Args& a, TetFormat format, const HullMeshResult& r, const
     std::printf("                 %d tets below %g deg after the exudation, %d after moving their corners; "
                 "%d times a region missed was meshed again finer\n",
                 r.refine.slivers.before, kSliverDegrees, r.refine.slivers.after, r.refine.regionsRefined);
+    if (r.coarsened)
+      std::printf("  coarsened      %d edge collapses: %d -> %d tets, %d -> %d vertices; dihedral angles kept in [%g, %g] deg,\n"
+                  "                 surface points moved off by at most %.3g (allowed %.3g)\n",
+                  r.coarsening.collapses, r.coarsening.tetsBefore, r.coarsening.tetsAfter, r.coarsening.pointsBefore,
+                  r.coarsening.pointsAfter, r.coarsenOptions.minDihedral, 180.0 - r.coarsenOptions.minDihedral,
+                  r.coarsening.farthest, r.coarsenOptions.maxDistance);
     if (o.featureAngle > 0)
       std::printf("                 sharp edges (turning > %g deg) kept: %d segments, %d dropped as too close to others\n",
                   o.featureAngle, r.refine.features, r.refine.featuresDropped);
@@ -178,12 +184,12 @@ void printReport(const Args& a, TetFormat format, const HullMeshResult& r, const
   printColumns("radius-edge median", fmt("%.3f", r.quality.medianRadiusEdge), col(fmt("%.3f", direct.quality.medianRadiusEdge)), two);
   printColumns("radius-edge max", fmt("%.3f", r.quality.maxRadiusEdge), col(fmt("%.3f", direct.quality.maxRadiusEdge)), two);
   printColumns("tets below 5 deg", std::to_string(r.quality.slivers), col(std::to_string(direct.quality.slivers)), two);
-  printColumns("meshing time (s)", fmt("%.3f", r.times.tetgen + r.times.refine), col(fmt("%.3f", direct.tetgen.seconds)), two);
+  printColumns("meshing time (s)", fmt("%.3f", r.times.tetgen + r.times.refine + r.times.coarsen), col(fmt("%.3f", direct.tetgen.seconds)), two);
   std::printf("  radius-edge    %s\n", histogramLine(r.quality).c_str());
   if (two && direct.status.ok()) std::printf("  (original)     %s\n", histogramLine(direct.quality).c_str());
   if (two && !direct.status.ok()) std::printf("  original model not meshed: %s\n", direct.status.message.c_str());
-  std::printf("  time (s)       decompose %.3f, hulls %.3f, complex %.3f, TetGen %.3f, refinement %.3f, quality %.3f\n",
-              r.times.decompose, r.times.hulls, r.times.complex, r.times.tetgen, r.times.refine, r.times.quality);
+  std::printf("  time (s)       decompose %.3f, hulls %.3f, complex %.3f, TetGen %.3f, refinement %.3f, coarsening %.3f, quality %.3f\n",
+              r.times.decompose, r.times.hulls, r.times.complex, r.times.tetgen, r.times.refine, r.times.coarsen, r.times.quality);
   if (!a.out.empty()) {
     std::printf("  wrote         ");
     for (const std::string& f : tetOutputFiles(a.out, format)) std::printf(" %s", f.c_str());
@@ -230,6 +236,16 @@ int writeJsonReport(const Args& a, const HullMeshResult& r, const DirectMeshResu
                 {"sharp_segments", r.refine.features},
                 {"sharp_segments_dropped", r.refine.featuresDropped},
                 {"label_queries", r.refine.labelQueries}}},
+              {"coarsening",
+               {{"done", r.coarsened},
+                {"collapses", r.coarsening.collapses},
+                {"tets_before", r.coarsening.tetsBefore},
+                {"tets_after", r.coarsening.tetsAfter},
+                {"vertices_before", r.coarsening.pointsBefore},
+                {"vertices_after", r.coarsening.pointsAfter},
+                {"min_dihedral_deg", r.coarsenOptions.minDihedral},
+                {"max_distance", r.coarsenOptions.maxDistance},
+                {"farthest", r.coarsening.farthest}}},
               {"merge", a.options.merge},
               {"simplify", a.options.simplify},
               {"simplify_used", r.simplifyUsed},
@@ -258,6 +274,7 @@ int writeJsonReport(const Args& a, const HullMeshResult& r, const DirectMeshResu
                 {"complex", r.times.complex},
                 {"tetgen", r.times.tetgen},
                 {"refine", r.times.refine},
+                {"coarsen", r.times.coarsen},
                 {"quality", r.times.quality}}}};
     if (a.compare) {
       if (direct.status.ok())
