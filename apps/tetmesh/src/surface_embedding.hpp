@@ -4,8 +4,9 @@
 //
 // Points are located through a uniform grid over the tets' bounding boxes. A point that lies
 // in no tet (a model vertex can sit a rounding distance outside the union of the hull
-// regions; with simplified or clipped hulls it can be farther) gets the closest tet and the
-// barycentric coordinates of its closest point in that tet; how many and how far is reported.
+// regions; a coarse mesh cuts the hulls' curves by up to tau) is written in the closest tet, with
+// its own barycentric coordinates there (some negative): the tet's affine map carries it, so it
+// stays put at rest and moves rigidly with a rigid tet; how many and how far is reported.
 #pragma once
 
 #include "tet_mesh.hpp"
@@ -18,7 +19,7 @@ namespace tetmesh {
 struct SurfaceEmbedding {
   std::vector<int> tet;                       // per point: the tet it is written in
   std::vector<std::array<double, 4>> weights; // per point: barycentric coordinates, sum 1
-  int outside = 0;                  // points in no tet, given the closest tet (clamped weights)
+  int outside = 0;                  // points in no tet, written in the closest tet (weights outside [0, 1])
   double maxOutsideDistance = 0.0;  // farthest of those from the mesh, input units
   double seconds = 0.0;             // wall time of grid and location
 };

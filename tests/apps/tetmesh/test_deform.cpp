@@ -149,7 +149,7 @@ TEST(SurfaceEmbed, TheRefinedMeshFollowsTheModelWithinTau) {
               read.mesh.vertices.size(), e.maxOutsideDistance, tau);
 }
 
-TEST(SurfaceEmbed, PointsOutsideGetTheClosestTetAndTheirDistance) {
+TEST(SurfaceEmbed, PointsOutsideAreCarriedByTheClosestTet) {
   const TetMesh bar = barMesh(4.0, 0.05);
   ASSERT_FALSE(bar.tets.empty());
   const std::vector<Vec3> points = {
@@ -163,12 +163,26 @@ TEST(SurfaceEmbed, PointsOutsideGetTheClosestTetAndTheirDistance) {
   const SurfaceEmbedding e = embedPoints(bar, points);
   EXPECT_EQ(e.outside, 3);
   EXPECT_NEAR(e.maxOutsideDistance, (Vec3(100, 100, 100) - Vec3(4, 1, 1)).norm(), 1e-9);
+  // At rest every point stays where it is, inside or not; the closest tet holds the closest point.
+  const std::vector<Vec3> closest = {Vec3(4, 0.5, 0.5), Vec3(0, 0, 0.3), Vec3(4, 1, 1), points[3], points[4], points[5]};
   const std::vector<Vec3> at = interpolate(e, bar, bar.points);
-  const std::vector<Vec3> expected = {Vec3(4, 0.5, 0.5), Vec3(0, 0, 0.3), Vec3(4, 1, 1), points[3], points[4], points[5]};
   for (std::size_t i = 0; i < points.size(); ++i) {
-    for (double w : e.weights[i]) EXPECT_GE(w, -kInsideTolerance) << "point " << i;
-    EXPECT_LE((at[i] - expected[i]).norm(), 1e-12) << "point " << i << ": " << at[i].transpose();
+    EXPECT_LE((at[i] - points[i]).norm(), 1e-9 * (1 + points[i].norm())) << "point " << i << ": " << at[i].transpose();
+    const auto& q = bar.tets[e.tet[i]];
+    const Vec3 c = closestPointInTet(points[i], bar.points[q[0]], bar.points[q[1]], bar.points[q[2]], bar.points[q[3]]);
+    EXPECT_LE((c - closest[i]).norm(), 1e-9) << "point " << i;
+    double sum = 0.0;
+    for (double w : e.weights[i]) sum += w;
+    EXPECT_NEAR(sum, 1.0, 1e-12);
   }
+  // A rigid motion of the mesh moves every point rigidly, the far ones too.
+  const Eigen::Matrix3d q = Eigen::AngleAxisd(0.7, Vec3(1, -2, 0.5).normalized()).toRotationMatrix();
+  const Vec3 shift(0.3, -1.0, 2.0);
+  std::vector<Vec3> moved;
+  for (const Vec3& p : bar.points) moved.push_back(q * p + shift);
+  const std::vector<Vec3> after = interpolate(e, bar, moved);
+  for (std::size_t i = 0; i < points.size(); ++i)
+    EXPECT_LE((after[i] - (q * points[i] + shift)).norm(), 1e-9 * (1 + points[i].norm())) << "point " << i;
 }
 
 TEST(ArapDeform, ConstraintsMovedRigidlyMoveEverythingRigidly) {
