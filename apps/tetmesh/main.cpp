@@ -145,6 +145,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_flag("--no-coarsen", [&a](std::int64_t) { a.options.coarsen = false; },
                "Coarse refinement: keep the refinement's mesh as it is (no edge collapses that coarsen it)");
+  app.add_flag("--keep-volume", a.options.keepVolume,
+               "Coarse refinement: no collapse takes a component's tets below the component's own volume");
   app.add_option("--surface-distance", a.options.surfaceDistance,
                  "Refinement: its surface follows the hull regions within S tau (default 0.5 when coarsened, "
                  "else 0.25); the collapses may take it the rest of tau from them");

@@ -196,6 +196,9 @@ void meshRefined(const acd::TriMesh& model, const std::vector<acd::TriMesh>& exa
     CoarsenOptions& c = r.coarsenOptions;
     c.minDihedral = kCoarseDihedral;
     c.maxDistance = std::max(0.0, kCoarseSurfacePerTau * options.tau * unit - o.facetDistance);
+    // On request the coarse mesh keeps at least each component's own volume (the hulls hold it).
+    if (options.keepVolume)
+      for (const acd::Component& comp : r.decomposition.components) c.minVolume.push_back(acd::signedVolume(comp.mesh));
     const auto t0 = acd::Clock::now();
     r.coarsening = coarsenMesh(r.mesh, c);
     r.coarsened = true;

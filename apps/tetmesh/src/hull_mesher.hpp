@@ -30,6 +30,7 @@ struct HullMeshOptions {
   bool clip = false;         // Refine only: mesh the components themselves (the regions clipped to the model)
   double sharpAngle = 0.0;   // Refine only, degrees: the regions' edges turning more are kept exactly; 0: all rounded
   bool coarsen = true;       // Refine, coarse mode only: edge collapses that keep the tets well shaped
+  bool keepVolume = false;   // the collapses keep each component's tets at or above its own volume
   double surfaceDistance = -1;  // Refine only, share of tau: the surface follows the regions within it; < 0: the default
   bool merge = false;        // the decomposition's merge pass; off keeps hulls apart along cut planes
   int threads = 0;           // decomposition threads, 0 = all cores

@@ -37,6 +37,11 @@ class Coarsener {
   Coarsener(TetMesh& mesh, const CoarsenOptions& options) : m_(mesh), o_(options) {
     const int n = static_cast<int>(m_.points.size());
     alive_.assign(m_.tets.size(), 1);
+    for (int t = 0; t < static_cast<int>(m_.tets.size()); ++t) {
+      const int l = m_.labels[t];
+      if (l >= static_cast<int>(labelVolume_.size())) labelVolume_.resize(l + 1, 0.0);
+      labelVolume_[l] += tetVolume(m_, t);
+    }
     stars_.resize(n);
     for (int t = 0; t < static_cast<int>(m_.tets.size()); ++t)
       for (int v : m_.tets[t]) stars_[v].push_back(t);
@@ -238,6 +243,11 @@ class Coarsener {
     return true;
   }
 
+  double volumeOf(const std::array<int, 4>& q) const {
+    const Vec3 &p0 = m_.points[q[0]], &p1 = m_.points[q[1]], &p2 = m_.points[q[2]], &p3 = m_.points[q[3]];
+    return (p1 - p0).cross(p2 - p0).dot(p3 - p0) / 6.0;
+  }
+
   bool wellShaped(const std::array<int, 4>& q) const {
     const Vec3 &p0 = m_.points[q[0]], &p1 = m_.points[q[1]], &p2 = m_.points[q[2]], &p3 = m_.points[q[3]];
     if (!((p1 - p0).cross(p2 - p0).dot(p3 - p0) > 0)) return false;
@@ -267,8 +277,10 @@ class Coarsener {
     if (!linkHolds(a, b, facesA, facesB)) return false;
     const std::vector<int> star = aliveStar(a);
     std::vector<int> moved, removed;
+    std::map<int, double> change;  // label -> volume change
     for (int t : star) {
       const auto& q = m_.tets[t];
+      change[m_.labels[t]] -= tetVolume(m_, t);
       if (std::find(q.begin(), q.end(), b) != q.end()) {
         removed.push_back(t);
         continue;
@@ -276,7 +288,12 @@ class Coarsener {
       std::array<int, 4> made = q;
       *std::find(made.begin(), made.end(), a) = b;
       if (!wellShaped(made)) return false;
+      change[m_.labels[t]] += volumeOf(made);
       moved.push_back(t);
+    }
+    for (const auto& [label, delta] : change) {
+      const double floor = label >= 1 && label <= static_cast<int>(o_.minVolume.size()) ? o_.minVolume[label - 1] : 0.0;
+      if (delta < 0 && labelVolume_[label] + delta < floor) return false;
     }
     // The surface: new triangles turn little, and every starting surface point near the change
     // stays within maxDistance of its patch.
@@ -305,6 +322,7 @@ class Coarsener {
       return false;
     }
     farthest_ = std::max(farthest_, far);
+    for (const auto& [label, delta] : change) labelVolume_[label] += delta;
     for (int t : moved) stars_[b].push_back(t);
     stars_[a].clear();
     for (const Kept& k : kept_[a]) kept_[b].push_back(k);
@@ -365,6 +383,7 @@ class Coarsener {
   using Kept = std::pair<Vec3, Patch>;
   std::vector<std::vector<Kept>> kept_;  // starting surface points each vertex stands for, by patch
   double farthest_ = 0.0;
+  std::vector<double> labelVolume_;  // by label
 };
 
 }  // namespace

@@ -12,6 +12,7 @@
 //    every tet that a leaves is positive;
 //  * it stays well shaped: every tet made has its dihedral angles within [minDihedral,
 //    180 - minDihedral];
+//  * no label's volume drops below its floor (the component's own volume, say);
 //  * the surface stays put: every surface point the mesh started with (its surface vertices)
 //    lies within maxDistance of the patch it belongs to after the collapse, and no patch
 //    triangle turns by more than maxTurnDegrees.
@@ -20,12 +21,17 @@
 
 #include "tet_mesh.hpp"
 
+#include <vector>
+
 namespace tetmesh {
 
 struct CoarsenOptions {
   double minDihedral = 10.0;     // degrees; tets made stay within [this, 180 - this]
   double maxDistance = 0.0;      // input units; > 0
   double maxTurnDegrees = 30.0;  // a patch triangle's normal turns by at most this
+  /// Per label (index label - 1): no collapse takes the label's tets below this volume (when it
+  /// had more); empty: no bound.
+  std::vector<double> minVolume;
 };
 
 struct CoarsenResult {

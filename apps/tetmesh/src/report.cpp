@@ -245,6 +245,7 @@ int writeJsonReport(const Args& a, const HullMeshResult& r, const DirectMeshResu
                 {"vertices_after", r.coarsening.pointsAfter},
                 {"min_dihedral_deg", r.coarsenOptions.minDihedral},
                 {"max_distance", r.coarsenOptions.maxDistance},
+                {"keep_volume", !r.coarsenOptions.minVolume.empty()},
                 {"farthest", r.coarsening.farthest}}},
               {"merge", a.options.merge},
               {"simplify", a.options.simplify},

@@ -183,3 +183,21 @@ TEST(MeshCoarsening, NoDistanceAllowedLeavesTheSurfaceAlone) {
   EXPECT_EQ(sorted(m), sorted(start));
   expectConforming(m);
 }
+
+TEST(MeshCoarsening, AVolumeFloorIsKept) {
+  // Collapses on a sphere cut its curve and lose volume; with a floor at 99.5 % of the refined
+  // volume they stop there.
+  const TetMesh start = refined({acd::shapes::icosphere(Vec3(0, 0, 0), 1.0, 4)}, 0.02);
+  const double before = volume(start, 1);
+  CoarsenOptions o;
+  o.maxDistance = 0.05;
+  TetMesh free = start;
+  coarsenMesh(free, o);
+  EXPECT_LT(volume(free, 1), 0.995 * before);  // without the floor it goes below
+  o.minVolume = {0.995 * before};
+  TetMesh held = start;
+  coarsenMesh(held, o);
+  EXPECT_GE(volume(held, 1), 0.995 * before);
+  EXPECT_LT(held.tets.size(), start.tets.size());
+  expectConforming(held);
+}

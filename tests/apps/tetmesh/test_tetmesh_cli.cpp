@@ -65,11 +65,35 @@ TEST(TetmeshCli, BadInputIsAClearError) {
   EXPECT_NE(r.err.find("--simplify"), std::string::npos) << r.err;
   r = runTool(TETMESH_CLI, acdtest::quote(dir / "box.off") + " --quality 0.5", dir);
   EXPECT_EQ(r.code, 3);
+  r = runTool(TETMESH_CLI, acdtest::quote(dir / "box.off") + " --surface-distance 0", dir);
+  EXPECT_EQ(r.code, 3);
+  EXPECT_NE(r.err.find("--surface-distance"), std::string::npos) << r.err;
   r = runTool(TETMESH_CLI, acdtest::quote(dir / "box.off") + " --format stl -o x.stl", dir);
   EXPECT_EQ(r.code, 3);
   r = runTool(TETMESH_CLI, acdtest::quote(dir / "box.off") + " -o /nonexistent-dir/x.vtk", dir);
   EXPECT_EQ(r.code, 5);
   EXPECT_NE(r.err.find("/nonexistent-dir/x.vtk"), std::string::npos) << r.err;
+}
+
+TEST(TetmeshCli, TheCoarseningReachesTheReport) {
+  // A sphere (curved hulls: the refinement): coarsened by default, not with --no-coarsen, nor in
+  // the quality mode; --keep-volume is recorded.
+  TempDir dir("tetmesh_cli_coarsen");
+  ASSERT_TRUE(acd::writeMesh(dir / "ball.off", acd::shapes::icosphere(acd::Vec3(0, 0, 0), 1.0, 3)).ok());
+  auto json = [&](const std::string& flags) {
+    const auto r = runTool(TETMESH_CLI, acdtest::quote(dir / "ball.off") + " " + flags + " --json " + acdtest::quote(dir / "r.json"), dir);
+    EXPECT_EQ(r.code, 0) << r.err;
+    return nlohmann::json::parse(acdtest::slurp(dir / "r.json"));
+  };
+  const nlohmann::json coarse = json("");
+  EXPECT_TRUE(coarse["coarsening"]["done"].get<bool>());
+  EXPECT_LT(coarse["coarsening"]["tets_after"].get<int>(), coarse["coarsening"]["tets_before"].get<int>());
+  EXPECT_EQ(coarse["coarsening"]["tets_after"], coarse["hull_mesh"]["tets"]);
+  EXPECT_LE(coarse["coarsening"]["farthest"].get<double>(), coarse["coarsening"]["max_distance"].get<double>());
+  EXPECT_EQ(coarse["hull_mesh"]["tets_below_5_deg"], 0);
+  EXPECT_FALSE(json("--no-coarsen")["coarsening"]["done"].get<bool>());
+  EXPECT_FALSE(json("--quality 1.5")["coarsening"]["done"].get<bool>());
+  EXPECT_TRUE(json("--keep-volume")["coarsening"]["keep_volume"].get<bool>());
 }
 
 TEST(TetmeshCli, SelfIntersectingModelIsNotGivenToTetGen) {
