@@ -60,7 +60,7 @@ class Coarsener {
       if (patches.size() == 1) {
         kind_[v] = oneFan(v, faces) ? Kind::OnPatch : Kind::Fixed;
       } else {
-        // On a rim: exactly two rim edges, and each patch meets v in one fan between them.
+        // On a rim: exactly two rim edges (else a corner, or a tangle the collapses leave alone).
         const std::vector<int> rim = rimNeighbours(v, faces);
         kind_[v] = rim.size() == 2 ? Kind::OnRim : Kind::Fixed;
       }
@@ -71,30 +71,12 @@ class Coarsener {
     CoarsenResult r;
     r.tetsBefore = static_cast<int>(m_.tets.size());
     r.pointsBefore = static_cast<int>(m_.points.size());
-    using Entry = std::tuple<double, int, int>;  // length, then both ends: a fixed order
-    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
-    auto push = [&](int v) {
-      for (int w : neighbours(v)) queue.emplace((m_.points[v] - m_.points[w]).norm(), std::min(v, w), std::max(v, w));
-    };
     std::vector<char> gone(m_.points.size(), 0);
-    // An edge refused now may pass once its neighbours have gone: a few passes over all edges.
-    for (int pass = 0, before = -1; pass < kPasses && r.collapses != before; ++pass) {
-    before = r.collapses;
-    for (int v = 0; v < static_cast<int>(m_.points.size()); ++v)
-      if (!gone[v]) push(v);
-    while (!queue.empty()) {
-      const auto [length, u, w] = queue.top();
-      queue.pop();
-      if (gone[u] || gone[w] || (m_.points[u] - m_.points[w]).norm() != length || !adjacent(u, w)) continue;
-      // The vertex with fewer ties to the surface goes; on equal terms the higher number.
-      const bool uFirst = rank(u) < rank(w) || (rank(u) == rank(w) && u > w);
-      const int a = uFirst ? u : w, b = uFirst ? w : u;
-      if (!collapse(a, b) && !(rank(a) == rank(b) && collapse(b, a))) continue;
-      const int removed = stars_[a].empty() ? a : b, kept = removed == a ? b : a;
-      gone[removed] = 1;
-      ++r.collapses;
-      push(kept);
-    }
+    // An edge refused now may pass once its neighbours have gone: a few sweeps over all edges.
+    for (int pass = 0; pass < kPasses; ++pass) {
+      const int collapses = sweep(gone);
+      r.collapses += collapses;
+      if (collapses == 0) break;
     }
     compact();
     r.tetsAfter = static_cast<int>(m_.tets.size());
@@ -107,6 +89,33 @@ class Coarsener {
   enum class Kind { Inner, OnPatch, OnRim, Fixed };  // the order of ties to the surface
 
   int rank(int v) const { return static_cast<int>(kind_[v]); }
+
+  /// Every edge once, shortest first (then by its ends' numbers); the edges around a kept vertex
+  /// join the queue again. Returns the collapses made.
+  int sweep(std::vector<char>& gone) {
+    using Entry = std::tuple<double, int, int>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+    auto push = [&](int v) {
+      for (int w : neighbours(v)) queue.emplace((m_.points[v] - m_.points[w]).norm(), std::min(v, w), std::max(v, w));
+    };
+    for (int v = 0; v < static_cast<int>(m_.points.size()); ++v)
+      if (!gone[v]) push(v);
+    int collapses = 0;
+    while (!queue.empty()) {
+      const auto [length, u, w] = queue.top();
+      queue.pop();
+      if (gone[u] || gone[w] || !adjacent(u, w)) continue;
+      // The vertex with fewer ties to the surface goes; on equal terms the higher number.
+      const bool uFirst = rank(u) < rank(w) || (rank(u) == rank(w) && u > w);
+      const int a = uFirst ? u : w, b = uFirst ? w : u;
+      if (!collapse(a, b) && !(rank(a) == rank(b) && collapse(b, a))) continue;
+      const int removed = stars_[a].empty() ? a : b;
+      gone[removed] = 1;
+      ++collapses;
+      push(removed == a ? b : a);
+    }
+    return collapses;
+  }
 
   std::vector<int> aliveStar(int v) const {
     std::vector<int> s;
