@@ -268,22 +268,9 @@ class Coarsener {
   /// Moves a onto b when every condition of the header holds; false leaves the mesh as it was.
   bool collapse(int a, int b) {
     if (kind_[a] == Kind::Fixed) return false;
-    const std::vector<PatchFace> facesA = facesAround(a), facesB = facesAround(b);
-    if (kind_[a] != Kind::Inner) {
-      // Along a patch edge of a's patch, or along the rim a lies on; b on all of a's patches.
-      for (const Patch& patch : patches_[a])
-        if (!onPatch(b, patch)) return false;
-      if (kind_[a] == Kind::OnRim) {
-        const std::vector<int> rim = rimNeighbours(a, facesA);
-        if (std::find(rim.begin(), rim.end(), b) == rim.end()) return false;
-      } else {
-        bool alongPatch = false;
-        for (const PatchFace& f : facesA)
-          alongPatch = alongPatch || std::find(f.corners.begin(), f.corners.end(), b) != f.corners.end();
-        if (!alongPatch) return false;
-      }
-    }
-    if (!linkHolds(a, b, facesA, facesB)) return false;
+    for (const Patch& patch : patches_[a])
+      if (!onPatch(b, patch)) return false;  // b on all of a's patches
+    // The tets first: most refusals are theirs, and they cost least to check.
     const std::vector<int> star = aliveStar(a);
     std::vector<int> moved, removed;
     std::map<int, double> change;  // label -> volume change
@@ -304,10 +291,26 @@ class Coarsener {
       const double floor = label >= 1 && label <= static_cast<int>(o_.minVolume.size()) ? o_.minVolume[label - 1] : 0.0;
       if (delta < 0 && labelVolume_[label] + delta < floor) return false;
     }
+    const bool inner = kind_[a] == Kind::Inner;
+    const std::vector<PatchFace> facesA = inner ? std::vector<PatchFace>{} : facesAround(a);
+    const std::vector<PatchFace> facesB = inner ? std::vector<PatchFace>{} : facesAround(b);
+    if (!inner) {
+      // Along a patch edge of a's patch, or along the rim a lies on.
+      if (kind_[a] == Kind::OnRim) {
+        const std::vector<int> rim = rimNeighbours(a, facesA);
+        if (std::find(rim.begin(), rim.end(), b) == rim.end()) return false;
+      } else {
+        bool alongPatch = false;
+        for (const PatchFace& f : facesA)
+          alongPatch = alongPatch || std::find(f.corners.begin(), f.corners.end(), b) != f.corners.end();
+        if (!alongPatch) return false;
+      }
+    }
+    if (!linkHolds(a, b, facesA, facesB)) return false;
     // The surface: new triangles turn little, and every starting surface point near the change
     // stays within maxDistance of its patch.
     std::vector<int> ring;
-    if (kind_[a] != Kind::Inner) {
+    if (!inner) {
       for (const PatchFace& f : facesA) {
         if (std::find(f.corners.begin(), f.corners.end(), b) != f.corners.end()) continue;
         Triangle g = f.corners;
@@ -324,7 +327,7 @@ class Coarsener {
     for (int t : removed) alive_[t] = 0;
     for (int t : moved) *std::find(m_.tets[t].begin(), m_.tets[t].end(), a) = b;
     double far = 0.0;
-    if (kind_[a] != Kind::Inner) far = surfaceDeviation(a, b, ring);
+    if (!inner) far = surfaceDeviation(a, b, ring);
     if (!(far <= o_.maxDistance)) {
       for (int t : removed) alive_[t] = 1;
       for (int t : moved) *std::find(m_.tets[t].begin(), m_.tets[t].end(), b) = a;
