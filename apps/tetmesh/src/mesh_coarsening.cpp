@@ -32,6 +32,16 @@ struct PatchFace {
   Patch patch;
 };
 
+/// Triangle f of tet t, ordered so that its normal points away from t's fourth corner.
+Triangle outward(const TetMesh& m, int t, Triangle f) {
+  int apex = -1;
+  for (int x : m.tets[t])
+    if (std::find(f.begin(), f.end(), x) == f.end()) apex = x;
+  const Vec3 n = (m.points[f[1]] - m.points[f[0]]).cross(m.points[f[2]] - m.points[f[0]]);
+  if (n.dot(m.points[apex] - m.points[f[0]]) > 0) std::swap(f[1], f[2]);
+  return f;
+}
+
 class Coarsener {
  public:
   Coarsener(TetMesh& mesh, const CoarsenOptions& options) : m_(mesh), o_(options) {
@@ -159,19 +169,9 @@ class Coarsener {
       if (tets.size() > 1 && l0 == l1) continue;
       // Oriented out of the tet with the higher label (towards the lower label's side).
       const int owner = tets.size() == 1 || l0 > l1 ? tets[0] : tets[1];
-      faces.push_back({outward(owner, f), {std::min(l0, l1), std::max(l0, l1)}});
+      faces.push_back({outward(m_, owner, f), {std::min(l0, l1), std::max(l0, l1)}});
     }
     return faces;
-  }
-
-  /// Triangle f of tet t, ordered so that its normal points away from t's fourth corner.
-  Triangle outward(int t, Triangle f) const {
-    int apex = -1;
-    for (int x : m_.tets[t])
-      if (std::find(f.begin(), f.end(), x) == f.end()) apex = x;
-    const Vec3 n = normal(f);
-    if (n.dot(m_.points[apex] - m_.points[f[0]]) > 0) std::swap(f[1], f[2]);
-    return f;
   }
 
   Vec3 normal(const Triangle& f) const {
@@ -416,13 +416,7 @@ void rebuildFaces(TetMesh& mesh) {
     if (!boundary && (mesh.labels.empty() || mesh.labels[tets[0]] == mesh.labels[tets[1]])) continue;
     int owner = tets[0];
     if (!boundary && mesh.labels[tets[1]] < mesh.labels[tets[0]]) owner = tets[1];
-    Triangle g = f;
-    int apex = -1;
-    for (int x : mesh.tets[owner])
-      if (std::find(g.begin(), g.end(), x) == g.end()) apex = x;
-    const Vec3 n = (mesh.points[g[1]] - mesh.points[g[0]]).cross(mesh.points[g[2]] - mesh.points[g[0]]);
-    if (n.dot(mesh.points[apex] - mesh.points[g[0]]) > 0) std::swap(g[1], g[2]);
-    mesh.faces.push_back(g);
+    mesh.faces.push_back(outward(mesh, owner, f));
     mesh.faceMarkers.push_back(boundary ? kBoundaryFacet : kInterfaceFacet);
   }
 }
