@@ -55,6 +55,9 @@ int main(int argc, char** argv) {
   app.add_option("--tubes", p.tubeRadius,
                  "also write each skeleton as thin tubes (NAME.*_skeleton_tubes.off) of this radius, as a fraction "
                  "of the bounding-box diagonal, for renderers that do not draw lines (e.g. 0.004)");
+  app.add_flag("--handle-cycles", p.handleCycles,
+               "keep a cycle in the skeleton of parts for each handle of the solid that runs through the contacts "
+               "of several parts (default: a tree; handles are counted in report.json)");
   app.add_flag("--no-mcf", p.noMcf, "skip CGAL's mean-curvature-flow skeleton");
   app.add_option("--threads", p.threads, "decomposition worker threads, 0 = all cores");
   app.add_flag("-q,--quiet", p.quiet, "no summary table");

@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "acd_skeleton.hpp"
+#include "part_voxels.hpp"
 
 namespace skeleton {
 
@@ -140,9 +141,12 @@ class Merger {
   int merges_ = 0;
 };
 
-/// The adjacencies of the parts a skeleton keeps: a maximum spanning forest by shared area, then as
-/// many closing adjacencies as the solid has handles, largest first (ties: lower pair of parts).
-void keepJointsAtGenus(const std::vector<Cut>& cuts, int genus, Parts& parts) {
+/// The adjacencies of the parts a skeleton keeps: a maximum spanning forest by shared area; with
+/// `handleCycles`, also (largest first, ties: lower pair of parts) the others that a loop of the
+/// solid passes through, no more than its genus. Where the solid has handles, the grid that shows
+/// them all counts each part's own and the adjacencies loops pass through.
+void keepJoints(const std::vector<acd::TriMesh>& components, const std::vector<Cut>& cuts, int genus,
+                bool handleCycles, Parts& parts) {
   std::map<std::pair<int, int>, Contact> between;
   for (const Cut& c : cuts) {
     const int pa = parts.partOf[c.a], pb = parts.partOf[c.b];
@@ -161,9 +165,31 @@ void keepJointsAtGenus(const std::vector<Cut>& cuts, int genus, Parts& parts) {
     const int ra = forest.find(adjacent[j].a), rb = forest.find(adjacent[j].b);
     if (ra != rb) forest.join(ra, rb), taken[j] = 1;
   }
-  int cycles = 0;
-  for (std::size_t j = 0; j < adjacent.size(); ++j)
-    if (!taken[j] && cycles < genus) taken[j] = 1, ++cycles;
+  if (genus > 0)
+    for (int cells : kPartGridSizes) {
+      const PartVoxels grid(components, parts.partOf, cells);
+      if (grid.loops() != genus) continue;
+      parts.loopGrid = cells;
+      for (int p = 0; p < static_cast<int>(parts.members.size()); ++p) parts.handles.push_back(grid.loops(p));
+      for (std::size_t j = 0; j < adjacent.size(); ++j) {
+        acd::UnionFind others(static_cast<int>(parts.members.size()));
+        for (std::size_t i = 0; i < adjacent.size(); ++i)
+          if (i != j) others.join(others.find(adjacent[i].a), others.find(adjacent[i].b));
+        const bool joined = others.find(adjacent[j].a) == others.find(adjacent[j].b);
+        if (grid.loopsThrough(adjacent[j].a, adjacent[j].b, joined) > 0) parts.loopJoints.push_back(adjacent[j]);
+      }
+      break;
+    }
+  if (handleCycles) {
+    int cycles = 0;
+    const auto carriesLoop = [&parts](const Joint& j) {
+      return std::any_of(parts.loopJoints.begin(), parts.loopJoints.end(),
+                         [&j](const Joint& l) { return l.a == j.a && l.b == j.b; });
+    };
+    // No grid shows all the solid's handles (some thinner than its cubes): the largest stand in.
+    for (std::size_t j = 0; j < adjacent.size() && cycles < genus; ++j)
+      if (!taken[j] && (parts.loopGrid == 0 || carriesLoop(adjacent[j]))) taken[j] = 1, ++cycles;
+  }
   for (std::size_t j = 0; j < adjacent.size(); ++j)
     if (taken[j])
       parts.joints.push_back(adjacent[j]);
@@ -175,7 +201,7 @@ void keepJointsAtGenus(const std::vector<Cut>& cuts, int genus, Parts& parts) {
 
 }  // namespace
 
-Parts groupIntoParts(const std::vector<acd::TriMesh>& components, int genus, double tubeRatio) {
+Parts groupIntoParts(const std::vector<acd::TriMesh>& components, int genus, bool handleCycles, double tubeRatio) {
   const int n = static_cast<int>(components.size());
   std::vector<double> volume(n);
   std::vector<Vec3> centroid(n);
@@ -205,7 +231,7 @@ Parts groupIntoParts(const std::vector<acd::TriMesh>& components, int genus, dou
     }
     parts.partOf[i] = partOfRoot[root];
   }
-  keepJointsAtGenus(cuts, genus, parts);
+  keepJoints(components, cuts, genus, handleCycles, parts);
   return parts;
 }
 

@@ -14,10 +14,14 @@
 // Then the stubs (kStubElongation): wedges where two parts meet and bumps, which come and go with
 // small changes of the surface, go into the neighbour they share most with.
 //
-// The graph of parts keeps as many independent cycles as the solid has handles (its genus), as a
-// curve skeleton does: a maximum spanning forest by shared area, then the genus's worth of the
-// other adjacencies, largest first. Three parts that meet along one old cut would otherwise make a
-// triangle the shape does not have.
+// The graph of parts is a tree: a maximum spanning forest of their adjacencies by shared area.
+// A solid's handles are counted on a voxel grid (part_voxels.hpp), per part and per adjacency a
+// loop passes through, but by default not drawn as cycles: whether a handle lies inside one part
+// or runs through the contacts of several depends on where the cuts fall, which a bend changes
+// (the elephant, genus 3: 1, 0, 1, 0, 2 and 1 loops through contacts on the original and its five
+// deformations), so cycles would make the graph change with the pose. `handleCycles` keeps them:
+// the adjacencies a loop passes through, largest first, at most the genus. Without a cycle test
+// three parts that meet along one old cut would make a triangle the shape does not have.
 #pragma once
 
 #include <acd/mesh.hpp>
@@ -51,13 +55,17 @@ struct Parts {
   std::vector<Vec3> centroid;             // per part: of the solid it bounds
   std::vector<Joint> joints;              // the adjacencies the skeleton keeps
   int merges = 0;                         // cuts merged across
-  int droppedAdjacencies = 0;             // left out to keep the cycle count at the genus
+  int droppedAdjacencies = 0;             // adjacencies not kept as joints
+  int loopGrid = 0;                       // cubes across the grid that shows all handles (0: none does)
+  std::vector<int> handles;               // per part: its own handles on that grid (empty: no grid)
+  std::vector<Joint> loopJoints;          // adjacencies a loop of the solid passes through
 };
 
 /// Groups closed, outward components (pieces of one decomposition) into parts (above).
 /// `genus` = handles of the solid they make up (genusOf). Depends only on the components' shapes
 /// and order: an invariant decomposition gives the same parts in every pose.
-Parts groupIntoParts(const std::vector<acd::TriMesh>& components, int genus, double tubeRatio = kTubeRatio);
+Parts groupIntoParts(const std::vector<acd::TriMesh>& components, int genus, bool handleCycles = false,
+                     double tubeRatio = kTubeRatio);
 
 /// A Component node per part (at its centroid; `source` = part index), then a Cut node per joint
 /// joined to its two parts.

@@ -52,6 +52,7 @@ int writeRunFiles(const RunParameters& p, const std::vector<Model>& models, bool
                           {"max_expansions", maxExpansions},
                           {"mip_max_columns", mipMaxColumns},
                           {"mcf_runs", noMcf ? 0 : mcfRuns},
+                          {"handle_cycles", p.handleCycles},
                           {"cost_model", "node insertion/deletion 1, edge insertion/deletion 1, substitution 0"}};
   report["models"] = json::array();
   unresolved = false;
@@ -90,6 +91,9 @@ int writeRunFiles(const RunParameters& p, const std::vector<Model>& models, bool
                   {"part_merges", m.partMerges},
                   {"genus", m.genus},
                   {"dropped_adjacencies", m.droppedAdjacencies},
+                  {"loop_grid", m.loopGrid},
+                  {"part_handles", m.partHandles},
+                  {"loop_adjacencies", m.loopJoints},
                   {"acd", graphSummary(m.acd, m.acdContracted)},
                   {"acd_components", graphSummary(m.components_, m.componentsContracted)}};
     if (!m.summary.empty()) entry["deformation"] = m.summary;

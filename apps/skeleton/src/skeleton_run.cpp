@@ -165,11 +165,14 @@ int decomposeModels(const RunParameters& p, std::vector<Model>& models) {
     m.components_ = skeletonFromComponents(pieces);
     m.componentsContracted = contractDegreeTwo(m.components_);
     m.genus = genusOf(m.mesh);
-    const Parts parts = groupIntoParts(pieces, m.genus);
+    const Parts parts = groupIntoParts(pieces, m.genus, p.handleCycles);
     m.parts = static_cast<int>(parts.members.size());
     m.partMembers = parts.members;
     m.partMerges = parts.merges;
     m.droppedAdjacencies = parts.droppedAdjacencies;
+    m.loopGrid = parts.loopGrid;
+    m.partHandles = parts.handles;
+    for (const Joint& j : parts.loopJoints) m.loopJoints.push_back({j.a, j.b});
     m.acd = skeletonFromParts(parts);
     m.acdContracted = contractDegreeTwo(m.acd);
     m.vertexPart = componentOfVertices(m.mesh, pieces, hulls);

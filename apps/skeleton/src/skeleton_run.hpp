@@ -27,7 +27,7 @@ struct RunParameters {
   int exactMaxNodes = 12, mcfRuns = 1, threads = 0;
   double tubeRadius = 0.0;
   long long maxExpansions = 20000000, mipMaxColumns = 3000;
-  bool noMcf = false, quiet = false;
+  bool noMcf = false, quiet = false, handleCycles = false;
 };
 
 struct Model {
@@ -39,6 +39,9 @@ struct Model {
   Graph acd, acdContracted, mcf, mcfContracted;  // acd: the skeleton of parts (parts.hpp)
   Graph components_, componentsContracted;       // the skeleton of the components themselves
   int components = 0, unresolved = 0, parts = 0, genus = 0, partMerges = 0, droppedAdjacencies = 0;
+  int loopGrid = 0;                        // parts.hpp: the grid that shows the handles (0: none)
+  std::vector<int> partHandles;             // per part, its own handles on that grid
+  std::vector<std::pair<int, int>> loopJoints;  // adjacencies of parts a loop passes through
   std::vector<int> vertexPart;                // per mesh vertex, the part it is a corner of
   std::vector<std::vector<int>> partMembers;  // per part, its components
   std::vector<int> partMatch;                 // per part, the original's part it is matched to by vertices (-1: none)

@@ -1,5 +1,5 @@
 // Parts and their skeleton: tubes cut across are one part, a thin limb on a wide body is its own;
-// cycles kept at the genus; a jointed stick figure of capsules, straight and bent at a joint by a
+// a ring's handle counted, and drawn as a cycle only when asked; a jointed stick figure of capsules, straight and bent at a joint by a
 // known angle, whose right skeleton is known by construction; matching by shared vertices.
 #include <gtest/gtest.h>
 
@@ -15,6 +15,7 @@
 #include "acd_skeleton.hpp"
 #include "correspondence.hpp"
 #include "ged.hpp"
+#include "part_voxels.hpp"
 #include "parts.hpp"
 
 using namespace skeleton;
@@ -141,15 +142,15 @@ TEST(Parts, AThinLimbOnAWideBodyIsAPartOfItsOwn) {
   EXPECT_NEAR(parts.joints[0].area, 1.0, 1e-9);
   EXPECT_LT((parts.joints[0].centre - Vec3(1.5, 1.5, 3.5)).norm(), 1e-9);
   // A threshold above the root's ratio merges everything.
-  EXPECT_EQ(groupIntoParts(pieces, 0, 0.1).members.size(), 1u);
+  EXPECT_EQ(groupIntoParts(pieces, 0, false, 0.1).members.size(), 1u);
   const Graph g = skeletonFromParts(parts);
   EXPECT_EQ(g.nodeCount(), 3);  // two parts and the cut between them
   EXPECT_EQ(g.edgeCount(), 2);
 }
 
-TEST(Parts, CyclesAreKeptAtTheGenus) {
+TEST(Parts, ARingsHandleIsCountedAndDrawnOnlyWhenAsked) {
   // A ring cut into four quarters, merging off (threshold out of reach): the quarters' adjacency
-  // is a 4-cycle, and the ring has one handle, so the cycle stays.
+  // is a 4-cycle and the ring has one handle, which runs through every contact.
   const acd::TriMesh ring = acd::shapes::torus(2.0, 0.5, 64, 16);
   const acd::CutResult half = acd::cutByPlane(ring, acd::Plane::through(Vec3::Zero(), Vec3(1, 0.01, 0)));
   ASSERT_TRUE(half.ok) << half.error;
@@ -160,16 +161,29 @@ TEST(Parts, CyclesAreKeptAtTheGenus) {
     quarters.push_back(q.below[0]);
     quarters.push_back(q.above[0]);
   }
-  const Parts kept = groupIntoParts(quarters, 1, 1e9);
-  EXPECT_EQ(kept.members.size(), 4u);
+  // By default a tree: the smallest adjacency goes; the handle is in the counts.
+  const Parts tree = groupIntoParts(quarters, 1, false, 1e9);
+  EXPECT_EQ(tree.members.size(), 4u);
+  EXPECT_EQ(tree.joints.size(), 3u);
+  EXPECT_EQ(tree.droppedAdjacencies, 1);
+  EXPECT_EQ(tree.loopGrid, kPartGridSizes[0]);
+  EXPECT_EQ(tree.handles, std::vector<int>(4, 0));
+  EXPECT_EQ(tree.loopJoints.size(), 4u);
+  // Asked for, the cycle stays.
+  const Parts kept = groupIntoParts(quarters, 1, true, 1e9);
   EXPECT_EQ(kept.joints.size(), 4u);
   EXPECT_EQ(kept.droppedAdjacencies, 0);
   const Graph g = skeletonFromParts(kept);
   EXPECT_EQ(g.edgeCount() - g.nodeCount() + connectedComponents(g), 1);  // one independent cycle
-  // Told the solid has no handle, the same parts give a tree: the smallest adjacency goes.
-  const Parts tree = groupIntoParts(quarters, 0, 1e9);
-  EXPECT_EQ(tree.joints.size(), 3u);
-  EXPECT_EQ(tree.droppedAdjacencies, 1);
+  // Told the solid has no handle, no cycle and no counts.
+  const Parts none = groupIntoParts(quarters, 0, true, 1e9);
+  EXPECT_EQ(none.joints.size(), 3u);
+  EXPECT_EQ(none.loopGrid, 0);
+  // The whole ring one part (merging every tube-like cut): its handle is its own.
+  const Parts one = groupIntoParts(quarters, 1, true);
+  ASSERT_EQ(one.members.size(), 1u);
+  EXPECT_EQ(one.handles, std::vector<int>{1});
+  EXPECT_TRUE(one.joints.empty());
 }
 
 TEST(Parts, StickFigureHasTheSkeletonItWasBuiltWith) {
