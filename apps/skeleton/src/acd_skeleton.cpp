@@ -1,5 +1,7 @@
 #include "acd_skeleton.hpp"
 
+#include <Eigen/Geometry>
+#include <acd/algo/closest_point.hpp>
 #include <acd/algo/union_find.hpp>
 #include <algorithm>
 #include <array>
@@ -11,68 +13,151 @@ namespace skeleton {
 
 namespace {
 
-using Corner = std::array<double, 3>;
-using TriangleKey = std::array<Corner, 3>;  // sorted corners: equal for both orientations
+/// Triangles of a component with their unit normals, for the test "does this point lie on its
+/// surface, on a face turned against `normal`".
+class SurfaceOf {
+ public:
+  SurfaceOf(const acd::TriMesh& m, double tolerance) : tolerance_(tolerance) {
+    for (const acd::Face& f : m.faces) {
+      const Vec3 &p = m.vertices[f[0]], &q = m.vertices[f[1]], &r = m.vertices[f[2]];
+      const Vec3 n = (q - p).cross(r - p);
+      if (n.norm() > 0) triangles_.push_back({p, q, r, n.normalized()});
+    }
+  }
 
-Corner cornerOf(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
-Vec3 pointOf(const Corner& c) { return {c[0], c[1], c[2]}; }
+  /// Whether any face of this surface is coplanar with, and turned against, a face of normal n.
+  bool faces(const Vec3& point, const Vec3& n) const {
+    for (const Triangle& t : triangles_)
+      if (t.n.dot(n) < -kOpposite && std::abs(t.n.dot(point - t.p)) <= tolerance_) return true;
+    return false;
+  }
+
+  /// Whether the point lies on a face turned against n (within the tolerance).
+  bool holds(const Vec3& point, const Vec3& n) const {
+    for (const Triangle& t : triangles_)
+      if (t.n.dot(n) < -kOpposite && std::abs(t.n.dot(point - t.p)) <= tolerance_ &&
+          (acd::closestPointOnTriangle(point, t.p, t.q, t.r) - point).norm() <= tolerance_)
+        return true;
+    return false;
+  }
+
+ private:
+  static constexpr double kOpposite = 0.9999;  // cos of 0.8 degrees
+  struct Triangle {
+    Vec3 p, q, r, n;
+  };
+  std::vector<Triangle> triangles_;
+  double tolerance_;
+};
+
+/// Area of triangle pqr that lies on `other` (faces turned against n), and its moment: whole when
+/// its corners and centroid do, else split in four, down to kDepth levels. `whole` gets the area
+/// counted without splitting.
+void contactOf(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& n, const SurfaceOf& other, int depth,
+               double& area, Vec3& moment, double& whole) {
+  constexpr int kDepth = 4;
+  const Vec3 c = (p + q + r) / 3.0;
+  const bool inC = other.holds(c, n), inP = other.holds(p, n), inQ = other.holds(q, n), inR = other.holds(r, n);
+  const double a = 0.5 * (q - p).cross(r - p).norm();
+  if ((inC && inP && inQ && inR) || (depth == kDepth && inC)) {
+    area += a;
+    moment += a * c;
+    if (depth == 0) whole += a;
+    return;
+  }
+  if (depth == kDepth || !(inC || inP || inQ || inR)) return;
+  const Vec3 pq = 0.5 * (p + q), qr = 0.5 * (q + r), rp = 0.5 * (r + p);
+  contactOf(p, pq, rp, n, other, depth + 1, area, moment, whole);
+  contactOf(pq, q, qr, n, other, depth + 1, area, moment, whole);
+  contactOf(rp, qr, r, n, other, depth + 1, area, moment, whole);
+  contactOf(pq, qr, rp, n, other, depth + 1, area, moment, whole);
+}
+
+/// The patches where mesh m touches `other`, measured on m's triangles (normals out of m), and the
+/// share of their area that lay on `other` triangle by whole triangle.
+struct Side {
+  std::vector<Cut> patches;
+  double area = 0.0, whole = 0.0;
+};
+
+Side contactSide(const acd::TriMesh& m, const SurfaceOf& other) {
+  Side side;
+  std::vector<int> touching;
+  std::vector<double> area;
+  std::vector<Vec3> moment, normal;
+  for (int f = 0; f < static_cast<int>(m.faces.size()); ++f) {
+    const Vec3 &p = m.vertices[m.faces[f][0]], &q = m.vertices[m.faces[f][1]], &r = m.vertices[m.faces[f][2]];
+    const Vec3 twice = (q - p).cross(r - p);
+    if (!(twice.norm() > 0) || !other.faces((p + q + r) / 3.0, twice.normalized())) continue;
+    double s = 0.0;
+    Vec3 c = Vec3::Zero();
+    contactOf(p, q, r, twice.normalized(), other, 0, s, c, side.whole);
+    if (!(s > 0)) continue;
+    touching.push_back(f);
+    area.push_back(s);
+    moment.push_back(c);
+    normal.push_back(s * twice.normalized());
+    side.area += s;
+  }
+  acd::UnionFind sets(static_cast<int>(touching.size()));
+  std::map<int, int> firstUser;  // corner -> first touching triangle using it
+  for (int t = 0; t < static_cast<int>(touching.size()); ++t)
+    for (int v : m.faces[touching[t]]) {
+      auto [it, inserted] = firstUser.emplace(v, t);
+      if (!inserted) sets.join(sets.find(t), sets.find(it->second));
+    }
+  std::map<int, Cut> patches;
+  for (int t = 0; t < static_cast<int>(touching.size()); ++t) {
+    Cut& cut = patches[sets.find(t)];
+    cut.centre += moment[t];
+    cut.area += area[t];
+    cut.normal += normal[t];
+    ++cut.triangles;
+  }
+  for (auto& [root, cut] : patches) {
+    cut.centre /= cut.area;
+    if (cut.normal.norm() > 0) cut.normal.normalize();
+    side.patches.push_back(cut);
+  }
+  return side;
+}
 
 }  // namespace
 
 std::vector<Cut> findCuts(const std::vector<acd::TriMesh>& components) {
-  // Per triangle (corners sorted) its owners, each with its normal as that owner sees it.
-  std::map<TriangleKey, std::vector<std::pair<int, Vec3>>> owners;
-  for (int i = 0; i < static_cast<int>(components.size()); ++i) {
-    const acd::TriMesh& m = components[i];
-    for (const acd::Face& f : m.faces) {
-      const Vec3 &p = m.vertices[f[0]], &q = m.vertices[f[1]], &r = m.vertices[f[2]];
-      TriangleKey k{cornerOf(p), cornerOf(q), cornerOf(r)};
-      std::sort(k.begin(), k.end());
-      owners[k].push_back({i, (q - p).cross(r - p)});
-    }
+  const int n = static_cast<int>(components.size());
+  std::vector<acd::Box3> boxes(n);
+  Eigen::AlignedBox3d all;
+  for (int i = 0; i < n; ++i) {
+    boxes[i] = acd::boundingBox(components[i]);
+    if (!components[i].vertices.empty()) all.extend(boxes[i].lo), all.extend(boxes[i].hi);
   }
-  // Shared triangles per pair of components, with their normals out of the first of the pair.
-  std::map<std::pair<int, int>, std::vector<std::pair<TriangleKey, Vec3>>> shared;
-  for (const auto& [key, list] : owners) {
-    if (list.size() != 2 || list[0].first == list[1].first) continue;
-    const bool firstIsLow = list[0].first < list[1].first;
-    shared[std::minmax(list[0].first, list[1].first)].push_back({key, list[firstIsLow ? 0 : 1].second});
-  }
+  const double tolerance = all.isEmpty() ? 0.0 : kCutTolerance * all.diagonal().norm();
+  std::vector<SurfaceOf> surfaces;
+  for (const acd::TriMesh& m : components) surfaces.emplace_back(m, tolerance);
 
   std::vector<Cut> cuts;
-  for (const auto& [pair, oriented] : shared) {
-    std::vector<TriangleKey> triangles;
-    for (const auto& [key, normal] : oriented) triangles.push_back(key);
-    // Patches: triangles joined through common corners (union-find over triangles).
-    const int n = static_cast<int>(triangles.size());
-    acd::UnionFind sets(n);
-    std::map<Corner, int> firstUser;
-    for (int t = 0; t < n; ++t)
-      for (const Corner& c : triangles[t]) {
-        auto [it, inserted] = firstUser.emplace(c, t);
-        if (!inserted) sets.join(t, it->second);
+  for (int a = 0; a < n; ++a)
+    for (int b = a + 1; b < n; ++b) {
+      const acd::Box3 &x = boxes[a], &y = boxes[b];
+      if (components[a].faces.empty() || components[b].faces.empty() ||
+          ((x.lo.array() - tolerance) > y.hi.array()).any() || ((y.lo.array() - tolerance) > x.hi.array()).any())
+        continue;
+      // Measured on the side whose triangles lie wholly on the other (the side a later cut split):
+      // exact there, where the other side's larger triangles would need splitting.
+      const Side onA = contactSide(components[a], surfaces[b]);
+      if (onA.patches.empty()) continue;
+      const Side onB = contactSide(components[b], surfaces[a]);
+      const bool useB = !onB.patches.empty() && onB.whole * onA.area > onA.whole * onB.area;
+      std::vector<Cut> local = useB ? onB.patches : onA.patches;
+      for (Cut& cut : local) {
+        cut.a = a;
+        cut.b = b;
+        if (useB) cut.normal = -cut.normal;  // out of a
       }
-    std::map<int, Cut> patches;
-    for (int t = 0; t < n; ++t) {
-      const Vec3 p = pointOf(triangles[t][0]), q = pointOf(triangles[t][1]), r = pointOf(triangles[t][2]);
-      const double area = 0.5 * (q - p).cross(r - p).norm();
-      Cut& cut = patches[sets.find(t)];
-      cut.a = pair.first;
-      cut.b = pair.second;
-      cut.centre += area * (p + q + r) / 3.0;
-      cut.area += area;
-      cut.normal += oriented[t].second;  // twice the area along the normal
-      ++cut.triangles;
+      std::stable_sort(local.begin(), local.end(), [](const Cut& u, const Cut& v) { return u.area > v.area; });
+      cuts.insert(cuts.end(), local.begin(), local.end());
     }
-    std::vector<Cut> local;
-    for (auto& [root, cut] : patches) {
-      cut.centre /= cut.area > 0 ? cut.area : 1.0;
-      if (cut.normal.norm() > 0) cut.normal.normalize();
-      local.push_back(cut);
-    }
-    std::stable_sort(local.begin(), local.end(), [](const Cut& x, const Cut& y) { return x.area > y.area; });
-    cuts.insert(cuts.end(), local.begin(), local.end());
-  }
   return cuts;
 }
 

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 using namespace skeleton;
@@ -72,6 +73,31 @@ TEST(AcdSkeleton, LShapeIsOneCutBetweenTwoComponents) {
   const Graph c = contractDegreeTwo(g);
   EXPECT_EQ(c.nodeCount(), 2);
   EXPECT_EQ(c.edgeCount(), 1);
+}
+
+TEST(AcdSkeleton, CutsAreFoundWhereCapsDoNotShareTheirTriangles) {
+  // A 3 x 2 x 1 block cut at x = 1.3, then its right piece at y = 0.7: the left piece's cap is
+  // the whole 2 x 1 rectangle in two triangles, the right pieces' caps are its two parts. The
+  // contacts, by construction: left-lower right 0.7 x 1, left-upper right 1.3 x 1, the two right
+  // pieces 1.7 x 1, each one patch, centred on the rectangles.
+  const acd::CutResult first =
+      acd::cutByPlane(acd::shapes::box(Vec3::Zero(), Vec3(3, 2, 1)), acd::Plane::through(Vec3(1.3, 0, 0), Vec3::UnitX()));
+  ASSERT_TRUE(first.ok) << first.error;
+  const acd::CutResult second = acd::cutByPlane(first.above[0], acd::Plane::through(Vec3(0, 0.7, 0), Vec3::UnitY()));
+  ASSERT_TRUE(second.ok) << second.error;
+  const std::vector<acd::TriMesh> pieces{first.below[0], second.below[0], second.above[0]};
+  const std::vector<Cut> cuts = findCuts(pieces);
+  ASSERT_EQ(cuts.size(), 3u);
+  const std::array<double, 3> area{0.7, 1.3, 1.7};
+  const std::array<Vec3, 3> centre{Vec3(1.3, 0.35, 0.5), Vec3(1.3, 1.35, 0.5), Vec3(2.15, 0.7, 0.5)};
+  const std::array<Vec3, 3> normal{Vec3::UnitX(), Vec3::UnitX(), Vec3::UnitY()};
+  const std::array<std::pair<int, int>, 3> pair{std::pair{0, 1}, {0, 2}, {1, 2}};
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(std::make_pair(cuts[k].a, cuts[k].b), pair[k]) << k;
+    EXPECT_NEAR(cuts[k].area, area[k], 1e-9) << k;
+    EXPECT_LT((cuts[k].centre - centre[k]).norm(), 1e-9) << k;
+    EXPECT_LT((cuts[k].normal - normal[k]).norm(), 1e-9) << k;
+  }
 }
 
 TEST(AcdSkeleton, RingCutInTwoHasTwoCutsAndACycle) {

@@ -63,6 +63,34 @@ TEST(SkeletonCli, DumbbellWithTwoDeformations) {
   EXPECT_NE(r.out.find("ACD D2"), std::string::npos);  // the summary table
 }
 
+TEST(SkeletonCli, ARingsHandleIsCountedInTheReport) {
+  // A ring (genus 1): its handle found on the coarsest grid, inside the parts or through their
+  // contacts; the skeleton of parts a tree by default, and with --handle-cycles a cycle exactly
+  // when the handle runs through contacts.
+  TempDir dir("skeleton_cli_ring");
+  const std::string model = dir / "ring.off";
+  ASSERT_TRUE(acd::writeMesh(model, acd::shapes::torus(2.0, 0.5, 64, 16)).ok());
+  for (const bool cycles : {false, true}) {
+    const std::string out = dir / (cycles ? "cycles" : "tree");
+    const auto r = runTool(SKELETON_CLI,
+                           acdtest::quote(model) + " --tau 0.05 --no-mcf -q -o " + acdtest::quote(out) +
+                               (cycles ? " --handle-cycles" : ""),
+                           dir);
+    ASSERT_EQ(r.code, 0) << r.err;
+    const json report = json::parse(acdtest::slurp(out + "/report.json"));
+    EXPECT_EQ(report["parameters"]["handle_cycles"].get<bool>(), cycles);
+    const json& m = report["models"][0];
+    EXPECT_EQ(m["genus"], 1);
+    EXPECT_EQ(m["loop_grid"], 64);
+    int inside = 0;
+    for (const json& h : m["part_handles"]) inside += h.get<int>();
+    const bool through = !m["loop_adjacencies"].empty();
+    EXPECT_EQ(inside + (through ? 1 : 0), 1);  // one handle, in one place
+    const int nodes = m["acd"]["nodes"], edges = m["acd"]["edges"], graphs = m["acd"]["connected_components"];
+    EXPECT_EQ(edges - nodes + graphs, cycles && through ? 1 : 0);
+  }
+}
+
 TEST(SkeletonCli, BadInputGivesAClearErrorAndExitCode) {
   TempDir dir("skeleton_cli_bad");
   const std::string model = dir / "box.off";
