@@ -1,8 +1,13 @@
 #include <acd/algo/merge.hpp>
 
+#include <acd/algo/random.hpp>
+
 #include <algorithm>
 #include <array>
+#include <cstdint>
+#include <cstring>
 #include <map>
+#include <tuple>
 #include <unordered_map>
 
 namespace acd {
@@ -59,10 +64,10 @@ bool glueAlongSharedFaces(const TriMesh& a, const TriMesh& b, TriMesh& out) {
   return true;
 }
 
-std::vector<SharedFaces> touchingPairs(const std::vector<TriMesh>& meshes) {
+std::vector<SharedFaces> touchingPairs(const std::vector<const TriMesh*>& meshes) {
   std::vector<std::pair<Corner, int>> corners;  // every corner of every mesh, with its mesh
   for (int i = 0; i < static_cast<int>(meshes.size()); ++i)
-    for (const Vec3& v : meshes[i].vertices) corners.emplace_back(cornerOf(v), i);
+    for (const Vec3& v : meshes[i]->vertices) corners.emplace_back(cornerOf(v), i);
   std::sort(corners.begin(), corners.end());
   std::vector<std::pair<int, int>> touching;
   for (std::size_t s = 0, t = 0; s < corners.size(); s = t) {
@@ -78,26 +83,74 @@ std::vector<SharedFaces> touchingPairs(const std::vector<TriMesh>& meshes) {
   return pairs;
 }
 
+std::vector<SharedFaces> touchingPairs(const std::vector<TriMesh>& meshes) {
+  std::vector<const TriMesh*> pointers;
+  for (const TriMesh& m : meshes) pointers.push_back(&m);
+  return touchingPairs(pointers);
+}
+
 TriMesh joinPieces(const TriMesh& a, const TriMesh& b) {
   TriMesh out;
   if (!glueAlongSharedFaces(a, b, out)) out = concatenate({a, b});
   return out;
 }
 
-std::vector<SharedFaces> sharedFacePairs(const std::vector<TriMesh>& meshes) {
-  std::map<TriangleKey, std::vector<int>> owners;
+std::vector<SharedFaces> sharedFacePairs(const std::vector<const TriMesh*>& meshes) {
+  // Every triangle as (hash of its key, mesh, face), sorted: equal keys come together (16 bytes a
+  // triangle, where a map from keys took ten times as much on a million faces).
+  struct Entry {
+    std::uint64_t hash;
+    int mesh, face;
+  };
+  auto hashOf = [](const TriangleKey& k) {
+    std::uint64_t h = 0x9E3779B97F4A7C15ull;
+    for (const Corner& c : k)
+      for (double x : c) {
+        std::uint64_t bits;
+        std::memcpy(&bits, &x, sizeof bits);
+        h = mix64(h ^ bits);
+      }
+    return h;
+  };
+  std::vector<Entry> entries;
   for (int i = 0; i < static_cast<int>(meshes.size()); ++i)
-    for (const Face& f : meshes[i].faces) owners[keyOf(meshes[i], f)].push_back(i);
+    for (int f = 0; f < static_cast<int>(meshes[i]->faces.size()); ++f)
+      entries.push_back({hashOf(keyOf(*meshes[i], meshes[i]->faces[f])), i, f});
+  std::sort(entries.begin(), entries.end(), [](const Entry& x, const Entry& y) {
+    return std::tie(x.hash, x.mesh, x.face) < std::tie(y.hash, y.mesh, y.face);
+  });
+  std::vector<std::pair<TriangleKey, std::pair<int, int>>> shared;
+  for (std::size_t s = 0, t = 0; s < entries.size(); s = t) {
+    for (t = s; t < entries.size() && entries[t].hash == entries[s].hash; ++t) {}
+    // Within one hash, group by the key itself; a key held by exactly two meshes is shared.
+    std::vector<std::pair<TriangleKey, int>> keys;
+    for (std::size_t x = s; x < t; ++x)
+      keys.emplace_back(keyOf(*meshes[entries[x].mesh], meshes[entries[x].mesh]->faces[entries[x].face]),
+                        entries[x].mesh);
+    std::sort(keys.begin(), keys.end());
+    for (std::size_t u = 0, v = 0; u < keys.size(); u = v) {
+      for (v = u; v < keys.size() && keys[v].first == keys[u].first; ++v) {}
+      if (v - u == 2 && keys[u].second != keys[u + 1].second)
+        shared.emplace_back(keys[u].first, std::minmax(keys[u].second, keys[u + 1].second));
+    }
+  }
+  // Areas summed in key order, whatever order the hashes gave.
+  std::sort(shared.begin(), shared.end());
   std::map<std::pair<int, int>, double> area;
-  for (const auto& [key, list] : owners) {
-    if (list.size() != 2 || list[0] == list[1]) continue;
+  for (const auto& [key, pair] : shared) {
     const Vec3 p(key[0][0], key[0][1], key[0][2]), q(key[1][0], key[1][1], key[1][2]), r(key[2][0], key[2][1], key[2][2]);
-    area[std::minmax(list[0], list[1])] += 0.5 * (q - p).cross(r - p).norm();
+    area[pair] += 0.5 * (q - p).cross(r - p).norm();
   }
   std::vector<SharedFaces> pairs;
   for (const auto& [ij, a] : area) pairs.push_back({ij.first, ij.second, a});
   std::stable_sort(pairs.begin(), pairs.end(), [](const SharedFaces& x, const SharedFaces& y) { return x.area > y.area; });
   return pairs;
+}
+
+std::vector<SharedFaces> sharedFacePairs(const std::vector<TriMesh>& meshes) {
+  std::vector<const TriMesh*> pointers;
+  for (const TriMesh& m : meshes) pointers.push_back(&m);
+  return sharedFacePairs(pointers);
 }
 
 }  // namespace acd

@@ -283,10 +283,10 @@ void mergePieces(std::vector<Piece>& finals, std::vector<Component>& finalInfo, 
   });
   for (bool merged = true; merged;) {
     merged = false;
-    std::vector<TriMesh> meshes;
+    std::vector<const TriMesh*> meshes;
     std::vector<int> id;
     for (std::size_t i = 0; i < finals.size(); ++i)
-      if (alive[i] && !finalInfo[i].unresolved) meshes.push_back(finals[i].mesh), id.push_back(static_cast<int>(i));
+      if (alive[i] && !finalInfo[i].unresolved) meshes.push_back(&finals[i].mesh), id.push_back(static_cast<int>(i));
     std::vector<SharedFaces> pairs = sharedFacePairs(meshes);
     if (model) appendNewPairs(pairs, touchingPairs(meshes));
     // A pair whose pieces are unchanged since it was screened keeps its screening (and confirmation).

@@ -55,8 +55,7 @@ class InsideTest::Impl {
       const Vec3 &a = m.vertices[f[0]], &b = m.vertices[f[1]], &c = m.vertices[f[2]];
       const int s = orient2d(a.x(), a.y(), b.x(), b.y(), c.x(), c.y());
       if (s == 0) continue;  // vertical in projection: no generic vertical ray meets it
-      Tri t{a, b, c, a.cwiseMin(b).cwiseMin(c), a.cwiseMax(b).cwiseMax(c), s};
-      tris_.push_back(t);
+      tris_.push_back(Tri{a, b, c, s});
     }
     // Grid over xy with about two cells per triangle.
     const double w = std::max(hi_.x() - lo_.x(), 1e-300), h = std::max(hi_.y() - lo_.y(), 1e-300);
@@ -74,16 +73,16 @@ class InsideTest::Impl {
         fill.assign(start_.begin(), start_.end() - 1);
       }
       for (int t = 0; t < static_cast<int>(tris_.size()); ++t) {
-        const int x0 = cellX(tris_[t].lo.x()), x1 = cellX(tris_[t].hi.x());
-        const int y0 = cellY(tris_[t].lo.y()), y1 = cellY(tris_[t].hi.y());
+        const Vec3 lo = tris_[t].lo(), hi = tris_[t].hi();
+        const int x0 = cellX(lo.x()), x1 = cellX(hi.x());
+        const int y0 = cellY(lo.y()), y1 = cellY(hi.y());
         for (int y = y0; y <= y1; ++y)
           for (int x = x0; x <= x1; ++x) {
             const std::size_t c = static_cast<std::size_t>(y) * nx_ + x;
             if (pass == 0)
               ++start_[c + 1];
             else
-              items_[fill[c]++] = Item{down(tris_[t].lo.x()), up(tris_[t].hi.x()), down(tris_[t].lo.y()),
-                                       up(tris_[t].hi.y()),   up(tris_[t].hi.z()), t};
+              items_[fill[c]++] = Item{up(hi.z()), t};
           }
       }
     }
@@ -94,17 +93,18 @@ class InsideTest::Impl {
     const std::size_t c = static_cast<std::size_t>(cellY(q.y())) * nx_ + cellX(q.x());
     int winding = 0;
     for (int k = start_[c]; k < start_[c + 1]; ++k) {
-      // Conservative prefilter on the cell's contiguous records (boxes rounded outwards to float).
+      // Conservative prefilter on the cell's contiguous records (tops rounded up to float).
       const Item& it = items_[k];
-      if (q.z() > it.maxz || q.x() < it.minx || q.x() >= it.maxx || q.y() < it.miny || q.y() >= it.maxy) continue;
+      if (q.z() > it.maxz) continue;
       const Tri& t = tris_[it.tri];
-      if (q.z() > t.hi.z()) continue;  // entirely below the point
+      const Vec3 lo = t.lo(), hi = t.hi();
+      if (q.z() > hi.z()) continue;  // entirely below the point
       // Bounding box of the triangle against q' = q + (eps, eps^2).
-      if (q.x() < t.lo.x() || q.x() >= t.hi.x() || q.y() < t.lo.y() || q.y() >= t.hi.y()) continue;
+      if (q.x() < lo.x() || q.x() >= hi.x() || q.y() < lo.y() || q.y() >= hi.y()) continue;
       if (orient2dPerturbed(t.a.x(), t.a.y(), t.b.x(), t.b.y(), q.x(), q.y()) != t.s) continue;
       if (orient2dPerturbed(t.b.x(), t.b.y(), t.c.x(), t.c.y(), q.x(), q.y()) != t.s) continue;
       if (orient2dPerturbed(t.c.x(), t.c.y(), t.a.x(), t.a.y(), q.x(), q.y()) != t.s) continue;
-      bool above = q.z() < t.lo.z();
+      bool above = q.z() < lo.z();
       if (!above) {
         // Below the triangle's plane iff the orientation is opposite to the projected one.
         const auto o = CGAL::orientation(P3(t.a.x(), t.a.y(), t.a.z()), P3(t.b.x(), t.b.y(), t.b.z()),
@@ -117,18 +117,16 @@ class InsideTest::Impl {
   }
 
  private:
-  struct Tri {
-    Vec3 a, b, c, lo, hi;
+  struct Tri {  // corners only: its box is recomputed (a million-face model's boxes were 48 MB)
+    Vec3 a, b, c;
     int s;  // orientation of the xy-projection
+    Vec3 lo() const { return a.cwiseMin(b).cwiseMin(c); }
+    Vec3 hi() const { return a.cwiseMax(b).cwiseMax(c); }
   };
-  struct Item {
-    float minx, maxx, miny, maxy, maxz;
+  struct Item {  // 8 bytes: a million-face model has about ten million of them
+    float maxz;
     int tri;
   };
-  static float down(double x) {
-    float f = static_cast<float>(x);
-    return f > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
-  }
   static float up(double x) {
     float f = static_cast<float>(x);
     return f < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;

@@ -30,10 +30,12 @@ struct SharedFaces {
   int a = -1, b = -1;
   double area = 0.0;
 };
+std::vector<SharedFaces> sharedFacePairs(const std::vector<const TriMesh*>& meshes);
 std::vector<SharedFaces> sharedFacePairs(const std::vector<TriMesh>& meshes);
 
 /// Pairs (i, j), i < j, of meshes that share at least one corner position (touching, whether or not
 /// they share a whole triangle), sorted by (i, j), with no area.
+std::vector<SharedFaces> touchingPairs(const std::vector<const TriMesh*>& meshes);
 std::vector<SharedFaces> touchingPairs(const std::vector<TriMesh>& meshes);
 
 }  // namespace acd
