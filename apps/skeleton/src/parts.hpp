@@ -18,9 +18,10 @@
 // A solid's handles are counted on a voxel grid (part_voxels.hpp), per part and per adjacency a
 // loop passes through, but by default not drawn as cycles: whether a handle lies inside one part
 // or runs through the contacts of several depends on where the cuts fall, which a bend changes
-// (the elephant, genus 3: 1, 0, 1, 0, 2 and 1 loops through contacts on the original and its five
-// deformations), so cycles would make the graph change with the pose. `handleCycles` keeps them:
-// the adjacencies a loop passes through, largest first, at most the genus. Without a cycle test
+// (the elephant, genus 3: 2, 3, 0, 3, 2 and 2 handles inside single parts on the original and its
+// five deformations; docs/SKELETON.md), so cycles would make the graph change with the pose.
+// `handleCycles` keeps them: the non-tree adjacencies a loop passes through, largest first, at
+// most the genus. Without a cycle test
 // three parts that meet along one old cut would make a triangle the shape does not have.
 #pragma once
 
