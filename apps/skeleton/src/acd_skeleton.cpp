@@ -25,20 +25,19 @@ class SurfaceOf {
     }
   }
 
-  /// Whether any face of this surface is coplanar with, and turned against, a face of normal n.
+  /// Whether any face of this surface is coplanar with, and turned against, a face of normal n
+  /// through the point.
   bool faces(const Vec3& point, const Vec3& n) const {
-    for (const Triangle& t : triangles_)
-      if (t.n.dot(n) < -kOpposite && std::abs(t.n.dot(point - t.p)) <= tolerance_) return true;
-    return false;
+    return std::any_of(triangles_.begin(), triangles_.end(),
+                       [&](const Triangle& t) { return planeAgainst(t, point, n); });
   }
 
   /// Whether the point lies on a face turned against n (within the tolerance).
   bool holds(const Vec3& point, const Vec3& n) const {
-    for (const Triangle& t : triangles_)
-      if (t.n.dot(n) < -kOpposite && std::abs(t.n.dot(point - t.p)) <= tolerance_ &&
-          (acd::closestPointOnTriangle(point, t.p, t.q, t.r) - point).norm() <= tolerance_)
-        return true;
-    return false;
+    return std::any_of(triangles_.begin(), triangles_.end(), [&](const Triangle& t) {
+      return planeAgainst(t, point, n) &&
+             (acd::closestPointOnTriangle(point, t.p, t.q, t.r) - point).norm() <= tolerance_;
+    });
   }
 
  private:
@@ -46,6 +45,9 @@ class SurfaceOf {
   struct Triangle {
     Vec3 p, q, r, n;
   };
+  bool planeAgainst(const Triangle& t, const Vec3& point, const Vec3& n) const {
+    return t.n.dot(n) < -kOpposite && std::abs(t.n.dot(point - t.p)) <= tolerance_;
+  }
   std::vector<Triangle> triangles_;
   double tolerance_;
 };
@@ -88,15 +90,17 @@ Side contactSide(const acd::TriMesh& m, const SurfaceOf& other) {
   for (int f = 0; f < static_cast<int>(m.faces.size()); ++f) {
     const Vec3 &p = m.vertices[m.faces[f][0]], &q = m.vertices[m.faces[f][1]], &r = m.vertices[m.faces[f][2]];
     const Vec3 twice = (q - p).cross(r - p);
-    if (!(twice.norm() > 0) || !other.faces((p + q + r) / 3.0, twice.normalized())) continue;
+    if (!(twice.norm() > 0)) continue;
+    const Vec3 unit = twice.normalized();
+    if (!other.faces((p + q + r) / 3.0, unit)) continue;
     double s = 0.0;
     Vec3 c = Vec3::Zero();
-    contactOf(p, q, r, twice.normalized(), other, 0, s, c, side.whole);
+    contactOf(p, q, r, unit, other, 0, s, c, side.whole);
     if (!(s > 0)) continue;
     touching.push_back(f);
     area.push_back(s);
     moment.push_back(c);
-    normal.push_back(s * twice.normalized());
+    normal.push_back(s * unit);
     side.area += s;
   }
   acd::UnionFind sets(static_cast<int>(touching.size()));

@@ -156,27 +156,27 @@ int PartVoxels::loopsThrough(int a, int b, bool joinedElsewhere) const {
   const auto key = [this](int x, int y, int z, int type) {
     return ((static_cast<std::int64_t>(z) * (n_[1] + 1) + y) * (n_[0] + 1) + x) * kCellTypes + type;
   };
-  const auto cubesOf = [](int x, int y, int z, int type) {
-    std::vector<std::array<int, 3>> cubes;
+  // The cubes a cell bounds, into `cubes`; returns how many (8, 4 or 2).
+  const auto cubesOf = [](int x, int y, int z, int type, std::array<std::array<int, 3>, 8>& cubes) {
     if (type == kVertex) {
-      for (int k = 0; k < 8; ++k) cubes.push_back({x - (k & 1), y - ((k >> 1) & 1), z - ((k >> 2) & 1)});
-    } else if (type < kFaceX) {  // an edge along axis d: the four cubes round it
+      for (int k = 0; k < 8; ++k) cubes[k] = {x - (k & 1), y - ((k >> 1) & 1), z - ((k >> 2) & 1)};
+      return 8;
+    }
+    if (type < kFaceX) {  // an edge along axis d: the four cubes round it
       const int d = type - kEdgeX, u = (d + 1) % 3, v = (d + 2) % 3;
       for (int k = 0; k < 4; ++k) {
-        std::array<int, 3> c{x, y, z};
-        c[u] -= k & 1;
-        c[v] -= (k >> 1) & 1;
-        cubes.push_back(c);
+        cubes[k] = {x, y, z};
+        cubes[k][u] -= k & 1;
+        cubes[k][v] -= (k >> 1) & 1;
       }
-    } else {  // a face across axis d: the cubes on both sides
-      const int d = type - kFaceX;
-      std::array<int, 3> c{x, y, z};
-      cubes.push_back(c);
-      c[d] -= 1;
-      cubes.push_back(c);
+      return 4;
     }
-    return cubes;
+    const int d = type - kFaceX;  // a face across axis d: the cubes on both sides
+    cubes[0] = cubes[1] = {x, y, z};
+    cubes[1][d] -= 1;
+    return 2;
   };
+  std::array<std::array<int, 3>, 8> cubes;
   std::unordered_set<std::int64_t> visited;
   long long change = 0;
   std::vector<std::int64_t> contactFaces;
@@ -200,8 +200,9 @@ int PartVoxels::loopsThrough(int a, int b, bool joinedElsewhere) const {
             const std::int64_t id = key(cx, cy, cz, type);
             if (!visited.insert(id).second) continue;
             bool seenA = false, seenB = false, other = false;
-            for (const auto& c : cubesOf(cx, cy, cz, type)) {
-              const int l = at(c[0], c[1], c[2]);
+            const int count = cubesOf(cx, cy, cz, type, cubes);
+            for (int i = 0; i < count; ++i) {
+              const int l = at(cubes[i][0], cubes[i][1], cubes[i][2]);
               seenA |= l == a;
               seenB |= l == b;
               other |= l >= 0 && l != a && l != b;

@@ -19,6 +19,12 @@ using TriangleKey = std::array<Corner, 3>;  // corners sorted: the same for both
 
 Corner cornerOf(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
 
+std::vector<const TriMesh*> pointersTo(const std::vector<TriMesh>& meshes) {
+  std::vector<const TriMesh*> pointers;
+  for (const TriMesh& m : meshes) pointers.push_back(&m);
+  return pointers;
+}
+
 TriangleKey keyOf(const TriMesh& m, const Face& f) {
   TriangleKey k{cornerOf(m.vertices[f[0]]), cornerOf(m.vertices[f[1]]), cornerOf(m.vertices[f[2]])};
   std::sort(k.begin(), k.end());
@@ -83,11 +89,7 @@ std::vector<SharedFaces> touchingPairs(const std::vector<const TriMesh*>& meshes
   return pairs;
 }
 
-std::vector<SharedFaces> touchingPairs(const std::vector<TriMesh>& meshes) {
-  std::vector<const TriMesh*> pointers;
-  for (const TriMesh& m : meshes) pointers.push_back(&m);
-  return touchingPairs(pointers);
-}
+std::vector<SharedFaces> touchingPairs(const std::vector<TriMesh>& meshes) { return touchingPairs(pointersTo(meshes)); }
 
 TriMesh joinPieces(const TriMesh& a, const TriMesh& b) {
   TriMesh out;
@@ -122,6 +124,7 @@ std::vector<SharedFaces> sharedFacePairs(const std::vector<const TriMesh*>& mesh
   std::vector<std::pair<TriangleKey, std::pair<int, int>>> shared;
   for (std::size_t s = 0, t = 0; s < entries.size(); s = t) {
     for (t = s; t < entries.size() && entries[t].hash == entries[s].hash; ++t) {}
+    if (t - s < 2) continue;  // a triangle no other holds (most of them)
     // Within one hash, group by the key itself; a key held by exactly two meshes is shared.
     std::vector<std::pair<TriangleKey, int>> keys;
     for (std::size_t x = s; x < t; ++x)
@@ -148,9 +151,7 @@ std::vector<SharedFaces> sharedFacePairs(const std::vector<const TriMesh*>& mesh
 }
 
 std::vector<SharedFaces> sharedFacePairs(const std::vector<TriMesh>& meshes) {
-  std::vector<const TriMesh*> pointers;
-  for (const TriMesh& m : meshes) pointers.push_back(&m);
-  return sharedFacePairs(pointers);
+  return sharedFacePairs(pointersTo(meshes));
 }
 
 }  // namespace acd

@@ -161,8 +161,8 @@ HullBudgetReport limitHullCount(Decomposition& d, const HullBudgetOptions& optio
   tbb::task_arena arena = workerArena(options.threads);
 
   while (static_cast<int>(groups.size()) > options.maxHulls) {
-    std::vector<TriMesh> meshes;
-    for (const Group& g : groups) meshes.push_back(g.mesh);
+    std::vector<const TriMesh*> meshes;
+    for (const Group& g : groups) meshes.push_back(&g.mesh);
     std::vector<std::pair<int, int>> pairs;
     for (const SharedFaces& s : sharedFacePairs(meshes)) pairs.emplace_back(s.a, s.b);
     std::sort(pairs.begin(), pairs.end());
