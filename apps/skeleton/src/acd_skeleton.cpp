@@ -149,10 +149,12 @@ std::vector<Cut> findCuts(const std::vector<acd::TriMesh>& components) {
         continue;
       // Measured on the side whose triangles lie wholly on the other (the side a later cut split):
       // exact there, where the other side's larger triangles would need splitting.
+      // Both sides are asked: a small face lying on a large one is found only from the small side
+      // (the large triangle's splits may all miss it).
       const Side onA = contactSide(components[a], surfaces[b]);
-      if (onA.patches.empty()) continue;
       const Side onB = contactSide(components[b], surfaces[a]);
-      const bool useB = !onB.patches.empty() && onB.whole * onA.area > onA.whole * onB.area;
+      if (onA.patches.empty() && onB.patches.empty()) continue;
+      const bool useB = onA.patches.empty() || (!onB.patches.empty() && onB.whole * onA.area > onA.whole * onB.area);
       std::vector<Cut> local = useB ? onB.patches : onA.patches;
       for (Cut& cut : local) {
         cut.a = a;

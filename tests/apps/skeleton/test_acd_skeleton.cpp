@@ -100,6 +100,22 @@ TEST(AcdSkeleton, CutsAreFoundWhereCapsDoNotShareTheirTriangles) {
   }
 }
 
+TEST(AcdSkeleton, ASmallFaceOnALargeOneIsFoundInEitherOrder) {
+  // A 0.2 x 0.2 post under a 10 x 10 x 10 block: the block's bottom is two triangles of area 50,
+  // whose splits (down to 1/256 of them) all miss the post; only the post's own side sees the
+  // contact. Listed block first, it was missed until 2026-12-01.
+  const acd::TriMesh block = acd::shapes::box(Vec3(0, 0, 0), Vec3(10, 10, 10));
+  const acd::TriMesh post = acd::shapes::box(Vec3(4.9, 4.9, -1), Vec3(5.1, 5.1, 0));
+  for (const bool blockFirst : {true, false}) {
+    const std::vector<Cut> cuts = blockFirst ? findCuts({block, post}) : findCuts({post, block});
+    ASSERT_EQ(cuts.size(), 1u) << blockFirst;
+    EXPECT_NEAR(cuts[0].area, 0.04, 1e-12);
+    EXPECT_LT((cuts[0].centre - Vec3(5, 5, 0)).norm(), 1e-12);
+    // The normal points out of the first component: down out of the block, up out of the post.
+    EXPECT_NEAR(cuts[0].normal.z(), blockFirst ? -1.0 : 1.0, 1e-12);
+  }
+}
+
 TEST(AcdSkeleton, RingCutInTwoHasTwoCutsAndACycle) {
   const acd::TriMesh ring = acd::shapes::torus(2.0, 0.5, 48, 16);
   const acd::CutResult cut = acd::cutByPlane(ring, acd::Plane::through(Vec3::Zero(), Vec3(1, 0.1, 0)));
