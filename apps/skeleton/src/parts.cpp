@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <set>
 #include <tuple>
 
@@ -95,6 +96,31 @@ class Merger {
       }
       if (bestPair.first < 0) return;
       join(bestPair.first, bestPair.second);
+    }
+  }
+
+  /// Specks: a part of less than `leastVolume` is below the decomposition's resolution (whether
+  /// tau cuts it off at all can change with a bend elsewhere); it goes into the neighbour it shares
+  /// the most area with, the smallest first.
+  void mergeSpecks(double leastVolume) {
+    for (;;) {
+      const auto between = contacts();
+      int smallest = -1;
+      for (const auto& [pair, k] : between)
+        for (int p : {pair.first, pair.second})
+          if (volume_[p] < leastVolume &&
+              (smallest < 0 || volume_[p] < volume_[smallest] ||
+               (volume_[p] == volume_[smallest] && members_[p][0] < members_[smallest][0])))
+            smallest = p;
+      if (smallest < 0) return;
+      int into = -1;
+      double most = -1.0;
+      for (const auto& [pair, k] : between) {
+        if (pair.first != smallest && pair.second != smallest) continue;
+        const int other = pair.first == smallest ? pair.second : pair.first;
+        if (k.area > most || (k.area == most && members_[other][0] < members_[into][0])) most = k.area, into = other;
+      }
+      join(smallest, into);
     }
   }
 
@@ -201,7 +227,8 @@ void keepJoints(const std::vector<acd::TriMesh>& components, const std::vector<C
 
 }  // namespace
 
-Parts groupIntoParts(const std::vector<acd::TriMesh>& components, int genus, bool handleCycles, double tubeRatio) {
+Parts groupIntoParts(const std::vector<acd::TriMesh>& components, int genus, bool handleCycles, double tubeRatio,
+                     double leastVolumeShare) {
   const int n = static_cast<int>(components.size());
   std::vector<double> volume(n);
   std::vector<Vec3> centroid(n);
@@ -213,6 +240,7 @@ Parts groupIntoParts(const std::vector<acd::TriMesh>& components, int genus, boo
   Merger merger(components, cuts, volume);
   merger.mergeTubes(tubeRatio);
   merger.mergeStubs();
+  merger.mergeSpecks(leastVolumeShare * std::accumulate(volume.begin(), volume.end(), 0.0));
 
   Parts parts;
   parts.merges = merger.merges();

@@ -43,6 +43,12 @@ constexpr double kTubeRatio = 0.5;
 /// crease where two parts meet, or a bump. It goes into that neighbour.
 constexpr double kStubElongation = 1.0;
 
+/// A part of less than this share of the solid's volume is a speck: about the volume of a cube of
+/// side tau against the cube the whole shape fills, the scale below which a decomposition at tau
+/// resolves nothing (whether it cuts a thin tail off can change with a bend elsewhere). It goes
+/// into the neighbour it shares the most area with.
+inline double leastPartShare(double tau) { return tau * tau * tau; }
+
 struct Joint {
   int a = -1, b = -1;          // the two parts, a < b
   double area = 0.0;           // of all cut patches between them
@@ -66,7 +72,7 @@ struct Parts {
 /// `genus` = handles of the solid they make up (genusOf). Depends only on the components' shapes
 /// and order: an invariant decomposition gives the same parts in every pose.
 Parts groupIntoParts(const std::vector<acd::TriMesh>& components, int genus, bool handleCycles = false,
-                     double tubeRatio = kTubeRatio);
+                     double tubeRatio = kTubeRatio, double leastVolumeShare = 0.0);
 
 /// A Component node per part (at its centroid; `source` = part index), then a Cut node per joint
 /// joined to its two parts.

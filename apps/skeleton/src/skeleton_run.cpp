@@ -165,7 +165,7 @@ int decomposeModels(const RunParameters& p, std::vector<Model>& models) {
     m.components_ = skeletonFromComponents(pieces);
     m.componentsContracted = contractDegreeTwo(m.components_);
     m.genus = genusOf(m.mesh);
-    const Parts parts = groupIntoParts(pieces, m.genus, p.handleCycles);
+    const Parts parts = groupIntoParts(pieces, m.genus, p.handleCycles, kTubeRatio, leastPartShare(p.tau));
     m.parts = static_cast<int>(parts.members.size());
     m.partMembers = parts.members;
     m.partMerges = parts.merges;

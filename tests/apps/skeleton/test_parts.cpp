@@ -1,5 +1,5 @@
 // Parts and their skeleton: tubes cut across are one part, a thin limb on a wide body is its own;
-// a ring's handle counted, and drawn as a cycle only when asked; a jointed stick figure of capsules, straight and bent at a joint by a
+// a speck below tau's resolution goes into its neighbour; a ring's handle counted, and drawn as a cycle only when asked; a jointed stick figure of capsules, straight and bent at a joint by a
 // known angle, whose right skeleton is known by construction; matching by shared vertices.
 #include <gtest/gtest.h>
 
@@ -146,6 +146,39 @@ TEST(Parts, AThinLimbOnAWideBodyIsAPartOfItsOwn) {
   const Graph g = skeletonFromParts(parts);
   EXPECT_EQ(g.nodeCount(), 3);  // two parts and the cut between them
   EXPECT_EQ(g.edgeCount(), 2);
+}
+
+TEST(Parts, ASpeckBelowTausResolutionGoesIntoItsNeighbour) {
+  // A body 10 x 10 x 10 (volume 1000), a limb 1 x 1 x 4 on its top (4: 0.4 %), and a thin tail of
+  // two boxes 0.2 x 0.2 x 1 under it (0.04 each: 0.008 % together), all touching face to face.
+  // The tail's two boxes are a tube cut across (ratio 1); neither the limb nor the tail meets the
+  // body across a tube (ratios 0.01 and 0.0004) or is a stub (elongations 4 and 10): three parts.
+  // At tau = 0.1 a speck holds less than tau^3 of the volume (1): the tail goes into the body,
+  // the limb stays.
+  const std::vector<acd::TriMesh> pieces{
+      acd::shapes::box(Vec3(4.9, 4.9, -2), Vec3(5.1, 5.1, -1)),   // tail tip
+      acd::shapes::box(Vec3(0, 0, 0), Vec3(10, 10, 10)),          // body
+      acd::shapes::box(Vec3(4.9, 4.9, -1), Vec3(5.1, 5.1, 0)),    // tail root
+      acd::shapes::box(Vec3(4.5, 4.5, 10), Vec3(5.5, 5.5, 14))};  // limb
+  const Parts plain = groupIntoParts(pieces, 0);
+  EXPECT_EQ(plain.members.size(), 3u);
+  EXPECT_DOUBLE_EQ(leastPartShare(0.1), 1e-3);
+  const Parts parts = groupIntoParts(pieces, 0, false, kTubeRatio, leastPartShare(0.1));
+  ASSERT_EQ(parts.members.size(), 2u);
+  EXPECT_EQ(parts.members[0], (std::vector<int>{0, 1, 2}));
+  EXPECT_EQ(parts.members[1], std::vector<int>{3});
+  EXPECT_NEAR(parts.volume[0], 1000.08, 1e-9);
+  ASSERT_EQ(parts.joints.size(), 1u);
+  EXPECT_NEAR(parts.joints[0].area, 1.0, 1e-9);
+  // The limb is no speck at a share below its own (0.4 %), and everything is one above it.
+  EXPECT_EQ(groupIntoParts(pieces, 0, false, kTubeRatio, 3e-3).members.size(), 2u);
+  EXPECT_EQ(groupIntoParts(pieces, 0, false, kTubeRatio, 5e-3).members.size(), 1u);
+  // The same parts whatever order the pieces come in (the tail listed first or last).
+  const std::vector<acd::TriMesh> reordered{pieces[1], pieces[3], pieces[2], pieces[0]};
+  const Parts again = groupIntoParts(reordered, 0, false, kTubeRatio, leastPartShare(0.1));
+  ASSERT_EQ(again.members.size(), 2u);
+  EXPECT_EQ(again.members[0], (std::vector<int>{0, 2, 3}));
+  EXPECT_EQ(again.members[1], std::vector<int>{1});
 }
 
 TEST(Parts, ARingsHandleIsCountedAndDrawnOnlyWhenAsked) {
