@@ -12,7 +12,8 @@
 //   mean section  = volume / extent along that normal;  merged while the ratio >= kTubeRatio.
 //
 // Then the stubs (kStubElongation): wedges where two parts meet and bumps, which come and go with
-// small changes of the surface, go into the neighbour they share most with.
+// small changes of the surface, go into the neighbour they share most with; so do the specks, parts
+// of less than tau^3 of the volume (leastPartShare), detail below what a decomposition at tau resolves.
 //
 // The graph of parts is a tree: a maximum spanning forest of their adjacencies by shared area.
 // A solid's handles are counted on a voxel grid (part_voxels.hpp), per part and per adjacency a
