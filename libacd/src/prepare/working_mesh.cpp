@@ -130,31 +130,38 @@ class Collapser {
     return list;
   }
 
-  std::vector<int> neighbours(int v) {
-    std::vector<int> out;
+  /// The vertices sharing a live face with v, sorted, into `out` (a buffer kept between calls:
+  /// the collapses would otherwise spend a quarter of their time allocating).
+  void neighbours(int v, std::vector<int>& out) {
+    out.clear();
     for (int f : facesAround(v))
       for (int u : faces_[f])
         if (u != v) out.push_back(u);
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
-    return out;
   }
 
   bool collapse(const Candidate& c) {
     const int a = c.a, b = c.b;
     const Vec3 p = c.ontoB ? pos_[b] : pos_[a];
-    const std::vector<int> fa = facesAround(a), fb = facesAround(b);
-    std::vector<int> shared, kept;
+    std::vector<int>&fa = fa_, &fb = fb_, &shared = shared_, &kept = kept_, &changed = changed_;
+    fa = facesAround(a);
+    fb = facesAround(b);
+    shared.clear();
+    kept.clear();
     for (int f : fa) (contains(f, b) ? shared : kept).push_back(f);
     for (int f : fb)
       if (!contains(f, a)) kept.push_back(f);
-    std::vector<int> changed = kept;  // every face the collapse moves or removes
+    changed = kept;  // every face the collapse moves or removes
     changed.insert(changed.end(), shared.begin(), shared.end());
     if (shared.size() != 2 || liveFaces_ - 2 < kLeastFaces) return false;
     // The link condition: the ends' only common neighbours are the two faces' third corners, so the
     // surface stays a manifold.
-    const std::vector<int> na = neighbours(a), nb = neighbours(b);
-    std::vector<int> common;
+    neighbours(a, na_);
+    neighbours(b, nb_);
+    const std::vector<int>&na = na_, &nb = nb_;
+    std::vector<int>& common = common_;
+    common.clear();
     std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(common));
     if (common.size() != 2) return false;
 
@@ -241,7 +248,8 @@ class Collapser {
     vertexFaces_[b].clear();
     ++version_[a];
     ++version_[b];
-    for (int n : neighbours(a)) push(a, n);
+    neighbours(a, na_);
+    for (int n : na_) push(a, n);
     return true;
   }
 
@@ -259,6 +267,7 @@ class Collapser {
   std::vector<unsigned> version_;
   std::vector<std::vector<int>> homed_;       // by face: the input vertices it is nearest to (as far as known)
   std::vector<std::pair<int, int>> rehomed_;  // a collapse's new (face, input vertex) pairs
+  std::vector<int> fa_, fb_, shared_, kept_, changed_, na_, nb_, common_;  // a collapse's scratch lists
   std::priority_queue<Candidate, std::vector<Candidate>, Later> heap_;
   int liveFaces_ = 0;
   double inputToWorking_ = 0.0;
