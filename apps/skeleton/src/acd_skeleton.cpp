@@ -148,9 +148,8 @@ std::vector<Cut> findCuts(const std::vector<acd::TriMesh>& components) {
           ((x.lo.array() - tolerance) > y.hi.array()).any() || ((y.lo.array() - tolerance) > x.hi.array()).any())
         continue;
       // Measured on the side whose triangles lie wholly on the other (the side a later cut split):
-      // exact there, where the other side's larger triangles would need splitting.
-      // Both sides are asked: a small face lying on a large one is found only from the small side
-      // (the large triangle's splits may all miss it).
+      // exact there, where the other side's larger triangles would need splitting. Both sides are
+      // asked: a small face on a large one is seen only from the small side.
       const Side onA = contactSide(components[a], surfaces[b]);
       const Side onB = contactSide(components[b], surfaces[a]);
       if (onA.patches.empty() && onB.patches.empty()) continue;

@@ -99,9 +99,8 @@ class Merger {
     }
   }
 
-  /// Specks: a part of less than `leastVolume` is below the decomposition's resolution (whether
-  /// tau cuts it off at all can change with a bend elsewhere); it goes into the neighbour it shares
-  /// the most area with, the smallest first.
+  /// Specks (leastPartShare): each part of less than `leastVolume` goes into the neighbour it
+  /// shares the most area with, the smallest first.
   void mergeSpecks(double leastVolume) {
     for (;;) {
       const auto between = contacts();
@@ -118,7 +117,8 @@ class Merger {
       for (const auto& [pair, k] : between) {
         if (pair.first != smallest && pair.second != smallest) continue;
         const int other = pair.first == smallest ? pair.second : pair.first;
-        if (k.area > most || (k.area == most && members_[other][0] < members_[into][0])) most = k.area, into = other;
+        if (into < 0 || k.area > most || (k.area == most && members_[other][0] < members_[into][0]))
+          most = k.area, into = other;
       }
       join(smallest, into);
     }
