@@ -90,3 +90,26 @@ TEST(RealAssemblies, EveryHullWithinTauOfTheInputAndTheInputCovered) {
     EXPECT_LE(m.inputOutside, 1e-6 * radius) << name;
   }
 }
+
+// A CAD export's ear-clipped faces are fans of slivers; cuts through them leave needles along the
+// pocket's floor that once misled the pocket measure into nine cuts at one notch and then the
+// whole plate through its wrap (56 hulls at tau 0.0175). The hull, measured directly after three
+// such stalls, shows the true notch: the pocket's corners.
+TEST(CadExports, ASliveredPlateIsDecomposedWithoutItsWrap) {
+  const ReadResult read = readMesh(std::string(ACD_TEST_DATA_DIR) + "/pocketed_plate_earclipped.off");
+  ASSERT_TRUE(read.status.ok()) << read.status.message;
+  DecomposeOptions o = recommendedOptions();
+  o.tau = 0.0175;
+  const Decomposition d = decompose(read.mesh, o);
+  ASSERT_TRUE(d.status.ok()) << d.status.message;
+  EXPECT_FALSE(d.wrap.used);
+  for (const Component& c : d.components) EXPECT_FALSE(c.unresolved) << c.note;
+  // A plate, one octagonal pocket and four bores: 22 hulls (the same plate as OpenSCAD
+  // triangulates it: 22); the wrap took 56.
+  EXPECT_LE(d.components.size(), 30u);
+  const double radius = 1.0 / d.normalization.scale;
+  const Measured m = measure(read.mesh, d);
+  EXPECT_LE(m.hullsOff, 1.1 * o.tau * radius);
+  EXPECT_LE(m.inputOutside, 1e-6 * radius);
+}
+

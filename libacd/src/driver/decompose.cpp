@@ -22,8 +22,6 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -71,6 +69,9 @@ int nearestVertex(const TriMesh& mesh, const Vec3& p) {
 /// A merge may add at most this share of the union's volume to the hull volume beyond the two
 /// hulls it replaces (elephant at tau 0.05: 0.03 keeps IoU at the level without merging).
 constexpr double kMergeHullGrowth = 0.03;
+
+/// Stalls of a pocket notch before its piece's hull is measured directly (processPiece).
+constexpr int kStallsBeforeDirectMeasure = 3;
 
 /// The children of a cut: one piece per side's part, remembering the notch they were cut for.
 std::vector<Piece> childrenOf(const Piece& piece, CutChoice& choice, const Vec3& notch, double concavity, int stalls) {
@@ -125,17 +126,38 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
     c.note = "maximum cut depth reached";
     return out;
   }
-  const Vec3& notch = piece.mesh.vertices[notchIndex];
 
   // The estimate wobbles a little with the bridge clustering, so "unchanged" means within a tenth of tau.
-  const bool stalled = piece.parentConcavity >= 0 && concavity > piece.parentConcavity - 0.1 * o.tau &&
-                       (notch - piece.parentNotch).norm() < 0.5 * o.tau;
-  const int stalls = stalled ? piece.stalls + 1 : 0;
+  auto stalledAt = [&](int notchAt, double measured) {
+    return piece.parentConcavity >= 0 && measured > piece.parentConcavity - 0.1 * o.tau &&
+           (piece.mesh.vertices[notchAt] - piece.parentNotch).norm() < 0.5 * o.tau;
+  };
+  int stalls = stalledAt(notchIndex, concavity) ? piece.stalls + 1 : 0;
+  // Cuts through a pocket notch that leave it as it was, again and again, mean the pocket measure
+  // is misled there (slivers that earlier cuts left along a CAD face can join a pocket to a bridge
+  // it does not face): from the third stall the hull is measured directly, as for a final piece.
+  if (stalls >= kStallsBeforeDirectMeasure && !fromExcess) {
+    t = Clock::now();
+    const TriMesh& hull = map.hull.mesh;
+    const HullExcess e = measureHullExcess(piece.mesh, hull, kExcessLimit * o.tau, kExcessResolution * o.tau);
+    out.times.concavity += secondsSince(t);
+    c.hullExcess = e.distance;
+    if (!e.exceeds) {  // the notch was the estimate's alone: the hull keeps tau
+      c.hull = hull;
+      return out;
+    }
+    fromExcess = true;
+    concavity = e.distance;
+    bridgeNormal = faceNormal(hull, e.hullFace).normalized();
+    notchIndex = nearestVertex(piece.mesh, e.surfacePoint);
+    stalls = stalledAt(notchIndex, concavity) ? piece.stalls + 1 : 0;
+  }
   if (stalls > 8) {  // nothing we know resolves this notch: report it rather than loop
     c.unresolved = true;
     c.note = "nine cuts in a row left the notch's concavity unchanged";
     return out;
   }
+  const Vec3& notch = piece.mesh.vertices[notchIndex];
   const CutSite site{notchIndex, bridgeNormal, stalls, fromExcess, o.cutAtNotchOnly};
   const std::vector<Plane> candidates = candidatePlanes(piece.mesh, graph, map, o, site, out.times.grouping);
   t = Clock::now();
