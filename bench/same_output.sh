@@ -70,8 +70,9 @@ for model in $MODELS; do
     mkdir -p "$dir"
     rc=0
     "$ACD" decompose "$mesh" -t "$TAU" -o "$dir" --quiet "${THREADS[@]}" >"$dir/../$model.stdout" 2>"$dir/../$model.stderr" || rc=$?
-    # 4: finished with some component above tau (cow); anything else but 0 is a failure.
-    if (( rc != 0 && rc != 4 )); then
+    # 4: finished with some component above tau; 8: a hull stands off the model beyond tau (cow at
+    # 0.0175, through its wrap). Both are outcomes to compare; anything else but 0 is a failure.
+    if (( rc != 0 && rc != 4 && rc != 8 )); then
         echo "same_output: $model: acd exited $rc (see $OUT/$model.stderr)" >&2
         failed=1
         continue

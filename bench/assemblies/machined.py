@@ -20,7 +20,10 @@ import sys
 import tempfile
 
 import numpy as np
-import mapbox_earcut
+try:
+    import mapbox_earcut
+except ImportError:
+    sys.exit("machined.py: mapbox_earcut not found (apt-get install python3-mapbox-earcut)")
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from generate import read_stl, write_stl  # noqa: E402
