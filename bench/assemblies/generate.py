@@ -9,7 +9,7 @@ flipped inside out, a cap left open, faces inside a part.
     bench/assemblies/generate.py OUT_DIR [--count N] [--seed S]
 
 Writes OUT_DIR/NAME.stl (or .obj) and OUT_DIR/manifest.tsv (name, kind, parts, defects). The
-same count and seed give the same files (OpenSCAD's output is deterministic). Needs Debian's
+same count and seed give the same files (OpenSCAD writes its triangles in varying order; they are sorted). Needs Debian's
 openscad and openscad-mcad.
 """
 import argparse
@@ -143,6 +143,16 @@ def read_stl(path):
             for i in range(n)]
 
 
+def canonical_order(tris):
+    """The triangles sorted, each starting at its smallest corner: OpenSCAD writes the same
+    triangles in a different order from run to run, and the files should not change."""
+    turned = []
+    for t in tris:
+        k = min(range(3), key=lambda i: t[i])
+        turned.append(tuple(t[k:]) + tuple(t[:k]))
+    return sorted(turned)
+
+
 def write_stl(path, tris):
     with open(path, "wb") as f:
         f.write(b"acd generated assembly".ljust(80, b" "))
@@ -199,7 +209,7 @@ def export_part(body, work, index):
     run = subprocess.run(["openscad", "-o", stl, scad], capture_output=True, text=True)
     if run.returncode != 0 or not os.path.exists(stl):
         sys.exit("generate.py: openscad failed on %s:\n%s" % (body, run.stderr[-2000:]))
-    return read_stl(stl)
+    return canonical_order(read_stl(stl))
 
 
 def main():

@@ -26,7 +26,7 @@ except ImportError:
     sys.exit("machined.py: mapbox_earcut not found (apt-get install python3-mapbox-earcut)")
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from generate import read_stl, write_stl  # noqa: E402
+from generate import canonical_order, read_stl, write_stl  # noqa: E402
 
 
 # ---------------------------------------------------------------- the kinds of part (millimetres)
@@ -80,8 +80,10 @@ def ribbed_housing(r):
         w, d, h, wall, wall, wall, w - 2 * wall, d - 2 * wall, h)
     ribs = " ".join("translate([%g,%g,0]) cube([%g,%g,%g]);" % (w * (i + 1) / 4 - wall / 2, 0, wall, d, h * 0.6)
                     for i in range(3))
+    # Bosses sink 1 mm into the walls (as a CAD fillet joins them): a boss tangent to a wall
+    # exports as a surface touching itself along a line.
     bosses = " ".join("translate([%g,%g,0]) difference(){cylinder(r=4,h=%g); cylinder(r=1.6,h=%g);}" % (
-        x, y, h * 0.8, h) for x in (wall + 4, w - wall - 4) for y in (wall + 4, d - wall - 4))
+        x, y, h * 0.8, h) for x in (wall + 3, w - wall - 3) for y in (wall + 3, d - wall - 3))
     return "union(){%s %s %s}" % (shell, ribs, bosses)
 
 
@@ -205,7 +207,7 @@ def export(body, work):
     run = subprocess.run(["openscad", "-o", stl, scad], capture_output=True, text=True)
     if run.returncode != 0 or not os.path.exists(stl):
         sys.exit("machined.py: openscad failed on %s:\n%s" % (body, run.stderr[-2000:]))
-    return read_stl(stl)
+    return canonical_order(read_stl(stl))
 
 
 def main():
