@@ -201,14 +201,15 @@ def add_defect(r, parts, kind):
         parts[k] = parts[k] + [(a, b, c), (a, c, d)]
 
 
-def export_part(body, work, index):
+def export_part(body, work, index, preamble=MCAD):
+    """One part's triangles as OpenSCAD exports `preamble` + `body`, in canonical order."""
     scad = os.path.join(work, "part%d.scad" % index)
     stl = os.path.join(work, "part%d.stl" % index)
     with open(scad, "w") as f:
-        f.write(MCAD + body + "\n")
+        f.write(preamble + body + "\n")
     run = subprocess.run(["openscad", "-o", stl, scad], capture_output=True, text=True)
     if run.returncode != 0 or not os.path.exists(stl):
-        sys.exit("generate.py: openscad failed on %s:\n%s" % (body, run.stderr[-2000:]))
+        sys.exit("%s: openscad failed on %s:\n%s" % (os.path.basename(sys.argv[0]), body, run.stderr[-2000:]))
     return canonical_order(read_stl(stl))
 
 

@@ -11,11 +11,9 @@ Writes OUT_DIR/NAME.stl and OUT_DIR/manifest.tsv (name, kind, faces). The same c
 give the same files. Needs Debian's openscad and python3-mapbox-earcut.
 """
 import argparse
-import math
 import os
 import random
 import shutil
-import subprocess
 import sys
 import tempfile
 
@@ -26,7 +24,7 @@ except ImportError:
     sys.exit("machined.py: mapbox_earcut not found (apt-get install python3-mapbox-earcut)")
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from generate import canonical_order, read_stl, write_stl  # noqa: E402
+from generate import export_part, write_stl  # noqa: E402
 
 
 # ---------------------------------------------------------------- the kinds of part (millimetres)
@@ -200,16 +198,6 @@ def ear_clipped(tris):
     return out
 
 
-def export(body, work):
-    scad, stl = os.path.join(work, "part.scad"), os.path.join(work, "part.stl")
-    with open(scad, "w") as f:
-        f.write("$fn=48;\n" + body + "\n")
-    run = subprocess.run(["openscad", "-o", stl, scad], capture_output=True, text=True)
-    if run.returncode != 0 or not os.path.exists(stl):
-        sys.exit("machined.py: openscad failed on %s:\n%s" % (body, run.stderr[-2000:]))
-    return canonical_order(read_stl(stl))
-
-
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("out")
@@ -224,7 +212,7 @@ def main():
         r = random.Random(args.seed * 100019 + i)
         kind = KINDS[i % len(KINDS)]
         with tempfile.TemporaryDirectory() as work:
-            tris = ear_clipped(export(kind(r), work))
+            tris = ear_clipped(export_part(kind(r), work, 0, preamble="$fn=48;\n"))
         name = "%02d_%s" % (i, kind.__name__)
         write_stl(os.path.join(args.out, name + ".stl"), tris)
         manifest.append("%s\t%s\t%d" % (name, kind.__name__, len(tris)))
