@@ -22,6 +22,8 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -103,21 +105,28 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
   // a piece is final only when its hull, measured directly, is within tau too. If not, the cut
   // goes through the surface point deepest below the hull, across the hull face above it.
   bool fromExcess = false;
-  if (map.concavity <= o.tau || map.notch < 0) {
+  // True when the hull is within tau (the piece is final); else the notch becomes the surface
+  // point deepest below it.
+  auto hullWithinTau = [&] {
     t = Clock::now();
     const TriMesh& hull = map.hull.mesh;  // the hull of the piece's vertices
     const HullExcess e = measureHullExcess(piece.mesh, hull, kExcessLimit * o.tau, kExcessResolution * o.tau);
     out.times.concavity += secondsSince(t);
-    c.concavity = std::max(c.concavity, e.distance);
     c.hullExcess = e.distance;
     if (!e.exceeds) {
       c.hull = hull;  // normalised units, for the merge pass (decomposeSolid replaces it)
-      return out;
+      return true;
     }
     fromExcess = true;
     concavity = e.distance;
     bridgeNormal = faceNormal(hull, e.hullFace).normalized();
     notchIndex = nearestVertex(piece.mesh, e.surfacePoint);
+    return false;
+  };
+  if (map.concavity <= o.tau || map.notch < 0) {
+    const bool final = hullWithinTau();
+    c.concavity = std::max(c.concavity, c.hullExcess);
+    if (final) return out;
   } else {
     bridgeNormal = map.bridges[map.vertexBridge[map.notch]].normal;
   }
@@ -137,19 +146,7 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
   // is misled there (slivers that earlier cuts left along a CAD face can join a pocket to a bridge
   // it does not face): from the third stall the hull is measured directly, as for a final piece.
   if (stalls >= kStallsBeforeDirectMeasure && !fromExcess) {
-    t = Clock::now();
-    const TriMesh& hull = map.hull.mesh;
-    const HullExcess e = measureHullExcess(piece.mesh, hull, kExcessLimit * o.tau, kExcessResolution * o.tau);
-    out.times.concavity += secondsSince(t);
-    c.hullExcess = e.distance;
-    if (!e.exceeds) {  // the notch was the estimate's alone: the hull keeps tau
-      c.hull = hull;
-      return out;
-    }
-    fromExcess = true;
-    concavity = e.distance;
-    bridgeNormal = faceNormal(hull, e.hullFace).normalized();
-    notchIndex = nearestVertex(piece.mesh, e.surfacePoint);
+    if (hullWithinTau()) return out;  // the notch was the estimate's alone: the hull keeps tau
     stalls = stalledAt(notchIndex, concavity) ? piece.stalls + 1 : 0;
   }
   if (stalls > 8) {  // nothing we know resolves this notch: report it rather than loop
