@@ -404,6 +404,10 @@ def decompose_seeds():
     # CGAL's alpha wrap read the box of an empty tree (UndefinedBehaviorSanitizer).
     out["finding-2026-11-29-flat-wrap.bin"] = base64.b64decode(
         "wlAU8ogCAAAAAAAAAP5zmcT//////////////////////wEAAAAAAAAAv+SBNB0Imt3aXfnQ")
+    # 2026-12-02 (CI smoke): a self-crossing solid at tau 0.1 whose stalled piece was made final by
+    # its hull; the component kept the misled pocket measure (0.109) as its concavity.
+    out["finding-2026-12-02-stall.bin"] = base64.b64decode(
+        "LEIht39yaBgBD/qz/qxnnX/vZTIhISEhISEhISEhISEhISEhISEhISEhISEhISEhISEhISEhISEhISEhIe9nc3R2")
     return out
 
 

@@ -260,7 +260,7 @@ CLI::App* addDecomposeCommand(CLI::App& app, DecomposeArgs& a) {
   dec->add_option("model", a.model, "Input mesh")->required();
   dec->add_option("-t,--tau", a.options.tau, "Concavity tolerance, in units of the model's enclosing-sphere radius. Promised: every hull stays within tau of the model "
                   "(exit 8 when one does not); every piece the recursion leaves has concavity <= tau (or, where cuts stall on a notch "
-                  "the pocket estimate sees, its hull measured within tau of the piece), but a merged component's own "
+                  "the pocket estimate sees, its hull and its vertices' depth below the hull measured within tau), but a merged component's own "
                   "concavity is not bounded (its pockets may lie in its neighbours; --merge-scope component bounds it)")
       ->capture_default_str();
   dec->add_option("--epsilon", a.options.epsilon, "Bridge clustering tolerance (default tau/2)");

@@ -5,6 +5,7 @@
 #include <acd/algo/canonical_frame.hpp>
 #include <acd/algo/concavity.hpp>
 #include <acd/algo/cut_choice.hpp>
+#include <acd/algo/hull_depth.hpp>
 #include <acd/algo/hull_excess.hpp>
 #include <acd/algo/merge.hpp>
 #include <acd/algo/parallel.hpp>
@@ -145,8 +146,22 @@ Outcome processPiece(const Piece& piece, const DecomposeOptions& o) {
   // Cuts through a pocket notch that leave it as it was, again and again, mean the pocket measure
   // is misled there (slivers that earlier cuts left along a CAD face can join a pocket to a bridge
   // it does not face): from the third stall the hull is measured directly, as for a final piece.
+  // Final then needs the surface within tau of the hull straight through the inside as well (a
+  // lower bound of the concavity the pocket measure could not see): the component's concavity.
   if (stalls >= kStallsBeforeDirectMeasure && !fromExcess) {
-    if (hullWithinTau()) return out;  // the notch was the estimate's alone: the hull keeps tau
+    if (hullWithinTau()) {
+      t = Clock::now();
+      const HullDepth depth = deepestBelowHull(piece.mesh, map.hull.mesh);
+      out.times.concavity += secondsSince(t);
+      if (depth.distance <= o.tau) {  // the notch was the estimate's alone
+        c.concavity = std::max(depth.distance, c.hullExcess);
+        return out;
+      }
+      fromExcess = true;  // a real notch elsewhere: cut there, across the hull face above it
+      concavity = depth.distance;
+      bridgeNormal = faceNormal(map.hull.mesh, depth.hullFace).normalized();
+      notchIndex = depth.vertex;
+    }
     stalls = stalledAt(notchIndex, concavity) ? piece.stalls + 1 : 0;
   }
   if (stalls > 8) {  // nothing we know resolves this notch: report it rather than loop
