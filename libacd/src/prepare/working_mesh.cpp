@@ -74,6 +74,15 @@ class Collapser {
       inputFacesStart_[v + 1] = inputFacesStart_[v] + static_cast<int>(vertexFaces_[v].size());
     for (std::size_t v = 0; v < n; ++v)
       inputFacesOf_.insert(inputFacesOf_.end(), vertexFaces_[v].begin(), vertexFaces_[v].end());
+    inputFaceCentre_.reserve(inputFaces_.size());
+    inputFaceRadius_.reserve(inputFaces_.size());
+    for (const Face& t : inputFaces_) {
+      const Vec3 centre = (input_[t[0]] + input_[t[1]] + input_[t[2]]) / 3.0;
+      double radius = 0.0;
+      for (int k = 0; k < 3; ++k) radius = std::max(radius, (input_[t[k]] - centre).norm());
+      inputFaceCentre_.push_back(centre);
+      inputFaceRadius_.push_back(radius);
+    }
     for (const Face& t : faces_)
       for (int k = 0; k < 3; ++k)
         if (t[k] < t[(k + 1) % 3]) push(t[k], t[(k + 1) % 3]);  // each edge once (closed, oriented)
@@ -203,7 +212,12 @@ class Collapser {
     auto nearInput = [&](const Vec3& q, int g) {
       auto within = [&](int x) {
         for (int k = inputFacesStart_[x]; k < inputFacesStart_[x + 1]; ++k) {
-          const Face& i = inputFaces_[inputFacesOf_[k]];
+          const int face = inputFacesOf_[k];
+          // Beyond the face's bounding sphere by more than the tolerance (and rounding): the exact
+          // distance is skipped, with the same answer.
+          const double reach = inputFaceRadius_[face] + tolerance_;
+          if ((q - inputFaceCentre_[face]).squaredNorm() > reach * reach * (1 + 1e-9)) continue;
+          const Face& i = inputFaces_[face];
           if (distanceToTriangle(q, input_[i[0]], input_[i[1]], input_[i[2]]) <= tolerance_) return true;
         }
         return false;
@@ -258,6 +272,8 @@ class Collapser {
   const std::vector<Vec3> input_;
   const std::vector<Face> inputFaces_;
   std::vector<int> inputFacesStart_, inputFacesOf_;  // each input vertex's input faces (CSR)
+  std::vector<Vec3> inputFaceCentre_;     // each input face's centroid
+  std::vector<double> inputFaceRadius_;   // and its farthest corner from it
   std::vector<Vec3> pos_;
   std::vector<Face> faces_;
   double tolerance_;
