@@ -82,7 +82,7 @@ py::tuple decompose(const Vertices& vertices, const Faces& faces, const SolidOpt
     if (parameters.ok()) d = acd::decompose(mesh, options);
     if (parameters.ok() && d.status.ok()) post = acd::applyPostPasses(d, settings.post);
     if (parameters.ok() && d.status.ok() && post.status.ok()) {
-      acd::ReportInput input = acd::describeInput(model, mesh);
+      acd::ReportInput input = acd::describeInput(model, mesh, options.threads);
       input.mesh = sceneMesh;
       input.inputOutside = acd::inputOutsideHulls(mesh, d).max;
       input.hullOffInput =
@@ -153,7 +153,7 @@ py::tuple decomposeSurface(const Vertices& vertices, const Faces& faces, acd::Su
         patches.push_back(d.patches[i].mesh);
         names.emplace_back(name);
       }
-      report = acd::reportJson(acd::describeInput(model, mesh), d, acd::objObjectsText(patches, names).size());
+      report = acd::reportJson(acd::describeInput(model, mesh, options.threads), d, acd::objObjectsText(patches, names).size());
     }
   }
   relay.raiseIfFailed();

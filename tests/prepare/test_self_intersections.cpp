@@ -11,6 +11,7 @@
 #include <acd/algo/shapes.hpp>
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
 #include "helpers.hpp"
 
@@ -59,6 +60,28 @@ TEST(SelfIntersections, ThinTriangleThroughABoxCrossesTwoFaces) {
   const TriMesh stick = triangle(Vec3(0.3, 0.6, -1), Vec3(0.31, 0.6, -1), Vec3(0.3, 0.61, 2));
   EXPECT_EQ(countSelfIntersections(concatenate({box, stick})), 2);
   EXPECT_EQ(countSelfIntersections(concatenate({box, stick}), 1), 1);  // the limit stops the count
+}
+
+// Sixteen such triangles (4 x 4, 0.05 apart, away from both diagonals): 32 pairs. The search runs
+// on TBB's threads; the count, and the count stopped at a limit, must not depend on how many.
+TEST(SelfIntersections, CountAndLimitDoNotDependOnTheThreads) {
+  std::vector<TriMesh> parts = {shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1))};
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      const double x = 0.05 + 0.05 * i, y = 0.55 + 0.05 * j;
+      parts.push_back(triangle(Vec3(x, y, -1), Vec3(x + 0.01, y, -1), Vec3(x, y + 0.01, 2)));
+    }
+  const TriMesh pierced = concatenate(parts);
+  for (int threads : {1, 2, 4}) {
+    SCOPED_TRACE(threads);
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+      EXPECT_EQ(countSelfIntersections(pierced), 32);
+      EXPECT_EQ(countSelfIntersections(pierced, 5), 5);
+      EXPECT_EQ(countSelfIntersections(pierced, 32), 32);
+      EXPECT_EQ(countSelfIntersections(pierced, 100), 32);
+    });
+  }
 }
 
 TEST(SelfIntersections, OverlappingBoxesCrossAndSeparateOnesDoNot) {

@@ -119,7 +119,7 @@ int decomposeMesh(DecomposeArgs& a, const acd::TriMesh& mesh) {
   // where a section crosses itself no clean cut exists, and such a shell is repaired around its
   // crossings or decomposed through its wrap (or, with --no-wrap, its components are flagged,
   // never hidden).
-  acd::ReportInput input = acd::describeInput(a.model, mesh);
+  acd::ReportInput input = acd::describeInput(a.model, mesh, a.options.threads);
   input.mesh = a.mesh;
   const int selfIntersections = input.selfIntersections;
   if (selfIntersections > 0)

@@ -75,7 +75,7 @@ int runSurfaceDecompose(SurfaceArgs& a) {
   if (!d.status.ok()) return fail(a.model, d.status);
   // Splitting never cuts through the surface, so a surface that passes through itself is split
   // like any other; the patches then pass through each other where the input did.
-  const acd::ReportInput input = acd::describeInput(a.model, r.mesh);
+  const acd::ReportInput input = acd::describeInput(a.model, r.mesh, a.options.threads);
   const int selfIntersections = input.selfIntersections;
   if (selfIntersections > 0)
     std::fprintf(stderr, "acd: warning: %s intersects itself (%d face pairs); the patches intersect where it does\n",

@@ -29,7 +29,8 @@ struct ReportInput {
 
 /// Diagnosis and self-intersection count of a mesh as read. Call it once the decomposition has
 /// accepted the mesh: counting self-intersections assumes valid indices and finite coordinates.
-ReportInput describeInput(const std::string& model, const TriMesh& mesh);
+/// The count runs on `threads` workers (0: all cores), as DecomposeOptions::threads.
+ReportInput describeInput(const std::string& model, const TriMesh& mesh, int threads = 0);
 
 /// report.json of a solid decomposition: JSON text, keys sorted, indented by 2, newline at the end.
 /// Every number is in normalised units except where the key says otherwise; see README.md.

@@ -1,5 +1,6 @@
 #include <acd/report.hpp>
 #include <acd/version.hpp>
+#include <acd/algo/parallel.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -42,11 +43,11 @@ std::string text(const json& j) { return j.dump(2) + "\n"; }
 
 }  // namespace
 
-ReportInput describeInput(const std::string& model, const TriMesh& mesh) {
+ReportInput describeInput(const std::string& model, const TriMesh& mesh, int threads) {
   ReportInput in;
   in.model = model;
   in.diagnosis = diagnose(mesh);
-  in.selfIntersections = countSelfIntersections(mesh);
+  workerArena(threads).execute([&] { in.selfIntersections = countSelfIntersections(mesh); });
   return in;
 }
 

@@ -44,11 +44,18 @@ int countSelfIntersections(const TriMesh& mesh, int limit) {
   if (copyToSurfaceMesh(mesh, sm) >= 0) return -1;  // not a manifold surface
   int count = 0;
   using Pair = std::pair<SM::Face_index, SM::Face_index>;
+  // In parallel the pairs are found in any order and a few more than the limit may be found
+  // before the search stops: the count is of the set, capped at the limit, so it does not depend
+  // on the threads.
   try {
-    CGAL::Polygon_mesh_processing::self_intersections(sm, CountingOutput<Pair>{&count, limit});
+    if (limit >= 0)
+      CGAL::Polygon_mesh_processing::self_intersections<CGAL::Parallel_if_available_tag>(
+          sm, CountingOutput<Pair>{&count, -1}, CGAL::parameters::maximum_number(limit));
+    else
+      CGAL::Polygon_mesh_processing::self_intersections<CGAL::Parallel_if_available_tag>(sm, CountingOutput<Pair>{&count, -1});
   } catch (const LimitReached&) {
   }
-  return count;
+  return limit >= 0 ? std::min(count, limit) : count;
 }
 
 Untangled removeSelfIntersections(const TriMesh& shell) {
