@@ -1,5 +1,7 @@
 #include <acd/algo/hull_depth.hpp>
 
+#include <acd/algo/convex_polytope.hpp>
+
 #include <algorithm>
 #include <limits>
 #include <vector>
@@ -18,9 +20,7 @@ HullDepth deepestBelowHull(const TriMesh& mesh, const TriMesh& hull) {
     const double length = n.norm();
     if (!(length > 0)) continue;
     const Vec3 unit = n / length;
-    double support = -std::numeric_limits<double>::infinity();
-    for (const Vec3& v : hull.vertices) support = std::max(support, unit.dot(v));
-    planes.push_back({unit, support, static_cast<int>(f)});
+    planes.push_back({unit, maxAlong(hull.vertices, unit), static_cast<int>(f)});
   }
   HullDepth deepest;
   if (planes.empty()) return deepest;
