@@ -32,3 +32,19 @@ TEST(CloseVertexRoots, MatchesAllPairsOnClusteredPoints) {
     for (int i = 0; i < n; ++i) ASSERT_EQ(roots[i], oracle.find(i)) << "tolerance " << tolerance << " vertex " << i;
   }
 }
+
+// Vertices exactly the tolerance apart on a lattice whose lines fall on cell walls: every
+// neighbour is found across the walls (the grid looks across a wall only when a vertex is near it).
+TEST(CloseVertexRoots, JoinsALatticeAtExactlyTheTolerance) {
+  std::vector<Vec3> points;
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 5; ++j)
+      for (int k = 0; k < 4; ++k) points.emplace_back(0.25 * i, 0.25 * j, 0.25 * k);
+  Box3 box;
+  box.lo = Vec3::Zero();
+  box.hi = Vec3(1.25, 1.0, 0.75);
+  for (int v : closeVertexRoots(points, box, 0.25)) EXPECT_EQ(v, 0);
+  // Just below the spacing nothing joins.
+  const std::vector<int> apart = closeVertexRoots(points, box, 0.2499);
+  for (int v = 0; v < static_cast<int>(points.size()); ++v) EXPECT_EQ(apart[v], v);
+}

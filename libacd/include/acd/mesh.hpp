@@ -47,6 +47,15 @@ inline std::uint64_t edgeKey(int a, int b) {
   return (lo << 32) | hi;
 }
 
+/// Each face side (3 * face + k, from corner k to k + 1) by the undirected edge it lies on, the
+/// edges numbered in edgeKey order; -1 for a side whose ends are one vertex. Bucketed by vertex
+/// rather than hashed: millions of edges, no allocation per edge.
+struct SideEdges {
+  std::vector<int> edgeOfSide;
+  int edges = 0;
+};
+SideEdges numberEdges(const std::vector<Face>& faces);
+
 /// Splits a mesh into edge-connected pieces, each with compacted vertices.
 std::vector<TriMesh> splitEdgeConnected(const TriMesh& mesh);
 

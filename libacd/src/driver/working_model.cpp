@@ -46,6 +46,14 @@ class NearestMesh {
   std::pair<int, double> nearestWithDistance(const Vec3& p) const {
     std::array<int, 3> at;
     for (int k = 0; k < 3; ++k) at[k] = std::clamp(static_cast<int>((p[k] - lo_[k]) / cell_), 0, dims_[k] - 1);
+    // How far p stands inside its own cell: a face unseen after ring r is at least r cells and this
+    // far away (less a little for the rounding of cell indices; none when p lies outside the grid).
+    double inside = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < 3; ++k) {
+      const double from = p[k] - (lo_[k] + at[k] * cell_);
+      inside = std::min({inside, from, cell_ - from});
+    }
+    inside = std::max(0.0, inside - 1e-6 * cell_);
     double best = std::numeric_limits<double>::infinity();
     int bestMesh = -1;
     const int rings = std::max({dims_[0], dims_[1], dims_[2]});
@@ -67,8 +75,9 @@ class NearestMesh {
               if (d < best || (d == best && m < bestMesh)) best = d, bestMesh = m;
             }
           }
-      // Every face within r cells' width of p's cell has been seen.
-      if (bestMesh >= 0 && std::sqrt(best) <= r * cell_) break;
+      // Every face nearer than r cells' width, and than `inside` more, has been seen (strictly
+      // nearer, so that an equal distance elsewhere cannot be missed).
+      if (bestMesh >= 0 && (std::sqrt(best) <= r * cell_ || std::sqrt(best) < r * cell_ + inside)) break;
     }
     return {bestMesh, std::sqrt(best)};
   }

@@ -111,6 +111,36 @@ std::vector<TriMesh> splitEdgeConnected(const TriMesh& mesh) {
   return pieces;
 }
 
+SideEdges numberEdges(const std::vector<Face>& faces) {
+  SideEdges out;
+  const int sides = 3 * static_cast<int>(faces.size());
+  out.edgeOfSide.assign(sides, -1);
+  int nv = 0;
+  for (const Face& f : faces)
+    for (int v : f) nv = std::max(nv, v + 1);
+  // Sides by their lower vertex, then each vertex's sides by the higher one: edgeKey order.
+  std::vector<int> start(nv + 1, 0);
+  for (int s = 0; s < sides; ++s) {
+    const int a = faces[s / 3][s % 3], b = faces[s / 3][(s % 3 + 1) % 3];
+    if (a != b) ++start[std::min(a, b) + 1];
+  }
+  for (int v = 0; v < nv; ++v) start[v + 1] += start[v];
+  std::vector<std::pair<int, int>> byLow(start[nv]);  // (higher vertex, side)
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (int s = 0; s < sides; ++s) {
+    const int a = faces[s / 3][s % 3], b = faces[s / 3][(s % 3 + 1) % 3];
+    if (a != b) byLow[fill[std::min(a, b)]++] = {std::max(a, b), s};
+  }
+  for (int v = 0; v < nv; ++v) {
+    std::sort(byLow.begin() + start[v], byLow.begin() + start[v + 1]);
+    for (int i = start[v]; i < start[v + 1]; ++i) {
+      if (i == start[v] || byLow[i].first != byLow[i - 1].first) ++out.edges;
+      out.edgeOfSide[byLow[i].second] = out.edges - 1;
+    }
+  }
+  return out;
+}
+
 bool isClosedOriented(const TriMesh& mesh) {
   // Each directed edge once, and its reverse once: out-neighbour lists per vertex, sorted.
   if (mesh.faces.empty()) return false;

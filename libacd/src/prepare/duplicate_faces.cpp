@@ -35,22 +35,26 @@ DuplicateOutcome resolveDuplicates(const std::vector<Face>& faces) {
     i = j;
   }
   // Edge uses: by single faces (c) and by double-sided pairs (p).
-  std::unordered_map<std::uint64_t, std::pair<int, int>> uses;
+  const SideEdges edges = numberEdges(faces);
+  std::vector<std::pair<int, int>> uses(edges.edges, {0, 0});
+  auto usesOf = [&](int f, int k) -> std::pair<int, int>& { return uses[edges.edgeOfSide[3 * f + k]]; };
   for (int f = 0; f < nf; ++f)
     if (keep[f])
       for (int k = 0; k < 3; ++k) {
-        auto& u = uses[edgeKey(faces[f][k], faces[f][(k + 1) % 3])];
+        auto& u = usesOf(f, k);
         (doubleSided[f] ? u.second : u.first) += 1;
       }
   UnionFind sets(nf);
-  std::unordered_map<std::uint64_t, int> firstPairOnEdge;
+  std::vector<int> firstPairOnEdge(edges.edges, -1);
   for (int f = 0; f < nf; ++f)
     if (doubleSided[f])
       for (int k = 0; k < 3; ++k) {
-        const std::uint64_t e = edgeKey(faces[f][k], faces[f][(k + 1) % 3]);
-        if (uses[e].second < 2) continue;
-        auto [it, inserted] = firstPairOnEdge.emplace(e, f);
-        if (!inserted) sets.joinKeepingSmallest(it->second, f);
+        if (usesOf(f, k).second < 2) continue;
+        int& first = firstPairOnEdge[edges.edgeOfSide[3 * f + k]];
+        if (first < 0)
+          first = f;
+        else
+          sets.joinKeepingSmallest(first, f);
       }
   std::unordered_map<int, char> setClosesNothing;  // root -> every outer edge where the rest is closed
   for (int f = 0; f < nf; ++f)
@@ -60,7 +64,7 @@ DuplicateOutcome resolveDuplicates(const std::vector<Face>& faces) {
     if (doubleSided[f]) {
       const int root = sets.find(f);
       for (int k = 0; k < 3; ++k) {
-        const auto& u = uses[edgeKey(faces[f][k], faces[f][(k + 1) % 3])];
+        const auto& u = usesOf(f, k);
         if (u.second >= 2) continue;  // inside the set
         ++outerEdges[root];
         if (u.first == 0 || u.first % 2 != 0) setClosesNothing[root] = 2;  // needed, or a free border

@@ -2,7 +2,6 @@
 #include <acd/algo/t_junctions.hpp>
 
 #include <algorithm>
-#include <unordered_map>
 #include <utility>
 
 namespace acd {
@@ -21,12 +20,15 @@ struct BoundaryVertices {
 
 /// Per face side (3 * face + k, the side from corner k to k + 1) used by no other face.
 std::vector<char> boundarySides(const std::vector<Face>& faces) {
-  std::unordered_map<std::uint64_t, int> uses;
-  for (const Face& f : faces)
-    for (int k = 0; k < 3; ++k) ++uses[edgeKey(f[k], f[(k + 1) % 3])];
+  const SideEdges edges = numberEdges(faces);
+  std::vector<int> uses(edges.edges, 0);
+  for (int e : edges.edgeOfSide)
+    if (e >= 0) ++uses[e];
   std::vector<char> side(3 * faces.size(), 0);
-  for (std::size_t i = 0; i < faces.size(); ++i)
-    for (int k = 0; k < 3; ++k) side[3 * i + k] = uses[edgeKey(faces[i][k], faces[i][(k + 1) % 3])] == 1;
+  for (std::size_t s = 0; s < side.size(); ++s) {
+    const int e = edges.edgeOfSide[s];
+    side[s] = e < 0 || uses[e] == 1;  // a side from a vertex to itself is used by no other face
+  }
   return side;
 }
 

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <queue>
 
 namespace acd {
 
@@ -55,6 +54,7 @@ class Collapser {
     quadric_.resize(n);
     version_.assign(n, 0);
     homed_.resize(faces_.size());
+    bound_.assign(n, 0.0);  // each input vertex starts as a corner of its face
     liveFaces_ = static_cast<int>(faces_.size());
     for (std::size_t f = 0; f < faces_.size(); ++f) {
       const Face& t = faces_[f];
@@ -91,18 +91,29 @@ class Collapser {
   WorkingMesh run() {
     WorkingMesh out;
     out.tolerance = tolerance_;
+    std::make_heap(heap_.begin(), heap_.end(), Later{});
+    heaped_ = true;
     while (!heap_.empty() && liveFaces_ > kLeastFaces) {
-      const Candidate c = heap_.top();
-      heap_.pop();
-      if (version_[c.a] != c.versionA || version_[c.b] != c.versionB) continue;  // an end changed since
+      std::pop_heap(heap_.begin(), heap_.end(), Later{});
+      const Candidate c = heap_.back();
+      heap_.pop_back();
+      if (stale(c)) continue;  // an end changed since
+      if (heap_.size() > 4 * static_cast<std::size_t>(liveFaces_) + 1024) dropStale();
       if (collapse(c)) ++out.collapses;
     }
     std::vector<Face> alive;
     for (std::size_t f = 0; f < faces_.size(); ++f)
       if (faceAlive_[f]) alive.push_back(faces_[f]);
+    // The bounds kept the decisions; what is reported is exact: each input vertex to its face.
+    for (std::size_t f = 0; f < faces_.size(); ++f)
+      if (faceAlive_[f]) {
+        const Face& t = faces_[f];
+        for (int x : homed_[f])
+          out.inputToWorking =
+              std::max(out.inputToWorking, distanceToTriangle(input_[x], pos_[t[0]], pos_[t[1]], pos_[t[2]]));
+      }
     std::vector<int> remap(pos_.size(), -1);
     out.mesh = compactFaces(pos_, alive, remap);
-    out.inputToWorking = inputToWorking_;
     return out;
   }
 
@@ -110,8 +121,9 @@ class Collapser {
   struct Candidate {
     double cost;
     int a, b;
-    unsigned versionA, versionB;
-    bool ontoB;  // the edge collapses onto b's position
+    unsigned versionA;
+    unsigned versionB : 31;
+    unsigned ontoB : 1;  // the edge collapses onto b's position
   };
   /// The heap's order: least cost first, equal costs by vertex index (canonical, so pose-free).
   struct Later {
@@ -129,7 +141,20 @@ class Collapser {
     Quadric q = quadric_[a];
     q += quadric_[b];
     const double ea = q.error(pos_[a]), eb = q.error(pos_[b]);
-    heap_.push({std::min(ea, eb), a, b, version_[a], version_[b], eb < ea});
+    heap_.push_back({std::min(ea, eb), a, b, version_[a], version_[b] & 0x7fffffffu, eb < ea});
+    if (heaped_) std::push_heap(heap_.begin(), heap_.end(), Later{});
+  }
+
+  bool stale(const Candidate& c) const {
+    return version_[c.a] != c.versionA || (version_[c.b] & 0x7fffffffu) != c.versionB;
+  }
+
+  /// Each collapse leaves the candidates of the edges it changed behind in the heap; dropping them
+  /// now and then keeps the heap near the number of live edges (a smaller heap misses the cache
+  /// less, and the order of the live candidates, so the result, is the same).
+  void dropStale() {
+    heap_.erase(std::remove_if(heap_.begin(), heap_.end(), [&](const Candidate& c) { return stale(c); }), heap_.end());
+    std::make_heap(heap_.begin(), heap_.end(), Later{});
   }
 
   /// The live faces around v (dropping the dead ones from its list on the way).
@@ -148,6 +173,47 @@ class Collapser {
         if (u != v) out.push_back(u);
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
+  }
+
+  /// Held to the input: every input vertex given a face the collapse of `c` (its ends meeting at
+  /// p) moves keeps it while it stays within the tolerance (one distance), else takes the nearest
+  /// new face, which must be within; the new homes go to rehomed_. False when one is beyond.
+  /// A face keeps its shape but for one corner moved by `shift`, so each of its points moves by at
+  /// most `shift`: a vertex's known bound plus the shift, when within the tolerance, keeps it there
+  /// without the exact distance (the same decision the exact distance would make). Faces around
+  /// the end that stays do not move at all.
+  bool rehomeInputVertices(const Candidate& c, const Vec3& p) {
+    const int a = c.a, b = c.b;
+    const int moved = c.ontoB ? a : b;
+    auto corner = [&](int v) -> const Vec3& { return v == a || v == b ? p : pos_[v]; };
+    const double shift = (p - pos_[moved]).norm();
+    rehomed_.clear();
+    for (int f : changed_) {
+      const bool stays = !(contains(f, a) && contains(f, b));
+      const double faceShift = contains(f, moved) ? shift : 0.0;
+      for (int x : homed_[f]) {
+        double best = std::numeric_limits<double>::infinity();
+        int home = -1;
+        if (stays && bound_[x] + faceShift <= tolerance_) {
+          rehomed_.push_back({f, x, bound_[x] + faceShift});
+          continue;
+        }
+        if (stays) {
+          const Face& t = faces_[f];
+          best = distanceToTriangle(input_[x], corner(t[0]), corner(t[1]), corner(t[2]));
+          home = f;
+        }
+        if (!(best <= tolerance_))
+          for (int g : kept_) {
+            const Face& t = faces_[g];
+            const double d = distanceToTriangle(input_[x], corner(t[0]), corner(t[1]), corner(t[2]));
+            if (d < best) best = d, home = g;
+          }
+        if (!(best <= tolerance_)) return false;
+        rehomed_.push_back({home, x, best});
+      }
+    }
+    return true;
   }
 
   bool collapse(const Candidate& c) {
@@ -181,31 +247,7 @@ class Collapser {
       const Vec3 after = (corner(t[1]) - corner(t[0])).cross(corner(t[2]) - corner(t[0]));
       if (!(before.dot(after) > kLeastNormalCosine * before.norm() * after.norm())) return false;
     }
-    // Held to the input: every input vertex given a face the collapse moves keeps it while it stays
-    // within the tolerance (one distance), else takes the nearest new face, which must be within.
-    double inputFar = 0.0;
-    rehomed_.clear();
-    for (int f : changed) {
-      const bool stays = !(contains(f, a) && contains(f, b));
-      for (int x : homed_[f]) {
-        double best = std::numeric_limits<double>::infinity();
-        int home = -1;
-        if (stays) {
-          const Face& t = faces_[f];
-          best = distanceToTriangle(input_[x], corner(t[0]), corner(t[1]), corner(t[2]));
-          home = f;
-        }
-        if (!(best <= tolerance_))
-          for (int g : kept) {
-            const Face& t = faces_[g];
-            const double d = distanceToTriangle(input_[x], corner(t[0]), corner(t[1]), corner(t[2]));
-            if (d < best) best = d, home = g;
-          }
-        if (!(best <= tolerance_)) return false;
-        inputFar = std::max(inputFar, best);
-        rehomed_.push_back({home, x});
-      }
-    }
+    if (!rehomeInputVertices(c, p)) return false;
     // And the other way: each new face stays near the input at its centroid (its corners are input
     // vertices; simplifyPieces measures more points of the result), against the input faces around its corners and around the input
     // vertices it now stands for.
@@ -225,20 +267,20 @@ class Collapser {
       for (int v : faces_[g])
         if (within(v == a || v == b ? (c.ontoB ? b : a) : v)) return true;
       // The input vertex nearest to q first: its faces hold q's nearest input point as a rule.
-      const auto from = std::lower_bound(rehomed_.begin(), rehomed_.end(), std::make_pair(g, -1));
+      const auto from = std::lower_bound(rehomed_.begin(), rehomed_.end(), Rehome{g, -1, 0.0}, byFaceThenVertex);
       auto to = from;
       int nearest = -1;
       double nearestDistance = std::numeric_limits<double>::infinity();
-      for (; to != rehomed_.end() && to->first == g; ++to) {
-        const double d = (input_[to->second] - q).squaredNorm();
-        if (d < nearestDistance) nearestDistance = d, nearest = to->second;
+      for (; to != rehomed_.end() && to->face == g; ++to) {
+        const double d = (input_[to->vertex] - q).squaredNorm();
+        if (d < nearestDistance) nearestDistance = d, nearest = to->vertex;
       }
       if (nearest >= 0 && within(nearest)) return true;
       for (auto it = from; it != to; ++it)
-        if (it->second != nearest && within(it->second)) return true;
+        if (it->vertex != nearest && within(it->vertex)) return true;
       return false;
     };
-    std::sort(rehomed_.begin(), rehomed_.end());  // by face, for nearInput
+    std::sort(rehomed_.begin(), rehomed_.end(), byFaceThenVertex);  // for nearInput
     for (int g : kept) {
       const Face& t = faces_[g];
       const Vec3 u = corner(t[0]), v = corner(t[1]), w = corner(t[2]);
@@ -246,10 +288,9 @@ class Collapser {
     }
 
     pos_[a] = p;  // a stays, at b's position when collapsing onto b
-    inputToWorking_ = std::max(inputToWorking_, inputFar);
     quadric_[a] += quadric_[b];
     for (int f : changed) homed_[f].clear();
-    for (const auto& [home, x] : rehomed_) homed_[home].push_back(x);
+    for (const Rehome& r : rehomed_) homed_[r.face].push_back(r.vertex), bound_[r.vertex] = r.bound;
     for (int f : shared) faceAlive_[f] = 0;
     liveFaces_ -= 2;
     for (int f : fb)
@@ -267,6 +308,15 @@ class Collapser {
     return true;
   }
 
+  /// An input vertex given a face by a collapse, with an upper bound on its distance to it.
+  struct Rehome {
+    int face, vertex;
+    double bound;
+  };
+  static bool byFaceThenVertex(const Rehome& x, const Rehome& y) {
+    return x.face != y.face ? x.face < y.face : x.vertex < y.vertex;
+  }
+
   bool contains(int f, int v) const { return faces_[f][0] == v || faces_[f][1] == v || faces_[f][2] == v; }
 
   const std::vector<Vec3> input_;
@@ -282,11 +332,12 @@ class Collapser {
   std::vector<Quadric> quadric_;
   std::vector<unsigned> version_;
   std::vector<std::vector<int>> homed_;       // by face: the input vertices it is nearest to (as far as known)
-  std::vector<std::pair<int, int>> rehomed_;  // a collapse's new (face, input vertex) pairs
+  std::vector<double> bound_;                 // by input vertex: at least its distance to its face
+  std::vector<Rehome> rehomed_;               // a collapse's new homes
   std::vector<int> fa_, fb_, shared_, kept_, changed_, na_, nb_, common_;  // a collapse's scratch lists
-  std::priority_queue<Candidate, std::vector<Candidate>, Later> heap_;
+  std::vector<Candidate> heap_;  // by Later; holds stale candidates until dropStale
+  bool heaped_ = false;          // heap_ is a heap (the first edges are gathered, then heaped at once)
   int liveFaces_ = 0;
-  double inputToWorking_ = 0.0;
 };
 
 }  // namespace

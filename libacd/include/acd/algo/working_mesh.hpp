@@ -11,7 +11,7 @@ namespace acd {
 struct WorkingMesh {
   TriMesh mesh;               // its vertices are input vertices
   double tolerance = 0.0;     // what was asked: how far an input vertex may stand off the working surface
-  double inputToWorking = 0.0;  // the largest such distance the checks found
+  double inputToWorking = 0.0;  // the largest such distance, measured on the result
   int collapses = 0;
 };
 
