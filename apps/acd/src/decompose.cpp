@@ -26,6 +26,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <future>
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
@@ -105,6 +106,11 @@ int decomposeMesh(DecomposeArgs& a, const acd::TriMesh& mesh) {
       std::fprintf(stderr, "\r  decomposing: %d final, %d pending   ", done, pending);
       std::fflush(stderr);
     };
+  // The input's description (its diagnosis and self-intersection count, seconds on a dense scan)
+  // does not depend on the decomposition: beside it when more than one thread is allowed.
+  std::future<acd::ReportInput> described =
+      std::async(a.options.threads == 1 ? std::launch::deferred : std::launch::async,
+                 [&] { return acd::describeInput(a.model, mesh, a.options.threads); });
   acd::Decomposition d = acd::decompose(mesh, a.options);
   if (showProgress) std::fprintf(stderr, "\r%60s\r", "");
   for (const auto& line : d.repairs) std::fprintf(stderr, "acd: %s: repaired: %s\n", a.model.c_str(), line.c_str());
@@ -119,7 +125,7 @@ int decomposeMesh(DecomposeArgs& a, const acd::TriMesh& mesh) {
   // where a section crosses itself no clean cut exists, and such a shell is repaired around its
   // crossings or decomposed through its wrap (or, with --no-wrap, its components are flagged,
   // never hidden).
-  acd::ReportInput input = acd::describeInput(a.model, mesh, a.options.threads);
+  acd::ReportInput input = described.get();
   input.mesh = a.mesh;
   const int selfIntersections = input.selfIntersections;
   if (selfIntersections > 0)
