@@ -5,6 +5,7 @@
 #include <acd/mesh.hpp>
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <cmath>
 #include <random>
@@ -54,6 +55,33 @@ TEST(WorkingMesh, DenseSphereBecomesFewFacesWithinTolerance) {
   EXPECT_LE(farthest(surfacePoints(w.mesh, 20000), sphere), 1.1 * tolerance);
   EXPECT_LE(farthest(surfacePoints(sphere, 20000), w.mesh), 1.1 * tolerance);
   EXPECT_NEAR(acd::signedVolume(w.mesh), acd::signedVolume(sphere), acd::surfaceArea(sphere) * tolerance);
+}
+
+// Above 100k faces the collapses run slab by slab in parallel first: the result must not depend
+// on the thread count, and the strips along the slab walls must be simplified as well as the rest.
+TEST(WorkingMesh, SlabsGiveTheSameMeshOnAnyThreadCountAndKeepTheTolerance) {
+  const TriMesh sphere = acd::shapes::icosphere(Vec3::Zero(), 1.0, 7);  // 327680 faces: 3 slabs
+  const double tolerance = 0.005;
+  acd::WorkingMesh serial, parallel;
+  {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    serial = acd::simplifyWithin(sphere, tolerance);
+  }
+  {
+    tbb::global_control four(tbb::global_control::max_allowed_parallelism, 4);
+    parallel = acd::simplifyWithin(sphere, tolerance);
+  }
+  EXPECT_EQ(serial.mesh.faces, parallel.mesh.faces);
+  EXPECT_EQ(serial.mesh.vertices, parallel.mesh.vertices);
+  EXPECT_EQ(serial.collapses, parallel.collapses);
+  const TriMesh& w = parallel.mesh;
+  EXPECT_TRUE(acd::isClosedOriented(w));
+  EXPECT_EQ(eulerCharacteristic(w), 2);
+  const double least = 4 * M_PI / (1.3 * 2 * tolerance);  // as in the test above
+  EXPECT_LE(static_cast<double>(w.faces.size()), 8 * least);
+  EXPECT_LE(farthest(sphere.vertices, w), tolerance);
+  EXPECT_LE(farthest(w.vertices, sphere), tolerance);
+  EXPECT_LE(farthest(surfacePoints(w, 20000), sphere), 1.1 * tolerance);
 }
 
 TEST(WorkingMesh, TorusKeepsItsHole) {

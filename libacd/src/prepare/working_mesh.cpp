@@ -3,6 +3,8 @@
 
 #include <acd/algo/closest_point.hpp>
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -43,8 +45,14 @@ double distanceToTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec
 constexpr double kLeastNormalCosine = 0.35;
 /// A closed piece keeps at least this many faces (a tetrahedron and a little more).
 constexpr int kLeastFaces = 8;
+/// Pieces of more faces than this are first simplified slab by slab, in parallel (at most
+/// kMostSlabs): a count fixed by the piece, never by the threads, so the result is the same on any.
+constexpr std::size_t kFacesPerSlab = 100000;
+constexpr std::size_t kMostSlabs = 16;
 
 class Collapser {
+  struct Lane;
+
  public:
   Collapser(const TriMesh& mesh, double tolerance)
       : input_(mesh.vertices), inputFaces_(mesh.faces), pos_(mesh.vertices), faces_(mesh.faces), tolerance_(tolerance) {
@@ -83,24 +91,30 @@ class Collapser {
       inputFaceCentre_.push_back(centre);
       inputFaceRadius_.push_back(radius);
     }
-    for (const Face& t : faces_)
-      for (int k = 0; k < 3; ++k)
-        if (t[k] < t[(k + 1) % 3]) push(t[k], t[(k + 1) % 3]);  // each edge once (closed, oriented)
+    sortIntoSlabs();
   }
 
   WorkingMesh run() {
     WorkingMesh out;
     out.tolerance = tolerance_;
-    std::make_heap(heap_.begin(), heap_.end(), Later{});
-    heaped_ = true;
-    while (!heap_.empty() && liveFaces_ > kLeastFaces) {
-      std::pop_heap(heap_.begin(), heap_.end(), Later{});
-      const Candidate c = heap_.back();
-      heap_.pop_back();
-      if (stale(c)) continue;  // an end changed since
-      if (heap_.size() > 4 * static_cast<std::size_t>(liveFaces_) + 1024) dropStale();
-      if (collapse(c)) ++out.collapses;
+    // Slab by slab in parallel first, each collapsing only edges whose ends and their neighbours
+    // are all its own: the slabs touch disjoint faces and vertices, so each one's result does not
+    // depend on the others or on the thread count. Then one pass over everything (the strips along
+    // the slab walls and what the coarser mesh allows). (A second round of slabs, their walls
+    // halfway between the first ones, was slower: the strips are few collapses, and the order a
+    // slab gives the coarse mesh's collapses made them costlier.)
+    if (slabs_ > 1) {
+      std::vector<Lane> lanes(slabs_);
+      for (int s = 0; s < slabs_; ++s) lanes[s].slab = s;
+      tbb::parallel_for(0, slabs_, [&](int s) {
+        gatherEdges(lanes[s]);
+        drain(lanes[s]);
+      });
+      for (const Lane& lane : lanes) out.collapses += lane.collapses, liveFaces_ -= lane.removedFaces;
     }
+    gatherEdges(whole_);
+    drain(whole_);
+    out.collapses += whole_.collapses;
     std::vector<Face> alive;
     for (std::size_t f = 0; f < faces_.size(); ++f)
       if (faceAlive_[f]) alive.push_back(faces_[f]);
@@ -136,25 +150,75 @@ class Collapser {
 
   /// The edge's collapse onto the end of less quadric error (the lower index on a tie): the working
   /// vertices are input vertices, so they lie on the input, and a flat region stays exactly flat.
-  void push(int a, int b) {
+  void push(Lane& L, int a, int b) {
     if (a > b) std::swap(a, b);
     Quadric q = quadric_[a];
     q += quadric_[b];
     const double ea = q.error(pos_[a]), eb = q.error(pos_[b]);
-    heap_.push_back({std::min(ea, eb), a, b, version_[a], version_[b] & 0x7fffffffu, eb < ea});
-    if (heaped_) std::push_heap(heap_.begin(), heap_.end(), Later{});
+    L.heap.push_back({std::min(ea, eb), a, b, version_[a], version_[b] & 0x7fffffffu, eb < ea});
+    if (L.heaped) std::push_heap(L.heap.begin(), L.heap.end(), Later{});
   }
 
   bool stale(const Candidate& c) const {
     return version_[c.a] != c.versionA || (version_[c.b] & 0x7fffffffu) != c.versionB;
   }
 
+  /// Vertices into slabs of about kFacesPerSlab faces' worth each, across the longest axis of the
+  /// piece's frame (the canonical frame: the same slabs in every pose), by rank along it.
+  void sortIntoSlabs() {
+    const std::size_t n = pos_.size();
+    slab_.assign(n, 0);
+    slabs_ = static_cast<int>(std::clamp<std::size_t>(faces_.size() / kFacesPerSlab, 1, kMostSlabs));
+    if (slabs_ == 1) return;
+    Vec3 lo = pos_[0], hi = lo;
+    for (const Vec3& v : pos_) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+    int axis = 0;
+    (hi - lo).maxCoeff(&axis);
+    std::vector<int> order(n);
+    for (std::size_t v = 0; v < n; ++v) order[v] = static_cast<int>(v);
+    std::sort(order.begin(), order.end(), [&](int u, int v) {
+      return pos_[u][axis] != pos_[v][axis] ? pos_[u][axis] < pos_[v][axis] : u < v;
+    });
+    for (std::size_t r = 0; r < n; ++r) slab_[order[r]] = static_cast<int>(r * slabs_ / n);
+  }
+
+  /// Whether the lane may collapse an edge at v (the whole mesh's lane: every vertex).
+  bool owns(const Lane& L, int v) const { return L.slab < 0 || slab_[v] == L.slab; }
+
+  /// The lane's first candidates: every live edge it owns, once (closed, oriented), then heaped.
+  void gatherEdges(Lane& L) {
+    L.heap.clear();
+    L.heaped = false;
+    for (std::size_t f = 0; f < faces_.size(); ++f) {
+      if (!faceAlive_[f]) continue;
+      const Face& t = faces_[f];
+      if (L.slab >= 0) L.liveFaces += owns(L, t[0]) ? 1 : 0;
+      for (int k = 0; k < 3; ++k)
+        if (t[k] < t[(k + 1) % 3] && owns(L, t[k]) && owns(L, t[(k + 1) % 3])) push(L, t[k], t[(k + 1) % 3]);
+    }
+    if (L.slab < 0) L.liveFaces = liveFaces_;
+    std::make_heap(L.heap.begin(), L.heap.end(), Later{});
+    L.heaped = true;
+  }
+
+  /// Collapses the lane's candidates, cheapest first, until none is left (or the mesh is least).
+  void drain(Lane& L) {
+    while (!L.heap.empty() && (L.slab >= 0 || liveFaces_ > kLeastFaces)) {
+      std::pop_heap(L.heap.begin(), L.heap.end(), Later{});
+      const Candidate c = L.heap.back();
+      L.heap.pop_back();
+      if (stale(c)) continue;  // an end changed since
+      if (L.heap.size() > 4 * static_cast<std::size_t>(std::max(0, L.liveFaces)) + 1024) dropStale(L);
+      if (collapse(L, c)) ++L.collapses;
+    }
+  }
+
   /// Each collapse leaves the candidates of the edges it changed behind in the heap; dropping them
   /// now and then keeps the heap near the number of live edges (a smaller heap misses the cache
   /// less, and the order of the live candidates, so the result, is the same).
-  void dropStale() {
-    heap_.erase(std::remove_if(heap_.begin(), heap_.end(), [&](const Candidate& c) { return stale(c); }), heap_.end());
-    std::make_heap(heap_.begin(), heap_.end(), Later{});
+  void dropStale(Lane& L) {
+    L.heap.erase(std::remove_if(L.heap.begin(), L.heap.end(), [&](const Candidate& c) { return stale(c); }), L.heap.end());
+    std::make_heap(L.heap.begin(), L.heap.end(), Later{});
   }
 
   /// The live faces around v (dropping the dead ones from its list on the way).
@@ -177,25 +241,25 @@ class Collapser {
 
   /// Held to the input: every input vertex given a face the collapse of `c` (its ends meeting at
   /// p) moves keeps it while it stays within the tolerance (one distance), else takes the nearest
-  /// new face, which must be within; the new homes go to rehomed_. False when one is beyond.
+  /// new face, which must be within; the new homes go to L.rehomed. False when one is beyond.
   /// A face keeps its shape but for one corner moved by `shift`, so each of its points moves by at
   /// most `shift`: a vertex's known bound plus the shift, when within the tolerance, keeps it there
   /// without the exact distance (the same decision the exact distance would make). Faces around
   /// the end that stays do not move at all.
-  bool rehomeInputVertices(const Candidate& c, const Vec3& p) {
+  bool rehomeInputVertices(Lane& L, const Candidate& c, const Vec3& p) {
     const int a = c.a, b = c.b;
     const int moved = c.ontoB ? a : b;
     auto corner = [&](int v) -> const Vec3& { return v == a || v == b ? p : pos_[v]; };
     const double shift = (p - pos_[moved]).norm();
-    rehomed_.clear();
-    for (int f : changed_) {
+    L.rehomed.clear();
+    for (int f : L.changed) {
       const bool stays = !(contains(f, a) && contains(f, b));
       const double faceShift = contains(f, moved) ? shift : 0.0;
       for (int x : homed_[f]) {
         double best = std::numeric_limits<double>::infinity();
         int home = -1;
         if (stays && bound_[x] + faceShift <= tolerance_) {
-          rehomed_.push_back({f, x, bound_[x] + faceShift});
+          L.rehomed.push_back({f, x, bound_[x] + faceShift});
           continue;
         }
         if (stays) {
@@ -204,22 +268,22 @@ class Collapser {
           home = f;
         }
         if (!(best <= tolerance_))
-          for (int g : kept_) {
+          for (int g : L.kept) {
             const Face& t = faces_[g];
             const double d = distanceToTriangle(input_[x], corner(t[0]), corner(t[1]), corner(t[2]));
             if (d < best) best = d, home = g;
           }
         if (!(best <= tolerance_)) return false;
-        rehomed_.push_back({home, x, best});
+        L.rehomed.push_back({home, x, best});
       }
     }
     return true;
   }
 
-  bool collapse(const Candidate& c) {
+  bool collapse(Lane& L, const Candidate& c) {
     const int a = c.a, b = c.b;
     const Vec3 p = c.ontoB ? pos_[b] : pos_[a];
-    std::vector<int>&fa = fa_, &fb = fb_, &shared = shared_, &kept = kept_, &changed = changed_;
+    std::vector<int>&fa = L.fa, &fb = L.fb, &shared = L.shared, &kept = L.kept, &changed = L.changed;
     fa = facesAround(a);
     fb = facesAround(b);
     shared.clear();
@@ -229,13 +293,17 @@ class Collapser {
       if (!contains(f, a)) kept.push_back(f);
     changed = kept;  // every face the collapse moves or removes
     changed.insert(changed.end(), shared.begin(), shared.end());
-    if (shared.size() != 2 || liveFaces_ - 2 < kLeastFaces) return false;
+    if (shared.size() != 2 || (L.slab < 0 && liveFaces_ - 2 < kLeastFaces)) return false;
     // The link condition: the ends' only common neighbours are the two faces' third corners, so the
     // surface stays a manifold.
-    neighbours(a, na_);
-    neighbours(b, nb_);
-    const std::vector<int>&na = na_, &nb = nb_;
-    std::vector<int>& common = common_;
+    neighbours(a, L.na);
+    neighbours(b, L.nb);
+    const std::vector<int>&na = L.na, &nb = L.nb;
+    // A slab's lane touches nothing beyond its own vertices' faces (what makes the lanes disjoint).
+    if (L.slab >= 0 && !(std::all_of(na.begin(), na.end(), [&](int v) { return owns(L, v); }) &&
+                         std::all_of(nb.begin(), nb.end(), [&](int v) { return owns(L, v); })))
+      return false;
+    std::vector<int>& common = L.common;
     common.clear();
     std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(common));
     if (common.size() != 2) return false;
@@ -247,7 +315,7 @@ class Collapser {
       const Vec3 after = (corner(t[1]) - corner(t[0])).cross(corner(t[2]) - corner(t[0]));
       if (!(before.dot(after) > kLeastNormalCosine * before.norm() * after.norm())) return false;
     }
-    if (!rehomeInputVertices(c, p)) return false;
+    if (!rehomeInputVertices(L, c, p)) return false;
     // And the other way: each new face stays near the input at its centroid (its corners are input
     // vertices; simplifyPieces measures more points of the result), against the input faces around its corners and around the input
     // vertices it now stands for.
@@ -267,11 +335,11 @@ class Collapser {
       for (int v : faces_[g])
         if (within(v == a || v == b ? (c.ontoB ? b : a) : v)) return true;
       // The input vertex nearest to q first: its faces hold q's nearest input point as a rule.
-      const auto from = std::lower_bound(rehomed_.begin(), rehomed_.end(), Rehome{g, -1, 0.0}, byFaceThenVertex);
+      const auto from = std::lower_bound(L.rehomed.begin(), L.rehomed.end(), Rehome{g, -1, 0.0}, byFaceThenVertex);
       auto to = from;
       int nearest = -1;
       double nearestDistance = std::numeric_limits<double>::infinity();
-      for (; to != rehomed_.end() && to->face == g; ++to) {
+      for (; to != L.rehomed.end() && to->face == g; ++to) {
         const double d = (input_[to->vertex] - q).squaredNorm();
         if (d < nearestDistance) nearestDistance = d, nearest = to->vertex;
       }
@@ -280,7 +348,7 @@ class Collapser {
         if (it->vertex != nearest && within(it->vertex)) return true;
       return false;
     };
-    std::sort(rehomed_.begin(), rehomed_.end(), byFaceThenVertex);  // for nearInput
+    std::sort(L.rehomed.begin(), L.rehomed.end(), byFaceThenVertex);  // for nearInput
     for (int g : kept) {
       const Face& t = faces_[g];
       const Vec3 u = corner(t[0]), v = corner(t[1]), w = corner(t[2]);
@@ -290,9 +358,13 @@ class Collapser {
     pos_[a] = p;  // a stays, at b's position when collapsing onto b
     quadric_[a] += quadric_[b];
     for (int f : changed) homed_[f].clear();
-    for (const Rehome& r : rehomed_) homed_[r.face].push_back(r.vertex), bound_[r.vertex] = r.bound;
+    for (const Rehome& r : L.rehomed) homed_[r.face].push_back(r.vertex), bound_[r.vertex] = r.bound;
     for (int f : shared) faceAlive_[f] = 0;
-    liveFaces_ -= 2;
+    if (L.slab < 0)
+      liveFaces_ -= 2;
+    else
+      L.removedFaces += 2;
+    L.liveFaces -= 2;
     for (int f : fb)
       if (faceAlive_[f])
         for (int& v : faces_[f])
@@ -303,8 +375,9 @@ class Collapser {
     vertexFaces_[b].clear();
     ++version_[a];
     ++version_[b];
-    neighbours(a, na_);
-    for (int n : na_) push(a, n);
+    neighbours(a, L.na);
+    for (int n : L.na)
+      if (owns(L, n)) push(L, a, n);
     return true;
   }
 
@@ -316,6 +389,19 @@ class Collapser {
   static bool byFaceThenVertex(const Rehome& x, const Rehome& y) {
     return x.face != y.face ? x.face < y.face : x.vertex < y.vertex;
   }
+
+  /// One run of collapses: over one slab or (slab -1) over the whole mesh, with its own heap and
+  /// scratch lists.
+  struct Lane {
+    int slab = -1;
+    std::vector<Candidate> heap;  // by Later; holds stale candidates until dropStale
+    bool heaped = false;          // heap is a heap (the first edges are gathered, then heaped at once)
+    std::vector<Rehome> rehomed;  // a collapse's new homes
+    std::vector<int> fa, fb, shared, kept, changed, na, nb, common;  // a collapse's scratch lists
+    int liveFaces = 0;     // about how many faces the lane has (for dropStale)
+    int removedFaces = 0;  // by a slab's lane, for liveFaces_ after the slabs
+    int collapses = 0;
+  };
 
   bool contains(int f, int v) const { return faces_[f][0] == v || faces_[f][1] == v || faces_[f][2] == v; }
 
@@ -333,10 +419,9 @@ class Collapser {
   std::vector<unsigned> version_;
   std::vector<std::vector<int>> homed_;       // by face: the input vertices it is nearest to (as far as known)
   std::vector<double> bound_;                 // by input vertex: at least its distance to its face
-  std::vector<Rehome> rehomed_;               // a collapse's new homes
-  std::vector<int> fa_, fb_, shared_, kept_, changed_, na_, nb_, common_;  // a collapse's scratch lists
-  std::vector<Candidate> heap_;  // by Later; holds stale candidates until dropStale
-  bool heaped_ = false;          // heap_ is a heap (the first edges are gathered, then heaped at once)
+  std::vector<int> slab_;  // by vertex: its slab (all 0 when there is one)
+  int slabs_ = 1;
+  Lane whole_;  // the serial pass over the whole mesh
   int liveFaces_ = 0;
 };
 
