@@ -448,18 +448,24 @@ Status validate(const DecomposeOptions& o) {
 }
 
 int countNotches(const TriMesh& mesh, double angle) {
-  SurfaceGraph graph(mesh);
+  // Each edge's two sides by bucket (acd/mesh.hpp) rather than through a SurfaceGraph: this runs on
+  // the whole input, which may have millions of faces. The test is the same from either side.
+  const SideEdges numbered = numberEdges(mesh.faces);
+  const std::vector<int>& edgeOf = numbered.edgeOfSide;
+  std::vector<int> firstSide(numbered.edges, -1), uses(numbered.edges, 0);
+  for (std::size_t s = 0; s < edgeOf.size(); ++s)
+    if (edgeOf[s] >= 0 && uses[edgeOf[s]]++ == 0) firstSide[edgeOf[s]] = static_cast<int>(s);
   int notches = 0;
-  for (int f = 0; f < graph.faceCount(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const int g = graph.faceAcross(f, k);
-      if (g < f) continue;  // each interior edge once
-      const int a = mesh.faces[f][k], b = mesh.faces[f][(k + 1) % 3];
-      const Vec3 nl = faceNormal(mesh, f).normalized(), nr = faceNormal(mesh, g).normalized();
-      const Vec3 c = nl.cross(nr);
-      const double turn = std::atan2(c.norm(), nl.dot(nr));
-      if (c.dot(mesh.vertices[b] - mesh.vertices[a]) < 0 && turn > angle) ++notches;
-    }
+  for (std::size_t s = 0; s < edgeOf.size(); ++s) {
+    const int e = edgeOf[s];
+    if (e < 0 || uses[e] != 2 || firstSide[e] == static_cast<int>(s)) continue;  // each interior edge once
+    const int f = firstSide[e] / 3, k = firstSide[e] % 3, g = static_cast<int>(s / 3);
+    const int a = mesh.faces[f][k], b = mesh.faces[f][(k + 1) % 3];
+    const Vec3 nl = faceNormal(mesh, f).normalized(), nr = faceNormal(mesh, g).normalized();
+    const Vec3 c = nl.cross(nr);
+    const double turn = std::atan2(c.norm(), nl.dot(nr));
+    if (c.dot(mesh.vertices[b] - mesh.vertices[a]) < 0 && turn > angle) ++notches;
+  }
   return notches;
 }
 

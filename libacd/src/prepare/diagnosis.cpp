@@ -129,29 +129,22 @@ struct Topology {
   explicit Topology(const std::vector<Face>& faces) {
     const int nf = static_cast<int>(faces.size());
     auto vertexAt = [&](int corner) { return faces[corner / 3][corner % 3]; };
-    // Sorted half-edges rather than a hash map: millions of edges, no per-edge allocation.
-    std::vector<std::pair<std::uint64_t, int>> halves;
-    halves.reserve(faces.size() * 3);
-    for (int c = 0; c < 3 * nf; ++c) {
-      const int a = vertexAt(c), b = vertexAt(nextCorner(c));
-      if (a != b) halves.emplace_back(edgeKey(a, b), c);  // a repeated index is a degenerate face, not an edge
-    }
-    std::sort(halves.begin(), halves.end());
-    edgeOfCorner.assign(faces.size() * 3, -1);
+    // Numbered by bucket rather than hashed or sorted (acd/mesh.hpp): millions of edges. Corners
+    // in order, so each edge's first two uses are its lowest corners.
+    const SideEdges numbered = numberEdges(faces);
+    edgeOfCorner = numbered.edgeOfSide;
+    edges.resize(numbered.edges);
     UnionFind pieces(nf);
-    for (size_t i = 0; i < halves.size();) {
-      EdgeUse use;
-      use.key = halves[i].first;
-      const int id = static_cast<int>(edges.size());
-      for (; i < halves.size() && halves[i].first == use.key; ++i) {
-        const int c = halves[i].second;
-        if (use.count < 2) use.corners[use.count] = c;
-        ++use.count;
-        if (vertexAt(c) < vertexAt(nextCorner(c))) ++use.forward;
-        edgeOfCorner[c] = id;
-        pieces.join(c / 3, use.corners[0] / 3);
-      }
-      edges.push_back(use);
+    for (int c = 0; c < 3 * nf; ++c) {
+      const int id = edgeOfCorner[c];
+      if (id < 0) continue;  // a repeated index is a degenerate face, not an edge
+      EdgeUse& use = edges[id];
+      const int a = vertexAt(c), b = vertexAt(nextCorner(c));
+      if (use.count == 0) use.key = edgeKey(a, b);
+      if (use.count < 2) use.corners[use.count] = c;
+      ++use.count;
+      if (a < b) ++use.forward;
+      pieces.join(c / 3, use.corners[0] / 3);
     }
     componentOf.assign(nf, -1);
     std::vector<int> idOfRoot(nf, -1);
