@@ -117,7 +117,7 @@ def main():
     args = ap.parse_args()
     args.out = os.path.abspath(args.out)  # the runs' working folder is their own
     paths = cp.Paths(args.out)
-    cp.ensure_peers(paths)
+    cp.ensure_peers(paths, ("vhacd",))
     os.makedirs(args.out, exist_ok=True)
     inputs = [(m, os.path.join(cp.ROOT, "data/meshes/%s.off" % m)) for m in cp.CORPUS]
     inputs += [(name, None, model, times) for name, model, times in DENSE]
