@@ -17,6 +17,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <numeric>
 #include <optional>
@@ -42,6 +43,37 @@ TriMesh toTriMesh(const ExactMesh& in) {
     const auto h = in.halfedge(f);
     out.faces.push_back({index[in.source(h)], index[in.target(h)], index[in.target(in.next(h))]});
   }
+  return out;
+}
+
+/// The mesh with its vertices in lexicographic order of their exact coordinates, each face from
+/// its smallest vertex, faces sorted. CGAL's corefinement gives the same surface in an order that
+/// changes from run to run (it follows memory addresses: chair_model.obj's union came out in a
+/// different order on each of four calls in one process), and what comes after it (the next
+/// union, the rounding repairs) follows the order.
+ExactMesh inCanonicalOrder(const ExactMesh& in) {
+  std::vector<ExactMesh::Vertex_index> vertices(in.vertices().begin(), in.vertices().end());
+  std::stable_sort(vertices.begin(), vertices.end(), [&](ExactMesh::Vertex_index a, ExactMesh::Vertex_index b) {
+    return CGAL::lexicographically_xyz_smaller(in.point(a), in.point(b));
+  });
+  ExactMesh out;
+  std::map<ExactMesh::Vertex_index, int> rank;
+  std::vector<ExactMesh::Vertex_index> added;
+  for (ExactMesh::Vertex_index v : vertices) {
+    rank[v] = static_cast<int>(added.size());
+    added.push_back(out.add_vertex(in.point(v)));
+  }
+  std::vector<std::array<int, 3>> faces;
+  for (auto f : in.faces()) {
+    const auto h = in.halfedge(f);
+    std::array<int, 3> t = {rank[in.source(h)], rank[in.target(h)], rank[in.target(in.next(h))]};
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    faces.push_back(t);
+  }
+  std::sort(faces.begin(), faces.end());
+  for (const auto& t : faces)
+    if (out.add_face(added[t[0]], added[t[1]], added[t[2]]) == ExactMesh::null_face())
+      return in;  // a fan this order cannot link (not met so far): the surface as it came
   return out;
 }
 
@@ -181,7 +213,7 @@ ShellUnion uniteMeetingShells(const std::vector<TriMesh>& shells, bool invariant
         if (out.firstFailure.empty()) out.firstFailure = "their union is not a manifold surface: shells touch along an edge or at a point";
         continue;
       }
-      acc = std::move(result);
+      acc = inCanonicalOrder(result);
       taken.push_back(group[k]);
     }
     if (taken.size() < 2) {
