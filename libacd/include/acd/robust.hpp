@@ -18,6 +18,7 @@ struct PreparedModel {
   Status status;                      // not ok: refused (only with options.wrap off, or unusable data)
   std::vector<TriMesh> shells;        // closed, outward, apart; input coordinates
   std::vector<char> isWrap;           // per shell: it is (part of) the wrap
+  std::vector<char> isClean;          // per shell: prepareSolid's own output (no union, no wrap)
   std::vector<TriMesh> wrappedInput;  // the repaired pieces the wrap replaced (for its fidelity)
   std::vector<std::string> repairs;   // one line each, in the order done
   int holesFilled = 0;

@@ -16,6 +16,7 @@
 #include <acd/algo/hull.hpp>
 #include <acd/robust.hpp>
 
+#include "clean_shell.hpp"
 #include "held_to.hpp"
 #include "rounds.hpp"
 #include "working_model.hpp"
@@ -496,9 +497,19 @@ class ExcessAgainstInput {
   std::unique_ptr<ModelExcess> input_model_;
 };
 
+/// prepareSolid, or for a `clean` shell (acd/clean_shell.hpp) the shell as it is.
+PreparedSolid prepareUnlessClean(const TriMesh& mesh, const PrepareOptions& po, bool clean) {
+  if (!clean || firstZeroAreaFace(mesh) >= 0) return prepareSolid(mesh, po);
+  PreparedSolid p;
+  p.status = Status::success();
+  p.components = {mesh};
+  return p;
+}
+
 /// The decomposition of a solid with repairs done; the merge pass held to the model measures
 /// against `heldTo` (input coordinates) to `mergeTau` when given, else against the solid itself.
-Decomposition decomposeSolid(const TriMesh& mesh, const TriMesh* heldTo, double mergeTau,
+/// A `clean` mesh is one of prepareModel's clean shells (acd/clean_shell.hpp).
+Decomposition decomposeSolid(const TriMesh& mesh, const TriMesh* heldTo, double mergeTau, bool clean,
                              const DecomposeOptions& options) {
   const auto start = Clock::now();
   Decomposition result;
@@ -510,7 +521,7 @@ Decomposition decomposeSolid(const TriMesh& mesh, const TriMesh* heldTo, double 
   auto t = Clock::now();
   PrepareOptions po;
   po.openMeshes = o.fillHoles ? OpenMeshPolicy::FillHoles : OpenMeshPolicy::Refuse;
-  PreparedSolid prepared = prepareSolid(mesh, po);
+  PreparedSolid prepared = prepareUnlessClean(mesh, po, clean);
   result.status = prepared.status;
   result.repairs = prepared.repairs;
   result.stats.holesFilled = prepared.holesFilled;
@@ -614,7 +625,7 @@ Decomposition decomposeSolid(const TriMesh& mesh, const TriMesh* heldTo, double 
   if (redoAtFullResolution) {
     DecomposeOptions full = options;
     full.workingShare = 0.0;
-    return decomposeSolid(mesh, heldTo, mergeTau, full);
+    return decomposeSolid(mesh, heldTo, mergeTau, clean, full);
   }
   result.times.total = secondsSince(start);
   return result;
@@ -624,14 +635,20 @@ Decomposition decomposeSolid(const TriMesh& mesh, const TriMesh* heldTo, double 
 
 Decomposition decompose(const TriMesh& mesh, const DecomposeOptions& options) {
   if (options.repair) return decomposeRepaired(mesh, options);  // acd/robust.hpp; comes back with repair off
-  return decomposeSolid(mesh, nullptr, options.tau, options);
+  return decomposeSolid(mesh, nullptr, options.tau, false, options);
 }
 
 Decomposition decomposeHeldTo(const TriMesh& mesh, const TriMesh& wrapped, const DecomposeOptions& options,
                               double mergeTau) {
   DecomposeOptions o = options;
   o.repair = false;
-  return decomposeSolid(mesh, &wrapped, mergeTau, o);
+  return decomposeSolid(mesh, &wrapped, mergeTau, false, o);
+}
+
+Decomposition decomposeCleanShell(const TriMesh& shell, const DecomposeOptions& options) {
+  DecomposeOptions o = options;
+  o.repair = false;
+  return decomposeSolid(shell, nullptr, options.tau, true, o);
 }
 
 }  // namespace acd

@@ -10,6 +10,7 @@
 #include <acd/repair.hpp>
 #include <acd/robust.hpp>
 
+#include "clean_shell.hpp"
 #include "held_to.hpp"
 #include "shell_merge.hpp"
 
@@ -85,11 +86,16 @@ void dropCavities(PreparedModel& out) {
   const ShellNesting nesting = classifyShells(out.shells);
   if (nesting.cavities == 0) return;
   std::vector<TriMesh> kept;
-  std::vector<char> keptWrap;
+  std::vector<char> keptWrap, keptClean;
   for (std::size_t i = 0; i < out.shells.size(); ++i)
-    if (nesting.depth[i] % 2 == 0) kept.push_back(std::move(out.shells[i])), keptWrap.push_back(out.isWrap[i]);
+    if (nesting.depth[i] % 2 == 0) {
+      kept.push_back(std::move(out.shells[i]));
+      keptWrap.push_back(out.isWrap[i]);
+      keptClean.push_back(out.isClean[i]);
+    }
   out.shells = std::move(kept);
   out.isWrap = std::move(keptWrap);
+  out.isClean = std::move(keptClean);
   out.cavitiesDropped += nesting.cavities;
   out.repairs.push_back("dropped " + plural(nesting.cavities, "inner shell", "inner shells") +
                         " bounding a cavity (inside another shell): the hulls of the shell around cover it");
@@ -104,9 +110,12 @@ void uniteShells(PreparedModel& out, bool invariant) {
   ShellUnion u = uniteMeetingShells(exact, invariant);
   out.shells = std::move(u.shells);
   out.isWrap.assign(out.shells.size(), 0);
+  out.isClean.assign(out.shells.size(), 1);
+  std::fill(out.isClean.begin(), out.isClean.begin() + u.solids, 0);  // the unions come first
   for (TriMesh& w : wrapped) {
     out.shells.push_back(std::move(w));
     out.isWrap.push_back(1);
+    out.isClean.push_back(0);
   }
   out.unitedShells = u.united;
   if (u.united > 0) {
@@ -129,6 +138,7 @@ PreparedModel prepareModel(const TriMesh& mesh, const DecomposeOptions& options,
     out.status = s;
     out.shells.clear();
     out.isWrap.clear();
+    out.isClean.clear();
     out.seconds = secondsSince(start);
     return out;
   };
@@ -173,6 +183,7 @@ PreparedModel prepareModel(const TriMesh& mesh, const DecomposeOptions& options,
                        ")";
   }
   out.isWrap.assign(out.shells.size(), 0);
+  out.isClean.assign(out.shells.size(), 1);
   if (!unclosable.empty() && buildWrap) {
     const double scale = minimumSphereNormalization(repaired.mesh).scale;
     WrapShells w = wrapPieces(unclosable, options.tau, scale, options.invariant);
@@ -184,6 +195,7 @@ PreparedModel prepareModel(const TriMesh& mesh, const DecomposeOptions& options,
     for (TriMesh& s : w.shells) {
       out.shells.push_back(std::move(s));
       out.isWrap.push_back(1);
+      out.isClean.push_back(0);
     }
     out.wrappedInput = std::move(unclosable);
   } else if (!unclosable.empty()) {
@@ -208,9 +220,10 @@ namespace {
 
 /// One shell decomposed alone, at tau in the model's units, its figures brought back to them. A
 /// wrap of a closed shell is given that shell (`wrapped`) and the user's tau (`wrappedTau`, model
-/// units): its merges are held to them.
+/// units): its merges are held to them. A `clean` shell (PreparedModel::isClean) is not checked again.
 Decomposition decomposeShell(const TriMesh& shell, int index, const DecomposeOptions& o, double modelScale,
-                             int doneBefore, const TriMesh* wrapped = nullptr, double wrappedTau = 0.0) {
+                             int doneBefore, const TriMesh* wrapped = nullptr, double wrappedTau = 0.0,
+                             bool clean = false) {
   DecomposeOptions inner = o;
   inner.repair = false;
   const double k = std::max(1.0, minimumSphereNormalization(shell).scale / modelScale);  // shell units per model unit
@@ -219,7 +232,8 @@ Decomposition decomposeShell(const TriMesh& shell, int index, const DecomposeOpt
   inner.delta = std::min(inner.tau, o.delta * k);
   if (o.progress) inner.progress = [&](int done, int pending) { o.progress(doneBefore + done, pending); };
   Decomposition d = wrapped ? decomposeHeldTo(shell, *wrapped, inner, std::min(2.0, wrappedTau * k))
-                            : decompose(shell, inner);
+                    : clean  ? decomposeCleanShell(shell, inner)
+                             : decompose(shell, inner);
   if (!d.status.ok()) return d;
   const double k3 = k * k * k;
   for (Component& c : d.components) {
@@ -346,7 +360,8 @@ Decomposition decomposeShells(const DecomposeOptions& o, PreparedModel prepared)
   for (std::size_t i = 0; i < prepared.shells.size(); ++i) {
     const DecomposeOptions shellOptions =
         prepared.isWrap[i] ? optionsForWrap(o, prepared.shells[i], wrappedInput, scale) : o;
-    Decomposition d = decomposeShell(prepared.shells[i], static_cast<int>(i), shellOptions, scale, done);
+    Decomposition d = decomposeShell(prepared.shells[i], static_cast<int>(i), shellOptions, scale, done, nullptr, 0.0,
+                                     prepared.isClean[i]);
     if (!d.status.ok()) {
       result.status = d.status;
       result.components.clear();
