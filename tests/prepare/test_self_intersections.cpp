@@ -1,14 +1,20 @@
 // countSelfIntersections (libacd/src/prepare/self_intersections.cpp) on constructions whose count
 // is known by hand: a triangle through another, neighbours that only share an edge or a vertex,
 // a thin triangle piercing two opposite faces of a box, overlapping boxes, and the limit; and the
-// corpus models known to pass through themselves (cow, camel) or not. removeSelfIntersections on a
-// generated fold and on the cow.
+// corpus models known to pass through themselves (cow, camel) or not; the count against an
+// independent one (CGAL's Polygon_mesh_processing::self_intersections on a Surface_mesh, the same
+// definition implemented apart). removeSelfIntersections on a generated fold and on the cow.
 #include <acd/algo/alpha_wrap.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/io.hpp>
 #include <acd/algo/normalize.hpp>
 #include <acd/repair.hpp>
 #include <acd/algo/shapes.hpp>
+#include <acd/algo/surface_mesh_copy.hpp>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
 
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
@@ -16,6 +22,8 @@
 #include "helpers.hpp"
 
 #include <fstream>
+#include <iterator>
+#include <random>
 #include <string>
 #include <utility>
 #include <vector>
@@ -29,6 +37,16 @@ TriMesh triangle(const Vec3& a, const Vec3& b, const Vec3& c) {
   t.vertices = {a, b, c};
   t.faces = {{0, 1, 2}};
   return t;
+}
+
+long cgalCount(const TriMesh& mesh) {
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using SM = CGAL::Surface_mesh<K::Point_3>;
+  SM sm;
+  if (copyToSurfaceMesh(mesh, sm) >= 0) return -1;
+  std::vector<std::pair<SM::Face_index, SM::Face_index>> pairs;
+  CGAL::Polygon_mesh_processing::self_intersections(sm, std::back_inserter(pairs));
+  return static_cast<long>(pairs.size());
 }
 
 }  // namespace
@@ -153,4 +171,80 @@ TEST(SelfIntersections, RemovingThemFromTheCowCutsBackOnlyItsTail) {
   // canonical frame, where decompose repairs it).
   const double scale = minimumSphereNormalization(r.mesh).scale;
   EXPECT_LT(distanceOutside(r.mesh, u.mesh) * scale, 0.035);
+}
+
+// Faces on one edge cross only where they fold onto each other (coplanar, their third corners on
+// one side of it); faces on one vertex where an edge of either, away from it, meets the other.
+TEST(SelfIntersections, NeighboursCrossWhereTheyFoldOntoEachOther) {
+  TriMesh hinge;
+  hinge.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0.5, -1, 0)};
+  hinge.faces = {{0, 1, 2}, {1, 0, 3}};
+  EXPECT_EQ(countSelfIntersections(hinge), 0);  // flat, on either side of the edge
+  hinge.vertices[3] = Vec3(0.5, 0.5, 0);
+  EXPECT_EQ(countSelfIntersections(hinge), 1);  // folded flat onto the first face
+  hinge.vertices[3] = Vec3(0.5, 0.5, 1e-9);
+  EXPECT_EQ(countSelfIntersections(hinge), 0);  // nearly folded, not coplanar: they only share the edge
+  TriMesh fan;  // two faces around vertex 0, the second's far edge through the first
+  fan.vertices = {Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(0, 2, 0), Vec3(0.5, 0.5, -1), Vec3(0.5, 0.5, 1)};
+  fan.faces = {{0, 1, 2}, {0, 3, 4}};
+  EXPECT_EQ(countSelfIntersections(fan), 1);
+  fan.vertices[3] = Vec3(-0.5, -0.5, -1), fan.vertices[4] = Vec3(-0.5, -0.5, 1);
+  EXPECT_EQ(countSelfIntersections(fan), 0);
+}
+
+// Not an oriented manifold (an edge used twice in one direction): -1, as before.
+TEST(SelfIntersections, AnEdgeUsedTwiceInOneDirectionIsNotCounted) {
+  TriMesh twice;
+  twice.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0)};
+  twice.faces = {{0, 1, 2}, {0, 1, 3}};
+  EXPECT_EQ(countSelfIntersections(twice), -1);
+  twice.faces = {{0, 0, 2}};
+  EXPECT_EQ(countSelfIntersections(twice), -1);  // a face repeating a vertex
+}
+
+// The boxes are floats: crossings of small faces far from the origin, and coordinates beyond
+// float's range, are still found exactly.
+TEST(SelfIntersections, FloatBoxesMissNothingFarFromTheOrigin) {
+  const Vec3 far(3e7, -2e7, 1e7);
+  const TriMesh flat = triangle(far + Vec3(0, 0, 0), far + Vec3(0.4, 0, 0), far + Vec3(0, 0.4, 0));
+  const TriMesh through = triangle(far + Vec3(0.1, 0.1, -0.1), far + Vec3(0.12, 0.1, -0.1), far + Vec3(0.1, 0.12, 0.1));
+  EXPECT_EQ(countSelfIntersections(concatenate({flat, through})), 1);
+  const TriMesh beside = triangle(far + Vec3(0.3, 0.3, -0.1), far + Vec3(0.32, 0.3, -0.1), far + Vec3(0.3, 0.32, 0.1));
+  EXPECT_EQ(countSelfIntersections(concatenate({flat, beside})), 0);
+  const Vec3 huge(1e300, 0, 0);
+  EXPECT_EQ(countSelfIntersections(concatenate({triangle(huge, huge + Vec3(1e290, 0, 0), huge + Vec3(0, 1e290, 0)),
+                                                triangle(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0))})), 0);
+}
+
+TEST(SelfIntersectionsAgainstCgal, TheCountsAgreeOnTheCorpus) {
+  int compared = 0;
+  for (const char* model : {"cow", "camel", "man", "mannequin-devil", "bones", "mask_cone", "mpi", "boeing",
+                            "diplodocus", "elephant-with-holes", "corner_poly", "degtri_sliding", "bull"}) {
+    const std::string path = acdtest::corpus(model);
+    if (!std::ifstream(path)) continue;
+    const ReadResult r = readMesh(path);
+    ASSERT_TRUE(r.status.ok()) << model;
+    for (const TriMesh& m : {r.mesh, repairMesh(r.mesh).mesh}) {
+      const long expected = cgalCount(m);
+      if (expected < 0) continue;  // CGAL refuses it as a surface (a non-manifold vertex)
+      EXPECT_EQ(countSelfIntersections(m), expected) << model;
+      ++compared;
+    }
+  }
+  if (compared == 0) GTEST_SKIP() << "corpus not present (scripts/fetch_corpus.sh)";
+}
+
+// Spheres whose vertices are moved at random in every direction, by up to about an edge: faces
+// fold over their neighbours and pass through others.
+TEST(SelfIntersectionsAgainstCgal, TheCountsAgreeOnCrumpledSpheres) {
+  std::mt19937 random(7);
+  for (double amount : {0.01, 0.1, 0.2}) {  // the edges are about 0.15 long
+    TriMesh sphere = shapes::icosphere(Vec3(0, 0, 0), 1.0, 3);
+    std::uniform_real_distribution<double> move(-amount, amount);
+    for (Vec3& p : sphere.vertices) p += Vec3(move(random), move(random), move(random));
+    const long expected = cgalCount(sphere);
+    ASSERT_GE(expected, 0);
+    EXPECT_EQ(countSelfIntersections(sphere), expected) << amount;
+    if (amount >= 0.1) EXPECT_GT(expected, 0);
+  }
 }

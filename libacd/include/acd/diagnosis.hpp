@@ -35,7 +35,8 @@ struct MeshDiagnosis {
 MeshDiagnosis diagnose(const TriMesh& mesh);
 
 /// Pairs of faces that intersect other than along a shared edge or vertex (exact predicates;
-/// CGAL's box-intersection filter). Stops counting at `limit` (< 0: count all). The solid
+/// CGAL's box-intersection filter, on one thread), a degenerate face counting as one; -1 when the
+/// faces are no oriented edge-manifold surface. Stops counting at `limit` (< 0: count all). The solid
 /// decomposition accepts such meshes, but where the surface passes through itself a section
 /// can have crossing loops and a component may stay unresolved; see docs/ERRORS.md.
 int countSelfIntersections(const TriMesh& mesh, int limit = -1);

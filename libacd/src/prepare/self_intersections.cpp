@@ -9,53 +9,128 @@
 #include <CGAL/Polygon_mesh_processing/repair_self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/box_intersection_d.h>
 
+#include <algorithm>
+#include <cmath>
 #include <iterator>
+#include <limits>
 #include <set>
 
 namespace acd {
 
 namespace {
-/// Counts what it is given and stops the search (by throwing) once `limit` pairs are seen.
-struct LimitReached {};
-template <class Pair>
-struct CountingOutput {
-  using iterator_category = std::output_iterator_tag;
-  using value_type = void;
-  using difference_type = void;
-  using pointer = void;
-  using reference = void;
-  int* count;
-  int limit;
-  CountingOutput& operator*() { return *this; }
-  CountingOutput& operator++() { return *this; }
-  CountingOutput operator++(int) { return *this; }
-  CountingOutput& operator=(const Pair&) {
-    if (++*count >= limit && limit >= 0) throw LimitReached{};
-    return *this;
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+/// Whether the faces form an oriented surface whose edges each have at most two faces, in
+/// opposite directions, and no face repeats a vertex: what CGAL's Surface_mesh would accept
+/// face by face, but for vertices where separate fans meet (those are counted as they are).
+bool isOrientedEdgeManifold(const std::vector<Face>& faces) {
+  const SideEdges sides = numberEdges(faces);
+  std::vector<int> firstSide(sides.edges, -1);
+  std::vector<char> count(sides.edges, 0);
+  for (std::size_t s = 0; s < sides.edgeOfSide.size(); ++s) {
+    const int e = sides.edgeOfSide[s];
+    if (e < 0) return false;  // a face repeats a vertex
+    if (++count[e] > 2) return false;
+    const Face& f = faces[s / 3];
+    const int from = f[s % 3], to = f[(s % 3 + 1) % 3];
+    if (count[e] == 1) {
+      firstSide[e] = static_cast<int>(s);
+      continue;
+    }
+    const Face& g = faces[firstSide[e] / 3];
+    if (g[firstSide[e] % 3] == from && g[(firstSide[e] % 3 + 1) % 3] == to) return false;  // the same direction twice
   }
-};
+  return true;
+}
+
+/// A face's box in floats, rounded outward (it still contains the face): half the memory of
+/// doubles, on inputs of millions of faces.
+using FaceBox = CGAL::Box_intersection_d::Box_with_info_d<float, 3, int, CGAL::Box_intersection_d::ID_FROM_BOX_ADDRESS>;
+
+FaceBox boxOf(const TriMesh& mesh, int f) {
+  float lo[3], hi[3];
+  const Face& t = mesh.faces[f];
+  for (int i = 0; i < 3; ++i) {
+    const double a = std::min({mesh.vertices[t[0]][i], mesh.vertices[t[1]][i], mesh.vertices[t[2]][i]});
+    const double b = std::max({mesh.vertices[t[0]][i], mesh.vertices[t[1]][i], mesh.vertices[t[2]][i]});
+    // Clamped first: a double beyond float's range does not convert.
+    const double most = std::numeric_limits<float>::max();
+    lo[i] = static_cast<float>(std::clamp(a, -most, most));
+    hi[i] = static_cast<float>(std::clamp(b, -most, most));
+    if (lo[i] > a) lo[i] = std::nextafter(lo[i], -std::numeric_limits<float>::infinity());
+    if (hi[i] < b) hi[i] = std::nextafter(hi[i], std::numeric_limits<float>::infinity());
+  }
+  return FaceBox(lo, hi, f);
+}
+
+/// Whether faces f and g cross other than along the edge or at the vertex they share (CGAL's
+/// rule): faces on one edge cross where they fold onto each other (coplanar, the third corners on
+/// one side of it); faces on one vertex where an edge of either, away from it, meets the other.
+bool facesCross(const TriMesh& mesh, int f, int g) {
+  const Face &a = mesh.faces[f], &b = mesh.faces[g];
+  auto point = [&](int v) {
+    const Vec3& p = mesh.vertices[v];
+    return K::Point_3(p.x(), p.y(), p.z());
+  };
+  int sharedA[3], sharedB[3], shared = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (a[i] == b[j]) sharedA[shared] = i, sharedB[shared] = j, ++shared;
+  const K::Triangle_3 ta(point(a[0]), point(a[1]), point(a[2])), tb(point(b[0]), point(b[1]), point(b[2]));
+  if (shared >= 2) {
+    const int i = sharedA[0], j = sharedA[1];
+    const K::Point_3 p = point(a[i]), q = point(a[j]), r = point(a[3 - i - j]);
+    const K::Point_3 s = point(b[3 - sharedB[0] - sharedB[1]]);
+    return CGAL::coplanar(p, q, r, s) && CGAL::coplanar_orientation(p, q, r, s) == CGAL::POSITIVE;
+  }
+  if (shared == 1) {
+    const int i = sharedA[0], j = sharedB[0];
+    const K::Segment_3 awayA(point(a[(i + 1) % 3]), point(a[(i + 2) % 3]));
+    const K::Segment_3 awayB(point(b[(j + 1) % 3]), point(b[(j + 2) % 3]));
+    return CGAL::do_intersect(ta, awayB) || CGAL::do_intersect(tb, awayA);
+  }
+  return CGAL::do_intersect(ta, tb);
+}
+
+/// The box search stops, by throwing, once the limit is reached.
+struct LimitReached {};
+
 }  // namespace
 
 int countSelfIntersections(const TriMesh& mesh, int limit) {
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-  using SM = CGAL::Surface_mesh<K::Point_3>;
-  SM sm;
-  if (copyToSurfaceMesh(mesh, sm) >= 0) return -1;  // not a manifold surface
+  if (!isOrientedEdgeManifold(mesh.faces)) return -1;  // not a manifold surface
+  if (limit == 0) return 0;
+  // A degenerate face counts as crossing itself (as CGAL's self_intersections reports it).
   int count = 0;
-  using Pair = std::pair<SM::Face_index, SM::Face_index>;
-  // In parallel the pairs are found in any order and a few more than the limit may be found
-  // before the search stops: the count is of the set, capped at the limit, so it does not depend
-  // on the threads.
+  std::vector<FaceBox> boxes;
+  boxes.reserve(mesh.faces.size());
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const Face& t = mesh.faces[f];
+    const Vec3 &p = mesh.vertices[t[0]], &q = mesh.vertices[t[1]], &r = mesh.vertices[t[2]];
+    if (CGAL::collinear(K::Point_3(p.x(), p.y(), p.z()), K::Point_3(q.x(), q.y(), q.z()), K::Point_3(r.x(), r.y(), r.z()))) {
+      if (++count == limit) return count;
+      continue;
+    }
+    boxes.push_back(boxOf(mesh, static_cast<int>(f)));
+  }
+  std::vector<const FaceBox*> pointers;
+  pointers.reserve(boxes.size());
+  for (const FaceBox& b : boxes) pointers.push_back(&b);
+  // One thread: the search runs beside the decomposition (describeInput), and the parallel search
+  // keeps eight copies of the boxes' list. Pairs come once each, so the count is of the set.
   try {
-    if (limit >= 0)
-      CGAL::Polygon_mesh_processing::self_intersections<CGAL::Parallel_if_available_tag>(
-          sm, CountingOutput<Pair>{&count, -1}, CGAL::parameters::maximum_number(limit));
-    else
-      CGAL::Polygon_mesh_processing::self_intersections<CGAL::Parallel_if_available_tag>(sm, CountingOutput<Pair>{&count, -1});
+    CGAL::box_self_intersection_d<CGAL::Sequential_tag>(
+        pointers.begin(), pointers.end(),
+        [&](const FaceBox* x, const FaceBox* y) {
+          if (facesCross(mesh, x->info(), y->info()) && ++count == limit) throw LimitReached{};
+        },
+        std::ptrdiff_t(2000));
   } catch (const LimitReached&) {
   }
-  return limit >= 0 ? std::min(count, limit) : count;
+  return count;
 }
 
 Untangled removeSelfIntersections(const TriMesh& shell) {
