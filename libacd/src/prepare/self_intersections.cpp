@@ -66,6 +66,43 @@ FaceBox boxOf(const TriMesh& mesh, int f) {
   return FaceBox(lo, hi, f);
 }
 
+/// Sign tests in doubles that are certain where their value stands clear of its rounding error
+/// by a wide margin, and say nothing otherwise: they spare the exact predicates most of the face
+/// pairs of a dense mesh (neighbours in one plane, the commonest, are exact ties for them).
+/// Products of four lengths stay far from double's overflow and underflow, or no test is made.
+bool certainlyBelow(double value, double scale) {
+  return scale > 1e-250 && scale < 1e250 && value < -1e-9 * scale;
+}
+
+/// Whether the points lie certainly on the far side of one of the triangle's planes: its own
+/// plane (either side), or the plane through one of its edges, perpendicular to it, away from the
+/// third corner. Then the points (and their convex hull) miss the triangle.
+bool certainlyApart(const Vec3* t, const Vec3* points, int count) {
+  const Vec3 u = t[1] - t[0], w = t[2] - t[0];
+  const Vec3 n = u.cross(w);
+  const double un = u.norm() * w.norm();
+  bool above = true, below = true;
+  for (int k = 0; k < count; ++k) {
+    const Vec3 d = points[k] - t[0];
+    const double side = d.dot(n), scale = un * d.norm();
+    above = above && certainlyBelow(-side, scale);
+    below = below && certainlyBelow(side, scale);
+  }
+  if (above || below) return true;
+  for (int e = 0; e < 3; ++e) {
+    const Vec3 &from = t[e], &to = t[(e + 1) % 3];
+    const Vec3 inward = n.cross(to - from);  // toward the third corner, in the triangle's plane
+    const double edgeScale = un * (to - from).norm();
+    bool outside = true;
+    for (int k = 0; k < count && outside; ++k) {
+      const Vec3 d = points[k] - from;
+      outside = certainlyBelow(d.dot(inward), edgeScale * d.norm());
+    }
+    if (outside) return true;
+  }
+  return false;
+}
+
 /// Whether faces f and g cross other than along the edge or at the vertex they share (CGAL's
 /// rule): faces on one edge cross where they fold onto each other (coplanar, the third corners on
 /// one side of it); faces on one vertex where an edge of either, away from it, meets the other.
@@ -79,6 +116,16 @@ bool facesCross(const TriMesh& mesh, int f, int g) {
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
       if (a[i] == b[j]) sharedA[shared] = i, sharedB[shared] = j, ++shared;
+  const Vec3 pa[3] = {mesh.vertices[a[0]], mesh.vertices[a[1]], mesh.vertices[a[2]]};
+  const Vec3 pb[3] = {mesh.vertices[b[0]], mesh.vertices[b[1]], mesh.vertices[b[2]]};
+  if (shared == 0 && (certainlyApart(pa, pb, 3) || certainlyApart(pb, pa, 3))) return false;
+  if (shared == 2) {
+    // Folded onto each other, the two (oriented alike) face opposite ways: normals pointing
+    // certainly alike rule that out.
+    const Vec3 da1 = pa[1] - pa[0], da2 = pa[2] - pa[0], db1 = pb[1] - pb[0], db2 = pb[2] - pb[0];
+    const double scale = da1.norm() * da2.norm() * db1.norm() * db2.norm();
+    if (certainlyBelow(-da1.cross(da2).dot(db1.cross(db2)), scale)) return false;
+  }
   const K::Triangle_3 ta(point(a[0]), point(a[1]), point(a[2])), tb(point(b[0]), point(b[1]), point(b[2]));
   if (shared >= 2) {
     const int i = sharedA[0], j = sharedA[1];
@@ -88,9 +135,11 @@ bool facesCross(const TriMesh& mesh, int f, int g) {
   }
   if (shared == 1) {
     const int i = sharedA[0], j = sharedB[0];
+    const Vec3 farA[2] = {pa[(i + 1) % 3], pa[(i + 2) % 3]}, farB[2] = {pb[(j + 1) % 3], pb[(j + 2) % 3]};
     const K::Segment_3 awayA(point(a[(i + 1) % 3]), point(a[(i + 2) % 3]));
     const K::Segment_3 awayB(point(b[(j + 1) % 3]), point(b[(j + 2) % 3]));
-    return CGAL::do_intersect(ta, awayB) || CGAL::do_intersect(tb, awayA);
+    return (!certainlyApart(pa, farB, 2) && CGAL::do_intersect(ta, awayB)) ||
+           (!certainlyApart(pb, farA, 2) && CGAL::do_intersect(tb, awayA));
   }
   return CGAL::do_intersect(ta, tb);
 }
