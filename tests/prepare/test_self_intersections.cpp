@@ -267,3 +267,33 @@ TEST(SelfIntersectionsAgainstCgal, TheCountsAgreeOnCrumpledSpheres) {
     EXPECT_EQ(countSelfIntersections(split), cgalCount(split)) << amount << " split";
   }
 }
+
+// facesCrossingOthers: the faces of a subset that appear in some crossing pair, against the
+// pairs CGAL's own search finds over the whole mesh.
+TEST(SelfIntersectionsAgainstCgal, TheFacesOfASubsetThatCrossAgree) {
+  std::mt19937 random(11);
+  TriMesh sphere = shapes::icosphere(Vec3(0, 0, 0), 1.0, 3);
+  std::uniform_real_distribution<double> move(-0.1, 0.1);
+  for (Vec3& p : sphere.vertices) p += Vec3(move(random), move(random), move(random));
+  std::vector<TriMesh> meshes = {sphere};
+  if (const ReadResult cow = readMesh(acdtest::corpus("cow")); cow.status.ok()) meshes.push_back(repairMesh(cow.mesh).mesh);
+  for (const TriMesh& m : meshes) {
+    using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+    using SM = CGAL::Surface_mesh<K::Point_3>;
+    SM sm;
+    ASSERT_LT(copyToSurfaceMesh(m, sm), 0);
+    std::vector<std::pair<SM::Face_index, SM::Face_index>> pairs;
+    CGAL::Polygon_mesh_processing::self_intersections(sm, std::back_inserter(pairs));
+    std::vector<char> crossing(m.faces.size(), 0);
+    for (const auto& [a, b] : pairs) crossing[a.idx()] = crossing[b.idx()] = 1;
+    for (int step : {1, 3, 7}) {
+      std::vector<int> among, expected;
+      for (int f = 0; f < static_cast<int>(m.faces.size()); f += step) {
+        among.push_back(f);
+        if (crossing[f]) expected.push_back(f);
+      }
+      EXPECT_EQ(facesCrossingOthers(m, among), expected) << step;
+      if (step == 1) EXPECT_FALSE(expected.empty());
+    }
+  }
+}

@@ -41,6 +41,12 @@ MeshDiagnosis diagnose(const TriMesh& mesh);
 /// can have crossing loops and a component may stay unresolved; see docs/ERRORS.md.
 int countSelfIntersections(const TriMesh& mesh, int limit = -1);
 
+/// The faces of `among` that cross some other face of the mesh, by countSelfIntersections's rule
+/// (a degenerate face crosses itself), sorted; all of `among` when the mesh is no oriented
+/// edge-manifold surface. One box search of `among` against the mesh: a patch of a few faces on a
+/// mesh of millions is checked at the cost of sorting the mesh's boxes, not of all its pairs.
+std::vector<int> facesCrossingOthers(const TriMesh& mesh, const std::vector<int>& among);
+
 /// What prepareSolid does with boundary edges.
 enum class OpenMeshPolicy {
   FillHoles,  // close every hole (acd/algo/hole_filling.hpp); refuse when that cannot be done safely

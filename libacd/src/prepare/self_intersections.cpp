@@ -147,6 +147,12 @@ bool facesCross(const TriMesh& mesh, int f, int g) {
 /// The box search stops, by throwing, once the limit is reached.
 struct LimitReached {};
 
+bool degenerate(const TriMesh& mesh, int f) {
+  const Face& t = mesh.faces[f];
+  const Vec3 &p = mesh.vertices[t[0]], &q = mesh.vertices[t[1]], &r = mesh.vertices[t[2]];
+  return CGAL::collinear(K::Point_3(p.x(), p.y(), p.z()), K::Point_3(q.x(), q.y(), q.z()), K::Point_3(r.x(), r.y(), r.z()));
+}
+
 }  // namespace
 
 int countSelfIntersections(const TriMesh& mesh, int limit) {
@@ -157,9 +163,7 @@ int countSelfIntersections(const TriMesh& mesh, int limit) {
   std::vector<FaceBox> boxes;
   boxes.reserve(mesh.faces.size());
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-    const Face& t = mesh.faces[f];
-    const Vec3 &p = mesh.vertices[t[0]], &q = mesh.vertices[t[1]], &r = mesh.vertices[t[2]];
-    if (CGAL::collinear(K::Point_3(p.x(), p.y(), p.z()), K::Point_3(q.x(), q.y(), q.z()), K::Point_3(r.x(), r.y(), r.z()))) {
+    if (degenerate(mesh, static_cast<int>(f))) {
       if (++count == limit) return count;
       continue;
     }
@@ -180,6 +184,37 @@ int countSelfIntersections(const TriMesh& mesh, int limit) {
   } catch (const LimitReached&) {
   }
   return count;
+}
+
+std::vector<int> facesCrossingOthers(const TriMesh& mesh, const std::vector<int>& among) {
+  if (!isOrientedEdgeManifold(mesh.faces)) return among;  // the rule needs an oriented surface: all suspect
+  std::vector<char> crosses(mesh.faces.size(), 0);
+  std::vector<FaceBox> some, all;
+  for (int f : among) {
+    if (degenerate(mesh, f))
+      crosses[f] = 1;
+    else
+      some.push_back(boxOf(mesh, f));
+  }
+  all.reserve(mesh.faces.size());
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+    if (!degenerate(mesh, static_cast<int>(f))) all.push_back(boxOf(mesh, static_cast<int>(f)));
+  std::vector<const FaceBox*> somePointers, allPointers;
+  for (const FaceBox& b : some) somePointers.push_back(&b);
+  for (const FaceBox& b : all) allPointers.push_back(&b);
+  CGAL::box_intersection_d<CGAL::Sequential_tag>(
+      somePointers.begin(), somePointers.end(), allPointers.begin(), allPointers.end(),
+      [&](const FaceBox* x, const FaceBox* y) {
+        const int f = x->info(), g = y->info();
+        if (f != g && !crosses[f] && facesCross(mesh, f, g)) crosses[f] = 1;
+      },
+      std::ptrdiff_t(2000));
+  std::vector<int> out;
+  for (int f : among)
+    if (crosses[f]) out.push_back(f);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
 }
 
 Untangled removeSelfIntersections(const TriMesh& shell) {
