@@ -73,4 +73,8 @@ TriMesh compactFaces(const std::vector<Vec3>& vertices, const std::vector<Face>&
 /// True when every edge has exactly two faces that use it in opposite directions.
 bool isClosedOriented(const TriMesh& mesh);
 
+/// True when every edge has one face, or two that use it in opposite directions, and no face
+/// repeats a vertex: an oriented surface, closed or not (vertices where fans meet allowed).
+bool isOrientedEdgeManifold(const std::vector<Face>& faces);
+
 }  // namespace acd

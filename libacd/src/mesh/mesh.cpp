@@ -141,17 +141,20 @@ SideEdges numberEdges(const std::vector<Face>& faces) {
   return out;
 }
 
-bool isClosedOriented(const TriMesh& mesh) {
-  // Each directed edge once, and its reverse once: out-neighbour lists per vertex, sorted.
-  if (mesh.faces.empty()) return false;
+namespace {
+
+/// Each directed edge at most once, no face repeating a vertex, and (when `closed`) every edge's
+/// reverse there too: out-neighbour lists per vertex, sorted.
+bool directedEdgesOnce(const std::vector<Face>& faces, bool closed) {
+  if (faces.empty()) return !closed;
   int nv = 0;
-  for (const Face& f : mesh.faces)
+  for (const Face& f : faces)
     for (int v : f) {
       if (v < 0) return false;
       nv = std::max(nv, v + 1);
     }
   std::vector<int> start(nv + 1, 0);
-  for (const Face& f : mesh.faces)
+  for (const Face& f : faces)
     for (int k = 0; k < 3; ++k) {
       if (f[k] == f[(k + 1) % 3]) return false;
       ++start[f[k] + 1];
@@ -159,13 +162,14 @@ bool isClosedOriented(const TriMesh& mesh) {
   for (int v = 0; v < nv; ++v) start[v + 1] += start[v];
   std::vector<int> next(start[nv]);
   std::vector<int> fill(start.begin(), start.end() - 1);
-  for (const Face& f : mesh.faces)
+  for (const Face& f : faces)
     for (int k = 0; k < 3; ++k) next[fill[f[k]]++] = f[(k + 1) % 3];
   for (int v = 0; v < nv; ++v) {
     std::sort(next.begin() + start[v], next.begin() + start[v + 1]);
     if (std::adjacent_find(next.begin() + start[v], next.begin() + start[v + 1]) != next.begin() + start[v + 1])
       return false;
   }
+  if (!closed) return true;
   for (int a = 0; a < nv; ++a)
     for (int i = start[a]; i < start[a + 1]; ++i) {
       const int b = next[i];
@@ -173,5 +177,11 @@ bool isClosedOriented(const TriMesh& mesh) {
     }
   return true;
 }
+
+}  // namespace
+
+bool isClosedOriented(const TriMesh& mesh) { return directedEdgesOnce(mesh.faces, true); }
+
+bool isOrientedEdgeManifold(const std::vector<Face>& faces) { return directedEdgesOnce(faces, false); }
 
 }  // namespace acd

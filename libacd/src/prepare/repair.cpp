@@ -41,11 +41,13 @@ std::string count(int n, const char* singular, const char* plural) {
   return std::to_string(n) + " " + (n == 1 ? singular : plural);
 }
 
-/// Whether steps 3 to 6 would give `mesh` back as it is: every edge used once in each direction,
-/// the faces around every vertex one fan (diagnose's checks), and every face clear of the needle
-/// and cap limits by a wide margin (so no rounding decides).
-bool cleanSolidSurface(const TriMesh& mesh, const RepairOptions& options) {
-  if (!isClosedOriented(mesh)) return false;
+/// Whether steps 3 to 6 would give `mesh` back as it is: every edge used at most once in each
+/// direction (an oriented surface, closed or with holes: orienting finds nothing to flip, and with
+/// close vertices merged no two borders run along each other to stitch), the faces around every
+/// vertex one fan (diagnose's checks), and every face clear of the needle and cap limits by a wide
+/// margin (so no rounding decides).
+bool cleanSurface(const TriMesh& mesh, const RepairOptions& options) {
+  if (!isOrientedEdgeManifold(mesh.faces)) return false;
   const double ratio2 = 0.25 * options.needleRatio * options.needleRatio;  // half the ratio, squared
   const double capCos = std::cos((options.capDegrees - 1.0) * std::acos(-1.0) / 180.0);
   for (const Face& f : mesh.faces) {
@@ -221,7 +223,7 @@ MeshRepair repairMesh(const TriMesh& input, const RepairOptions& options) {
   faces = std::move(cracks.faces);
   const TriMesh merged = compact(TriMesh{used.vertices, faces});  // the merged-away vertices go
 
-  if (options.skipWhenClean && cleanSolidSurface(merged, options)) {
+  if (options.skipWhenClean && cleanSurface(merged, options)) {
     // As CGAL's Surface_mesh gives a triangle back: from its last corner.
     r.mesh = merged;
     for (Face& f : r.mesh.faces) f = {f[2], f[0], f[1]};

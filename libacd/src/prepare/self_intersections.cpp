@@ -23,29 +23,6 @@ namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 
-/// Whether the faces form an oriented surface whose edges each have at most two faces, in
-/// opposite directions, and no face repeats a vertex: what CGAL's Surface_mesh would accept
-/// face by face, but for vertices where separate fans meet (those are counted as they are).
-bool isOrientedEdgeManifold(const std::vector<Face>& faces) {
-  const SideEdges sides = numberEdges(faces);
-  std::vector<int> firstSide(sides.edges, -1);
-  std::vector<char> count(sides.edges, 0);
-  for (std::size_t s = 0; s < sides.edgeOfSide.size(); ++s) {
-    const int e = sides.edgeOfSide[s];
-    if (e < 0) return false;  // a face repeats a vertex
-    if (++count[e] > 2) return false;
-    const Face& f = faces[s / 3];
-    const int from = f[s % 3], to = f[(s % 3 + 1) % 3];
-    if (count[e] == 1) {
-      firstSide[e] = static_cast<int>(s);
-      continue;
-    }
-    const Face& g = faces[firstSide[e] / 3];
-    if (g[firstSide[e] % 3] == from && g[(firstSide[e] % 3 + 1) % 3] == to) return false;  // the same direction twice
-  }
-  return true;
-}
-
 /// A face's box in floats, rounded outward (it still contains the face): half the memory of
 /// doubles, on inputs of millions of faces.
 using FaceBox = CGAL::Box_intersection_d::Box_with_info_d<float, 3, int, CGAL::Box_intersection_d::ID_FROM_BOX_ADDRESS>;
