@@ -21,6 +21,7 @@
 
 #include "helpers.hpp"
 
+#include <cmath>
 #include <fstream>
 #include <iterator>
 #include <map>
@@ -201,6 +202,10 @@ TEST(SelfIntersections, AnEdgeUsedTwiceInOneDirectionIsNotCounted) {
   EXPECT_EQ(countSelfIntersections(twice), -1);
   twice.faces = {{0, 0, 2}};
   EXPECT_EQ(countSelfIntersections(twice), -1);  // a face repeating a vertex
+  // Nor are coordinates that are not finite (the exact predicates cannot take them).
+  const TriMesh broken = triangle(Vec3(std::nan(""), 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0));
+  EXPECT_EQ(countSelfIntersections(broken), -1);
+  EXPECT_EQ(facesCrossingOthers(broken, {0}), std::vector<int>{0});
 }
 
 // The boxes are floats: crossings of small faces far from the origin, and coordinates beyond

@@ -35,16 +35,18 @@ struct MeshDiagnosis {
 MeshDiagnosis diagnose(const TriMesh& mesh);
 
 /// Pairs of faces that intersect other than along a shared edge or vertex (exact predicates;
-/// CGAL's box-intersection filter, on one thread), a degenerate face counting as one; -1 when the
-/// faces are no oriented edge-manifold surface. Stops counting at `limit` (< 0: count all). The solid
-/// decomposition accepts such meshes, but where the surface passes through itself a section
-/// can have crossing loops and a component may stay unresolved; see docs/ERRORS.md.
+/// CGAL's box-intersection filter, on one thread), a degenerate face counting as one; -1 when
+/// the faces are no oriented edge-manifold surface or a coordinate is not finite. Stops counting
+/// at `limit` (< 0: count all). The solid decomposition accepts such meshes, but where the
+/// surface passes through itself a section can have crossing loops and a component may stay
+/// unresolved; see docs/ERRORS.md.
 int countSelfIntersections(const TriMesh& mesh, int limit = -1);
 
 /// The faces of `among` that cross some other face of the mesh, by countSelfIntersections's rule
 /// (a degenerate face crosses itself), sorted; all of `among` when the mesh is no oriented
-/// edge-manifold surface. One box search of `among` against the mesh: a patch of a few faces on a
-/// mesh of millions is checked at the cost of sorting the mesh's boxes, not of all its pairs.
+/// edge-manifold surface or a coordinate is not finite. One box search of `among` against the
+/// mesh: a patch of a few faces on a mesh of millions costs the sorting of the mesh's boxes, not
+/// all its pairs.
 std::vector<int> facesCrossingOthers(const TriMesh& mesh, const std::vector<int>& among);
 
 /// What prepareSolid does with boundary edges.

@@ -124,6 +124,12 @@ bool facesCross(const TriMesh& mesh, int f, int g) {
 /// The box search stops, by throwing, once the limit is reached.
 struct LimitReached {};
 
+/// Exact predicates need finite coordinates (the repairs refuse others; the report's count runs
+/// on the input as read).
+bool allFinite(const TriMesh& mesh) {
+  return std::all_of(mesh.vertices.begin(), mesh.vertices.end(), [](const Vec3& p) { return p.allFinite(); });
+}
+
 bool degenerate(const TriMesh& mesh, int f) {
   const Face& t = mesh.faces[f];
   const Vec3 &p = mesh.vertices[t[0]], &q = mesh.vertices[t[1]], &r = mesh.vertices[t[2]];
@@ -133,7 +139,7 @@ bool degenerate(const TriMesh& mesh, int f) {
 }  // namespace
 
 int countSelfIntersections(const TriMesh& mesh, int limit) {
-  if (!isOrientedEdgeManifold(mesh.faces)) return -1;  // not a manifold surface
+  if (!isOrientedEdgeManifold(mesh.faces) || !allFinite(mesh)) return -1;  // not a surface to count on
   if (limit == 0) return 0;
   // A degenerate face counts as crossing itself (as CGAL's self_intersections reports it).
   int count = 0;
@@ -164,7 +170,7 @@ int countSelfIntersections(const TriMesh& mesh, int limit) {
 }
 
 std::vector<int> facesCrossingOthers(const TriMesh& mesh, const std::vector<int>& among) {
-  if (!isOrientedEdgeManifold(mesh.faces)) return among;  // the rule needs an oriented surface: all suspect
+  if (!isOrientedEdgeManifold(mesh.faces) || !allFinite(mesh)) return among;  // no rule applies: all suspect
   std::vector<char> crosses(mesh.faces.size(), 0);
   std::vector<FaceBox> some, all;
   for (int f : among) {
