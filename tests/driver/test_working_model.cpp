@@ -2,11 +2,17 @@
 // working mesh (acd/algo/working_mesh.hpp). The promise is about the input, so it is checked
 // against the input here, with the tests' own distance and inside tests, never the library's figures.
 #include <acd/algo/shapes.hpp>
+#include <acd/algo/surface_mesh_copy.hpp>
 #include <acd/decompose.hpp>
 #include <acd/io.hpp>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "../helpers.hpp"
@@ -104,6 +110,57 @@ TEST(DenseInput, SubdividedModelGivesAboutTheSameParts) {
   EXPECT_GE(ratio, 0.8);
   EXPECT_LE(ratio, 1.25);
   for (const acd::Component& c : b.components) EXPECT_LE(c.hullExcess, 0.05);
+}
+
+/// A plate bent along an arc: radius 1, `thickness` thick, 2 radians wide, 1 long, closed by its
+/// ends and sides; 400 segments along the arc, 40 along its length.
+TriMesh bentPlate(double thickness) {
+  const int arc = 400, length = 40;
+  std::vector<Vec3> ring;  // the outer arc, then the inner one back
+  for (int i = 0; i <= arc; ++i) ring.emplace_back(std::cos(-1.0 + 2.0 * i / arc), std::sin(-1.0 + 2.0 * i / arc), 0.0);
+  for (int i = arc; i >= 0; --i) ring.push_back(Vec3(ring[i].x(), ring[i].y(), 0.0) * (1.0 - thickness));
+  const int n = static_cast<int>(ring.size());
+  TriMesh m;
+  for (int j = 0; j <= length; ++j)
+    for (const Vec3& p : ring) m.vertices.push_back(p + Vec3(0, 0, static_cast<double>(j) / length));
+  auto at = [&](int j, int i) { return j * n + (i % n); };
+  for (int j = 0; j < length; ++j)
+    for (int i = 0; i < n; ++i) {
+      m.faces.push_back({at(j, i), at(j, i + 1), at(j + 1, i + 1)});
+      m.faces.push_back({at(j, i), at(j + 1, i + 1), at(j + 1, i)});
+    }
+  for (const int j : {0, length})  // the two ends: strips between the arcs
+    for (int i = 0; i < arc; ++i) {
+      const int o0 = at(j, i), o1 = at(j, i + 1), i0 = at(j, n - 1 - i), i1 = at(j, n - 2 - i);
+      if (j == 0) {
+        m.faces.push_back({o0, i1, o1});
+        m.faces.push_back({o0, i0, i1});
+      } else {
+        m.faces.push_back({o0, o1, i1});
+        m.faces.push_back({o0, i1, i0});
+      }
+    }
+  return m;
+}
+
+// Two sheets closer than the working tolerance, curved so that a chord of one passes through the
+// other within it: collapses alone would give a working mesh that crosses itself (and components
+// that do). Each component is checked by CGAL's own self-intersection test.
+TEST(DenseInput, ThinBentPlateGivesComponentsThatDoNotCrossThemselves) {
+  const TriMesh plate = bentPlate(0.002);
+  acd::DecomposeOptions o;
+  o.tau = 0.05;
+  o.threads = 2;
+  o.workingShare = 0.1;
+  const acd::Decomposition d = acd::decompose(plate, o);
+  ASSERT_TRUE(d.status.ok()) << d.status.message;
+  EXPECT_GT(d.stats.workingFaces, 0);
+  using SM = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
+  for (const acd::Component& c : d.components) {
+    SM sm;
+    ASSERT_LT(acd::copyToSurfaceMesh(c.mesh, sm), 0) << "a component is no polygon mesh";
+    EXPECT_FALSE(CGAL::Polygon_mesh_processing::does_self_intersect(sm));
+  }
 }
 
 }  // namespace

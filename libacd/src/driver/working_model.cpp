@@ -2,6 +2,7 @@
 
 #include <acd/algo/closest_point.hpp>
 #include <acd/algo/working_mesh.hpp>
+#include <acd/diagnosis.hpp>
 
 #include <tbb/parallel_for.h>
 
@@ -137,13 +138,25 @@ double workingToInput(const TriMesh& working, const TriMesh& input) {
 WorkingModel simplifyPieces(std::vector<TriMesh>& meshes, double tolerance) {
   WorkingModel out;
   std::vector<WorkingMesh> simplified(meshes.size());
-  tbb::parallel_for(std::size_t(0), meshes.size(),
-                    [&](std::size_t i) { simplified[i] = simplifyWithin(meshes[i], tolerance); });
+  // The collapses keep each face near the input, not apart from the others: where two sheets of
+  // the surface run closer than the tolerance and curve (a thin bent plate), a face of one may
+  // pass through the other, and the pieces cut from such a mesh cross themselves (wrong volumes;
+  // a cut there may find no clean section). Such a piece is simplified again within half, then a
+  // quarter, and kept as it is if that does not help either; unless the input itself crosses
+  // itself, which the decomposition accepts (and redoes at full resolution if a cut fails).
+  tbb::parallel_for(std::size_t(0), meshes.size(), [&](std::size_t i) {
+    for (double within = tolerance; within >= tolerance / 4; within /= 2) {
+      simplified[i] = simplifyWithin(meshes[i], within);
+      if (countSelfIntersections(simplified[i].mesh, 1) == 0) return;
+      if (within == tolerance && countSelfIntersections(meshes[i], 1) != 0) return;
+    }
+    simplified[i] = WorkingMesh{};
+  });
   out.inputVertices.resize(meshes.size());
   for (std::size_t i = 0; i < meshes.size(); ++i) {
     WorkingMesh& w = simplified[i];
     out.inputFaces += static_cast<int>(meshes[i].faces.size());
-    if (w.mesh.faces.size() >= meshes[i].faces.size()) {
+    if (w.mesh.faces.empty() || w.mesh.faces.size() >= meshes[i].faces.size()) {
       out.workingFaces += static_cast<int>(meshes[i].faces.size());
       continue;
     }
