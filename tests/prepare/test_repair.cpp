@@ -196,6 +196,29 @@ TEST(Repair, CleanSurfaceShortcutGivesWhatCgalGives) {
   }
 }
 
+// A closed, oriented surface with one cap face skips the soup's orientation (it would change
+// nothing) but not the cap's repair: what all of CGAL's steps give, exactly.
+TEST(Repair, CapFaceOnAnOrientedSurfaceIsRepairedAsByAllSteps) {
+  TriMesh capped = shapes::icosphere(Vec3(0, 0, 0), 1.0, 3);
+  // Faces (u, v, w1) and (v, u, w2) share edge u-v: a vertex m just off its middle splits the
+  // first in two and closes the second's edge with the cap (v, m, u), its angle at m 179.99 degrees.
+  const Face f1 = capped.faces[0];
+  const int u = f1[0], v = f1[1], w1 = f1[2];
+  const Vec3 mid = 0.5 * (capped.vertices[u] + capped.vertices[v]);
+  const double edge = (capped.vertices[u] - capped.vertices[v]).norm();
+  capped.vertices.push_back(mid + 1e-4 * edge * mid.normalized());
+  const int m = static_cast<int>(capped.vertices.size()) - 1;
+  capped.faces[0] = {u, m, w1};
+  capped.faces.push_back({m, v, w1});
+  capped.faces.push_back({v, m, u});
+  ASSERT_TRUE(isClosedOriented(capped));
+  expectSameRepair(capped, "icosphere with a cap face");
+  const MeshRepair r = repairMesh(capped);
+  ASSERT_TRUE(r.status.ok());
+  EXPECT_GE(r.removedDegenerateFaces, 1);
+  EXPECT_TRUE(isClosedOriented(r.mesh));
+}
+
 // A vertex where two fans meet is not clean even though every edge is used once each way.
 TEST(Repair, PinchedVertexIsSplitWithTheShortcutOn) {
   const MeshRepair r = repairMesh(shapes::voxels({{0, 0, 0}, {1, 1, 1}}));

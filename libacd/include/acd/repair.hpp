@@ -24,7 +24,8 @@ struct RepairOptions {
   double capDegrees = 179.9;
   /// A mesh that is already a closed, oriented, manifold surface with no face near the needle
   /// and cap limits skips CGAL's steps, which would give it back unchanged (a tenth of the time
-  /// of a clean model's decomposition). false runs them always; tests compare the two.
+  /// of a clean model's decomposition); one that is such a surface but for needle or cap faces
+  /// skips only the soup's orientation and its check. false runs every step always; tests compare.
   bool skipWhenClean = true;
 };
 

@@ -66,8 +66,10 @@ bool cleanSurface(const TriMesh& mesh, const RepairOptions& options) {
 }
 
 /// Steps 3 to 6, with CGAL's polygon-soup and mesh repairs; `r.mesh` is the result. Should CGAL
-/// give up, `r.mesh` is `merged`, what the steps before it made.
-void repairWithCgal(const TriMesh& merged, const RepairOptions& options, double diagonal, MeshRepair& r) {
+/// give up, `r.mesh` is `merged`, what the steps before it made. `manifold`: `merged` is known to
+/// be an oriented surface, one fan per vertex (step 3 would change nothing).
+void repairWithCgal(const TriMesh& merged, const RepairOptions& options, double diagonal, bool manifold,
+                    MeshRepair& r) {
   // 3. Manifold and oriented (CGAL): points are copied where edges or vertices are non-manifold.
   std::vector<Point> points;
   points.reserve(merged.vertices.size());
@@ -79,18 +81,22 @@ void repairWithCgal(const TriMesh& merged, const RepairOptions& options, double 
   std::string failure;
   SurfaceMesh sm;
   try {
-    const std::size_t pointsBefore = points.size();
-    PMP::orient_polygon_soup(points, polygons);
-    r.splitVertices += static_cast<int>(points.size() - pointsBefore);
-    // orient_polygon_soup keeps the polygon order; a polygon is flipped when its positions run backwards.
-    for (std::size_t i = 0; i < polygons.size(); ++i) {
-      const Point& a = points[polygons[i][0]];
-      const Polygon& b = before[i];
-      const int at = points[b[0]] == a ? 0 : points[b[1]] == a ? 1 : 2;
-      if (points[polygons[i][1]] != points[b[(at + 1) % 3]]) ++r.flippedFaces;
+    // A scan with a few cap faces is such a surface: the soup's orientation and its check (a
+    // std::set of its edges) were most of its repair (ChineseDragon x2, 320k faces: ~6 s).
+    if (!manifold) {
+      const std::size_t pointsBefore = points.size();
+      PMP::orient_polygon_soup(points, polygons);
+      r.splitVertices += static_cast<int>(points.size() - pointsBefore);
+      // orient_polygon_soup keeps the polygon order; a polygon is flipped when its positions run backwards.
+      for (std::size_t i = 0; i < polygons.size(); ++i) {
+        const Point& a = points[polygons[i][0]];
+        const Polygon& b = before[i];
+        const int at = points[b[0]] == a ? 0 : points[b[1]] == a ? 1 : 2;
+        if (points[polygons[i][1]] != points[b[(at + 1) % 3]]) ++r.flippedFaces;
+      }
+      if (!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+        throw std::runtime_error("the oriented soup is not a polygon mesh");
     }
-    if (!PMP::is_polygon_soup_a_polygon_mesh(polygons))
-      throw std::runtime_error("the oriented soup is not a polygon mesh");
     PMP::polygon_soup_to_polygon_mesh(points, polygons, sm);
     // 4. Borders that run along each other.
     r.stitchedEdges = static_cast<int>(PMP::stitch_borders(sm));
@@ -232,7 +238,9 @@ MeshRepair repairMesh(const TriMesh& input, const RepairOptions& options) {
     // that bounds its material; CGAL's soup repair would pair them in file order.
     const TouchingSolidsSplit parts = splitTouchingSolids(merged);
     r.splitVertices = parts.copiedVertices;
-    repairWithCgal(parts.mesh, options, diagonal, r);
+    const bool manifold = options.skipWhenClean && isOrientedEdgeManifold(parts.mesh.faces) &&
+                          diagnose(parts.mesh).nonManifoldVertices == 0;
+    repairWithCgal(parts.mesh, options, diagonal, manifold, r);
   }
 
   describeRepairs(options, r);
