@@ -24,13 +24,19 @@ namespace {
 using acd::TriMesh;
 using acd::Vec3;
 
-TEST(DenseInput, HalfAMillionFaceTorusKeepsTauAgainstTheInput) {
-  const TriMesh torus = acd::shapes::torus(1.0, 0.35, 1000, 260);
-  ASSERT_GE(torus.faces.size(), 500000u);
+/// tau 0.05 on two threads, through a working mesh within a tenth of tau.
+acd::DecomposeOptions throughWorkingMesh() {
   acd::DecomposeOptions o;
   o.tau = 0.05;
   o.threads = 2;
   o.workingShare = 0.1;
+  return o;
+}
+
+TEST(DenseInput, HalfAMillionFaceTorusKeepsTauAgainstTheInput) {
+  const TriMesh torus = acd::shapes::torus(1.0, 0.35, 1000, 260);
+  ASSERT_GE(torus.faces.size(), 500000u);
+  const acd::DecomposeOptions o = throughWorkingMesh();
   const acd::Decomposition d = acd::decompose(torus, o);
   ASSERT_TRUE(d.status.ok()) << d.status.message;
   // The work was done on far fewer faces than the input has.
@@ -148,10 +154,7 @@ TriMesh bentPlate(double thickness) {
 // that do). Each component is checked by CGAL's own self-intersection test.
 TEST(DenseInput, ThinBentPlateGivesComponentsThatDoNotCrossThemselves) {
   const TriMesh plate = bentPlate(0.002);
-  acd::DecomposeOptions o;
-  o.tau = 0.05;
-  o.threads = 2;
-  o.workingShare = 0.1;
+  const acd::DecomposeOptions o = throughWorkingMesh();
   const acd::Decomposition d = acd::decompose(plate, o);
   ASSERT_TRUE(d.status.ok()) << d.status.message;
   EXPECT_GT(d.stats.workingFaces, 0);
