@@ -2,6 +2,7 @@
 #include <acd/algo/hull_excess.hpp>
 #include <acd/algo/hull.hpp>
 #include <acd/algo/shapes.hpp>
+#include <acd/algo/working_mesh.hpp>
 
 #include "helpers.hpp"
 
@@ -110,6 +111,72 @@ TEST(HullExcess, AgreesWithDenseSamplingOnABumpySphere) {
     }
     EXPECT_LE(e.distance, e.bound + 1e-12) << limit;
     EXPECT_NEAR(index.distance(e.hullPoint), e.distance, 1e-9) << limit;
+  }
+}
+
+}  // namespace
+
+namespace {
+
+using acd::TriMesh;
+using acd::Vec3;
+
+// The U's slot again, measured against a finely split copy of the U through the face grid, with
+// the U itself as the stand-in that tells inside from outside: the same 0.5.
+TEST(InputExcess, UShapeSlotAgainstAFineCopyIsAsDeepAsItIsWide) {
+  const TriMesh u = acd::shapes::uShape();
+  const TriMesh fine = acdtest::midpointSubdivided(acdtest::midpointSubdivided(acdtest::midpointSubdivided(u)));
+  const acd::InputExcess input(fine, u, 0.0);
+  const TriMesh hull = acd::hullMesh(u.vertices);
+  const acd::HullExcess below = input.measure(hull, 0.49, 0.001);
+  EXPECT_TRUE(below.exceeds);
+  EXPECT_GT(below.distance, 0.49);
+  EXPECT_LE(below.distance, 0.51);
+  const acd::HullExcess above = input.measure(hull, 0.51, 0.001);
+  EXPECT_FALSE(above.exceeds);
+  EXPECT_LE(above.bound, 0.51 + 1e-12);
+}
+
+// A dense bumpy sphere against a hull that sticks out of it at its corners and runs through it
+// elsewhere, with a coarse stand-in (the working mesh within 0.01): the search agrees with dense
+// sampling by the tests' own distance and inside code, where points inside the input count zero.
+TEST(InputExcess, AgreesWithDenseSamplingOnADenseBumpySphere) {
+  TriMesh m = acd::shapes::icosphere(Vec3(0, 0, 0), 1.0, 5);
+  const std::vector<Vec3> noise = acdtest::randomPoints(static_cast<int>(m.vertices.size()), 3);
+  for (std::size_t v = 0; v < m.vertices.size(); ++v) {
+    const Vec3 p = m.vertices[v];
+    m.vertices[v] *= 1.0 + 0.05 * std::sin(7 * p.x()) * std::cos(5 * p.y()) + 0.002 * noise[v].x();
+  }
+  const acd::WorkingMesh standIn = acd::simplifyWithin(m, 0.01);
+  ASSERT_LT(standIn.mesh.faces.size(), m.faces.size() / 4);
+  const acd::InputExcess input(m, standIn.mesh, 2 * std::max(standIn.inputToWorking, 0.01));
+  acdtest::MeshIndex index(m);
+  // A box through the sphere whose corners stand out of it, and the hull of the sphere's vertices.
+  for (const TriMesh& hull : {acd::hullMesh(acd::shapes::box(Vec3(-0.75, -0.7, -0.65), Vec3(0.7, 0.75, 0.7)).vertices),
+                              acd::hullMesh(m.vertices)}) {
+    // Samples 0.02 apart at most: the excess is 1-Lipschitz, so none is missed by more than that.
+    const double spacing = 0.02;
+    double sampled = 0.0;
+    for (const acd::Face& f : hull.faces) {
+      double longest = 0.0;
+      for (int k = 0; k < 3; ++k) longest = std::max(longest, (hull.vertices[f[k]] - hull.vertices[f[(k + 1) % 3]]).norm());
+      const int n = std::max(2, static_cast<int>(std::ceil(longest / spacing)));
+      for (int i = 0; i <= n; ++i)
+        for (int j = 0; i + j <= n; ++j) {
+          const Vec3 q = hull.vertices[f[0]] + (hull.vertices[f[1]] - hull.vertices[f[0]]) * (double(i) / n) +
+                         (hull.vertices[f[2]] - hull.vertices[f[0]]) * (double(j) / n);
+          if (!index.inside(q)) sampled = std::max(sampled, index.distance(q));
+        }
+    }
+    ASSERT_GT(sampled, 0.005);
+    for (double limit : {0.5 * sampled, 0.9 * sampled, 1.1 * sampled, 2.0 * sampled}) {
+      const acd::HullExcess e = input.measure(hull, limit, 1e-3);
+      if (sampled > limit) EXPECT_TRUE(e.exceeds) << limit;
+      if (!e.exceeds) EXPECT_GE(e.bound, sampled - 1e-12) << limit;
+      // What it found is a lower bound: no farther than sampling finds anywhere near it.
+      EXPECT_LE(e.distance, sampled + spacing) << limit;
+      if (sampled + spacing < limit) EXPECT_FALSE(e.exceeds) << limit;
+    }
   }
 }
 

@@ -232,6 +232,46 @@ void appendNewPairs(std::vector<SharedFaces>& pairs, const std::vector<SharedFac
     if (!have.count({p.a, p.b})) pairs.push_back(p);
 }
 
+/// A component's hull distance to the model, for a working mesh: against the working model (or
+/// the working piece, MergeScope::Component) plus what the working mesh stands off the input, and
+/// where that sum exceeds tau, against the input itself (its grid built once, when first needed).
+class ExcessAgainstInput {
+ public:
+  ExcessAgainstInput(const TriMesh& workingModel, std::vector<TriMesh> input, double standOff, double tau)
+      : workingModel_(workingModel), working_(workingModel), input_(std::move(input)), standOff_(standOff), tau_(tau) {}
+
+  double tau() const { return tau_; }
+  /// How far apart the working model's surface and the input's may lie, with room for what the
+  /// stand-off's samples missed: beyond it from one, a point is on the same side of both.
+  double sideMargin() const { return 2 * standOff_; }
+
+  double operator()(const TriMesh& hull, const TriMesh& piece, MergeScope scope) {
+    const HullExcess e = scope == MergeScope::Model
+                             ? working_.measure(hull, tau_ - standOff_, kExcessResolution * tau_)
+                             : measureHullExcess(piece, hull, tau_ - standOff_, kExcessResolution * tau_);
+    if (!e.exceeds) return e.distance + standOff_;
+    return againstInput(hull, tau_).distance;
+  }
+
+  /// Against the input itself, to `limit`; the working model tells inside from outside farther
+  /// than sideMargin() from the input's surface.
+  HullExcess againstInput(const TriMesh& hull, double limit) {
+    std::call_once(built_, [&] {
+      input_model_ = std::make_unique<InputExcess>(concatenate(input_), workingModel_, sideMargin());
+      input_ = {};
+    });
+    return input_model_->measure(hull, limit, kExcessResolution * tau_);
+  }
+
+ private:
+  const TriMesh& workingModel_;
+  ModelExcess working_;
+  std::vector<TriMesh> input_;
+  double standOff_, tau_;
+  std::once_flag built_;
+  std::unique_ptr<InputExcess> input_model_;
+};
+
 /// One candidate union of the merge pass: screened by the cheaper test, then confirmed by the
 /// costlier one only when its turn comes (screenUnion, confirmUnion).
 struct MergeCandidate {
@@ -273,12 +313,20 @@ MergeCandidate screenUnion(const Piece& a, const Piece& b, const TriMesh& hullA,
 /// The costlier test, on a screened union: its hull within tau of the model (Model), or its own
 /// concavity and its hull within tau of it (Component).
 void confirmUnion(MergeCandidate& m, const Piece& a, const Piece& b, const ModelExcess* model,
-                  const DecomposeOptions& o, const ConcavityOptions& co) {
+                  ExcessAgainstInput* input, const DecomposeOptions& o, const ConcavityOptions& co) {
   m.confirmed = true;
   if (model) {
     // Pieces that touch but do not glue into one solid (a cap that a later cut split on one side
     // only) may still share one hull: the component keeps them as two shells.
-    const HullExcess e = model->measure(m.hull, kExcessLimit * o.tau, kExcessResolution * o.tau);
+    HullExcess e = model->measure(m.hull, kExcessLimit * o.tau, kExcessResolution * o.tau);
+    // A working model is held to tau less its stand-off; what that refuses, the input decides,
+    // unless the union is beyond by more than the stand-off on the working model too (the cheaper
+    // measure; about half the unions the input would have to refuse, on the corpus).
+    if (e.exceeds && input) {
+      const double limit = kExcessLimit * input->tau();
+      if (!model->measure(m.hull, limit + input->sideMargin(), kExcessResolution * o.tau).exceeds)
+        e = input->againstInput(m.hull, limit);
+    }
     m.ok = !e.exceeds;
     m.hullExcess = e.distance;
     if (m.ok) m.glued = joinPieces(a.mesh, b.mesh);
@@ -305,7 +353,7 @@ void confirmUnion(MergeCandidate& m, const Piece& a, const Piece& b, const Model
 /// that may be taken after it, in parallel; which ones are confirmed early never changes a
 /// decision, so the result does not depend on the thread count.
 void mergePieces(std::vector<Piece>& finals, std::vector<Component>& finalInfo, const TriMesh& input,
-                 const DecomposeOptions& o, DecomposeStats& stats) {
+                 ExcessAgainstInput* againstInput, const DecomposeOptions& o, DecomposeStats& stats) {
   ConcavityOptions co;
   co.epsilon = o.epsilon;
   std::unique_ptr<ModelExcess> model;
@@ -355,7 +403,7 @@ void mergePieces(std::vector<Piece>& finals, std::vector<Component>& finalInfo, 
           if (open(order[m]) && !unions[order[m]]->confirmed) next.push_back(order[m]);
         tbb::parallel_for(std::size_t(0), next.size(), [&](std::size_t t) {
           const std::size_t q = next[t];
-          confirmUnion(*unions[q], finals[id[pairs[q].a]], finals[id[pairs[q].b]], model.get(), o, co);
+          confirmUnion(*unions[q], finals[id[pairs[q].a]], finals[id[pairs[q].b]], model.get(), againstInput, o, co);
         });
       }
       if (!unions[k]->ok) continue;
@@ -472,31 +520,6 @@ int countNotches(const TriMesh& mesh, double angle) {
 
 namespace {
 
-/// A component's hull distance to the model, for a working mesh: against the working model (or
-/// the working piece, MergeScope::Component) plus what the working mesh stands off the input, and
-/// where that sum exceeds tau, against the input itself (built once, when first needed).
-class ExcessAgainstInput {
- public:
-  ExcessAgainstInput(const TriMesh& workingModel, std::vector<TriMesh> input, double standOff, double tau)
-      : working_(workingModel), input_(std::move(input)), standOff_(standOff), tau_(tau) {}
-
-  double operator()(const TriMesh& hull, const TriMesh& piece, MergeScope scope) {
-    const HullExcess e = scope == MergeScope::Model
-                             ? working_.measure(hull, tau_ - standOff_, kExcessResolution * tau_)
-                             : measureHullExcess(piece, hull, tau_ - standOff_, kExcessResolution * tau_);
-    if (!e.exceeds) return e.distance + standOff_;
-    std::call_once(built_, [&] { input_model_ = std::make_unique<ModelExcess>(concatenate(input_)); });
-    return input_model_->measure(hull, tau_, kExcessResolution * tau_).distance;
-  }
-
- private:
-  ModelExcess working_;
-  std::vector<TriMesh> input_;
-  double standOff_, tau_;
-  std::once_flag built_;
-  std::unique_ptr<ModelExcess> input_model_;
-};
-
 /// prepareSolid, or for a `clean` shell (acd/clean_shell.hpp) the shell as it is.
 PreparedSolid prepareUnlessClean(const TriMesh& mesh, const PrepareOptions& po, bool clean) {
   if (!clean || firstZeroAreaFace(mesh) >= 0) return prepareSolid(mesh, po);
@@ -580,23 +603,38 @@ Decomposition decomposeSolid(const TriMesh& mesh, const TriMesh* heldTo, double 
     }
 
     t = Clock::now();
-    DecomposeOptions mergeOptions = inner;
-    mergeOptions.tau = mergeTau - allowance;
-    if (o.merge) mergePieces(finals, finalInfo, model, mergeOptions, result.stats);
-    result.times.merging = secondsSince(t);
-
-    t = Clock::now();
-    // The input's own vertices each working piece stands for join its hull.
-    std::vector<std::vector<Vec3>> inputPoints;
-    if (working.used()) {
+    // The input's own vertices each working piece stands for (its nearest) join its hull.
+    auto inputPointsOf = [&](const std::vector<Piece>& pieces) {
       std::vector<const TriMesh*> meshes;
       std::vector<int> sources;
-      for (const Piece& p : finals) meshes.push_back(&p.mesh), sources.push_back(firstOf.at(p.source));
-      inputPoints = inputVerticesOf(working, meshes, sources);
-    }
+      for (const Piece& p : pieces) meshes.push_back(&p.mesh), sources.push_back(firstOf.at(p.source));
+      return inputVerticesOf(working, meshes, sources);
+    };
     std::unique_ptr<ExcessAgainstInput> excess;
     if (working.used())
       excess = std::make_unique<ExcessAgainstInput>(model, std::move(inputMeshes), working.distance, mergeTau);
+    DecomposeOptions mergeOptions = inner;
+    mergeOptions.tau = mergeTau - allowance;
+    if (o.merge) {
+      const bool heldToInput = excess && o.mergeScope == MergeScope::Model;
+      if (heldToInput) {
+        // Unions are then measured against the input to the full tau where the working model's
+        // tau less the stand-off refuses them, so their hulls hold the input's vertices already:
+        // what the merge accepts is what the components' hulls will be.
+        const std::vector<std::vector<Vec3>> points = inputPointsOf(finals);
+        tbb::parallel_for(std::size_t(0), finals.size(), [&](std::size_t i) {
+          std::vector<Vec3> all = finals[i].mesh.vertices;
+          all.insert(all.end(), points[i].begin(), points[i].end());
+          finalInfo[i].hull = convexHull(all).mesh;
+        });
+      }
+      mergePieces(finals, finalInfo, model, heldToInput ? excess.get() : nullptr, mergeOptions, result.stats);
+    }
+    result.times.merging = secondsSince(t);
+
+    t = Clock::now();
+    std::vector<std::vector<Vec3>> inputPoints;
+    if (working.used()) inputPoints = inputPointsOf(finals);
     result.components.resize(finals.size());
     tbb::parallel_for(std::size_t(0), finals.size(), [&](std::size_t i) {
       Component& c = result.components[i];

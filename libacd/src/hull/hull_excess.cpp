@@ -1,6 +1,7 @@
 // Distances from hull points to the mesh's surface with CGAL's AABB tree (double arithmetic: a
 // distance, not a predicate).
 #include <acd/algo/closest_point.hpp>
+#include <acd/algo/face_grid.hpp>
 #include <acd/algo/hull_excess.hpp>
 #include <acd/algo/inside.hpp>
 #include <acd/algo/random.hpp>
@@ -14,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -214,6 +216,63 @@ HullExcess ModelExcess::measure(const TriMesh& hull, double limit, double resolu
                           if (radius <= d) return -1.0;
                           nearest = q;
                           reach = radius - d;
+                          return 0.0;
+                        });
+}
+
+struct InputExcess::Impl {
+  Impl(TriMesh in, TriMesh stand, double off)
+      : input(std::move(in)), standIn(std::move(stand)), standOff(off), inputFaces({&input}), standInFaces({&standIn}),
+        standInSide(standIn) {}
+  TriMesh input, standIn;
+  double standOff;
+  FaceGrid inputFaces, standInFaces;
+  InsideTest standInSide;
+};
+
+InputExcess::InputExcess(TriMesh input, TriMesh standIn, double standOff)
+    : impl_(std::make_unique<Impl>(std::move(input), std::move(standIn), standOff)) {}
+InputExcess::~InputExcess() = default;
+
+HullExcess InputExcess::measure(const TriMesh& hull, double limit, double resolution) const {
+  if (impl_->input.faces.empty() || hull.faces.empty()) return {};
+  const Impl& m = *impl_;
+  Triangle nearestFace;  // the probe's, read by the search before the next probe
+  return branchAndBound(hull, limit, resolution,
+                        [&](const Vec3& q, const Patch&, double radius, Vec3& nearest, double& reach,
+                            const Triangle*& face) {
+                          nearest = q;  // the grids give distances only
+                          // The stand-in's surface and the input's lie within the stand-off of each
+                          // other, so the distance to the input is the stand-in's give or take that:
+                          // enough to settle most patches without the input's (finer) grid.
+                          const double off = m.standOff;
+                          const double within = limit + radius;
+                          const double w = m.standInFaces.nearest(q, std::max(off + radius, within)).distance;
+                          // Farther than the stand-off (and the patch's radius) from the stand-in's
+                          // surface, the whole patch is on one side of the input, the stand-in's.
+                          const bool clear = w > off + radius;
+                          if (clear && m.standInSide.inside(q)) return -1.0;
+                          if (clear && w - off > limit) return w - off;  // beyond, and no nearer than that
+                          if (w + off + radius <= limit) {
+                            reach = radius + 2 * off;  // d + reach = w + off + radius
+                            return clear ? std::max(0.0, w - off) : 0.0;
+                          }
+                          // Only the distance decides beyond limit + radius: a value there is a
+                          // lower bound, which still says "beyond".
+                          const FaceGrid::Nearest n = m.inputFaces.nearest(q, within);
+                          const double d = std::min(n.distance, std::nextafter(within, std::numeric_limits<double>::infinity()));
+                          if (n.face >= 0 && n.distance <= within) {
+                            // Its corners' distance to this face bounds the patch's (the search's
+                            // own refinement, which settles flat stretches without splitting).
+                            const Face& t = m.input.faces[n.face];
+                            nearestFace = Triangle(toPoint(m.input.vertices[t[0]]), toPoint(m.input.vertices[t[1]]),
+                                                   toPoint(m.input.vertices[t[2]]));
+                            face = &nearestFace;
+                          }
+                          if (clear) return d;  // outside the input: the excess is the distance
+                          // Side unknown: no point of the patch stands off the input by more than
+                          // its distance to the surface.
+                          reach = d + radius;
                           return 0.0;
                         });
 }

@@ -63,4 +63,26 @@ class ModelExcess {
   std::unique_ptr<Impl> impl_;
 };
 
+/// How far a hull sticks out of a dense closed input, with no structure of the input's size but a
+/// grid of its faces (a few bytes a face, where ModelExcess's trees take hundreds): distances to
+/// the input come from the grid, and which side of it a point lies on from a coarse closed stand-in
+/// whose surface lies within `standOff` of the input's, both ways (the working model,
+/// acd/algo/working_mesh.hpp): a point farther than that from the stand-in's surface lies on the
+/// same side of both. Nearer, the side is left open and only the distance bounds the excess there.
+/// `measure` is thread-safe.
+class InputExcess {
+ public:
+  InputExcess(TriMesh input, TriMesh standIn, double standOff);
+  ~InputExcess();
+  InputExcess(const InputExcess&) = delete;
+  InputExcess& operator=(const InputExcess&) = delete;
+
+  /// The same branch and bound as ModelExcess::measure.
+  HullExcess measure(const TriMesh& hull, double limit, double resolution) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
 }  // namespace acd

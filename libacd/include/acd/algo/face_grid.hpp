@@ -1,0 +1,45 @@
+// A uniform grid over the faces of some meshes, for the face nearest to a point: a query touches
+// the cells around the point, not the whole surface, and the grid costs a few bytes per face.
+#pragma once
+
+#include <acd/mesh.hpp>
+
+#include <array>
+#include <cstddef>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace acd {
+
+class FaceGrid {
+ public:
+  /// About one face per cell, over the box of all the meshes' vertices. The meshes must outlive it.
+  explicit FaceGrid(std::vector<const TriMesh*> meshes);
+
+  struct Nearest {
+    int mesh = -1;  // which mesh holds the nearest face; -1 when none was found
+    int face = -1;  // which face of it
+    double distance = std::numeric_limits<double>::infinity();
+  };
+
+  /// The nearest face's mesh and its distance; equal distances go to the lower mesh index. The
+  /// search may stop once every face not seen lies farther than `within`: a distance above
+  /// `within` only says that the true one is above it too.
+  Nearest nearest(const Vec3& p, double within = std::numeric_limits<double>::infinity()) const;
+
+ private:
+  /// The squared distance from p to cell (i, j, k)'s box, less rounding's worth (a lower bound).
+  double cellDistance2(const Vec3& p, int i, int j, int k) const;
+  template <class Visit>
+  void forEachFaceCell(const Visit& visit) const;
+
+  std::vector<const TriMesh*> meshes_;
+  double cell_ = 1.0;
+  Vec3 lo_ = Vec3::Zero();
+  std::array<int, 3> dims_{};
+  std::vector<std::size_t> start_;          // by cell, into entries_
+  std::vector<std::pair<int, int>> entries_;  // (mesh, face) by cell
+};
+
+}  // namespace acd

@@ -1,0 +1,70 @@
+// The face grid's nearest face against every face tried one by one, near the surface, inside it,
+// far outside the grid, and with a search radius.
+#include <acd/algo/closest_point.hpp>
+#include <acd/algo/face_grid.hpp>
+#include <acd/algo/shapes.hpp>
+
+#include "helpers.hpp"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+namespace {
+
+using acd::TriMesh;
+using acd::Vec3;
+
+/// The distance to the nearest face of the meshes, and which mesh (the lower on a tie).
+std::pair<int, double> everyFace(const std::vector<const TriMesh*>& meshes, const Vec3& p) {
+  std::pair<int, double> best{-1, std::numeric_limits<double>::infinity()};
+  for (std::size_t m = 0; m < meshes.size(); ++m)
+    for (const acd::Face& f : meshes[m]->faces) {
+      const TriMesh& t = *meshes[m];
+      const double d = (acd::closestPointOnTriangle(p, t.vertices[f[0]], t.vertices[f[1]], t.vertices[f[2]]) - p).norm();
+      if (d < best.second) best = {static_cast<int>(m), d};
+    }
+  return best;
+}
+
+TEST(FaceGrid, NearestFaceIsTheOneEveryFaceTriedGives) {
+  const TriMesh sphere = acd::shapes::icosphere(Vec3(0, 0, 0), 1.0, 3);
+  const TriMesh box = acd::shapes::box(Vec3(1.2, -0.3, -0.3), Vec3(1.8, 0.3, 0.3));
+  const std::vector<const TriMesh*> meshes{&sphere, &box};
+  const acd::FaceGrid grid(meshes);
+  // Points in a ball of radius 3: inside the sphere, between the two, and well outside the grid.
+  for (const Vec3& u : acdtest::randomPoints(400, 5, true)) {
+    const Vec3 p = 3.0 * u;
+    const auto [mesh, distance] = everyFace(meshes, p);
+    const acd::FaceGrid::Nearest n = grid.nearest(p);
+    EXPECT_EQ(n.mesh, mesh) << p.transpose();
+    EXPECT_NEAR(n.distance, distance, 1e-12) << p.transpose();
+    ASSERT_GE(n.face, 0);
+    const TriMesh& t = *meshes[n.mesh];
+    const acd::Face& f = t.faces[n.face];
+    EXPECT_NEAR((acd::closestPointOnTriangle(p, t.vertices[f[0]], t.vertices[f[1]], t.vertices[f[2]]) - p).norm(),
+                distance, 1e-12);
+  }
+}
+
+TEST(FaceGrid, ASearchRadiusKeepsWhatIsWithinAndSaysBeyondOfTheRest) {
+  const TriMesh sphere = acd::shapes::icosphere(Vec3(0, 0, 0), 1.0, 4);
+  const acd::FaceGrid grid({&sphere});
+  for (const double within : {0.0, 0.01, 0.1, 0.4}) {
+    for (const Vec3& u : acdtest::randomPoints(300, 9, true)) {
+      const Vec3 p = 2.0 * u;
+      const double distance = everyFace({&sphere}, p).second;
+      const double found = grid.nearest(p, within).distance;
+      if (distance <= within) EXPECT_NEAR(found, distance, 1e-12) << p.transpose();
+      else EXPECT_GT(found, within) << p.transpose();
+    }
+  }
+}
+
+TEST(FaceGrid, NoFacesFindNothing) {
+  const TriMesh empty;
+  const acd::FaceGrid grid({&empty});
+  EXPECT_EQ(grid.nearest(Vec3(0, 0, 0)).mesh, -1);
+}
+
+}  // namespace
