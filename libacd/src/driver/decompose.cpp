@@ -255,12 +255,12 @@ class ExcessAgainstInput {
 
   /// Against the input itself, to `limit`; the working model tells inside from outside farther
   /// than sideMargin() from the input's surface.
-  HullExcess againstInput(const TriMesh& hull, double limit) {
+  HullExcess againstInput(const TriMesh& hull, double limit, int firstFace = -1) {
     std::call_once(built_, [&] {
       input_model_ = std::make_unique<InputExcess>(concatenate(input_), workingModel_, sideMargin());
       input_ = {};
     });
-    return input_model_->measure(hull, limit, kExcessResolution * tau_);
+    return input_model_->measure(hull, limit, kExcessResolution * tau_, firstFace);
   }
 
  private:
@@ -276,6 +276,7 @@ class ExcessAgainstInput {
 /// costlier one only when its turn comes (screenUnion, confirmUnion).
 struct MergeCandidate {
   TriMesh hull;                // the union's hull (the glued piece's, if it is taken)
+  TriMesh inputHull;           // with the input's vertices the pieces stand for (a working mesh's)
   double volume = 0.0;         // the union's
   bool screened = false;       // passes the cheaper test
   bool confirmed = false;      // the costlier test was made
@@ -313,19 +314,29 @@ MergeCandidate screenUnion(const Piece& a, const Piece& b, const TriMesh& hullA,
 /// The costlier test, on a screened union: its hull within tau of the model (Model), or its own
 /// concavity and its hull within tau of it (Component).
 void confirmUnion(MergeCandidate& m, const Piece& a, const Piece& b, const ModelExcess* model,
-                  ExcessAgainstInput* input, const DecomposeOptions& o, const ConcavityOptions& co) {
+                  ExcessAgainstInput* input, const TriMesh* inputHullA, const TriMesh* inputHullB,
+                  const DecomposeOptions& o, const ConcavityOptions& co) {
   m.confirmed = true;
   if (model) {
     // Pieces that touch but do not glue into one solid (a cap that a later cut split on one side
     // only) may still share one hull: the component keeps them as two shells.
-    HullExcess e = model->measure(m.hull, kExcessLimit * o.tau, kExcessResolution * o.tau);
+    // With a working mesh, the hull measured is the one the component would have: with the
+    // input's vertices (screening, a cheaper test, keeps to the pieces' own).
+    if (inputHullA && inputHullB) {
+      std::vector<Vec3> corners = inputHullA->vertices;
+      corners.insert(corners.end(), inputHullB->vertices.begin(), inputHullB->vertices.end());
+      m.inputHull = convexHull(corners).mesh;
+    }
+    const TriMesh& hull = inputHullA && inputHullB ? m.inputHull : m.hull;
+    HullExcess e = model->measure(hull, kExcessLimit * o.tau, kExcessResolution * o.tau);
     // A working model is held to tau less its stand-off; what that refuses, the input decides,
     // unless the union is beyond by more than the stand-off on the working model too (the cheaper
     // measure; about half the unions the input would have to refuse, on the corpus).
+    // Both start where the working model's measure found the union beyond.
     if (e.exceeds && input) {
       const double limit = kExcessLimit * input->tau();
-      if (!model->measure(m.hull, limit + input->sideMargin(), kExcessResolution * o.tau).exceeds)
-        e = input->againstInput(m.hull, limit);
+      if (!model->measure(hull, limit + input->sideMargin(), kExcessResolution * o.tau, e.hullFace).exceeds)
+        e = input->againstInput(hull, limit, e.hullFace);
     }
     m.ok = !e.exceeds;
     m.hullExcess = e.distance;
@@ -353,7 +364,8 @@ void confirmUnion(MergeCandidate& m, const Piece& a, const Piece& b, const Model
 /// that may be taken after it, in parallel; which ones are confirmed early never changes a
 /// decision, so the result does not depend on the thread count.
 void mergePieces(std::vector<Piece>& finals, std::vector<Component>& finalInfo, const TriMesh& input,
-                 ExcessAgainstInput* againstInput, const DecomposeOptions& o, DecomposeStats& stats) {
+                 ExcessAgainstInput* againstInput, std::vector<TriMesh>* inputHulls, const DecomposeOptions& o,
+                 DecomposeStats& stats) {
   ConcavityOptions co;
   co.epsilon = o.epsilon;
   std::unique_ptr<ModelExcess> model;
@@ -403,13 +415,16 @@ void mergePieces(std::vector<Piece>& finals, std::vector<Component>& finalInfo, 
           if (open(order[m]) && !unions[order[m]]->confirmed) next.push_back(order[m]);
         tbb::parallel_for(std::size_t(0), next.size(), [&](std::size_t t) {
           const std::size_t q = next[t];
-          confirmUnion(*unions[q], finals[id[pairs[q].a]], finals[id[pairs[q].b]], model.get(), againstInput, o, co);
+          const int i = id[pairs[q].a], j = id[pairs[q].b];
+          confirmUnion(*unions[q], finals[i], finals[j], model.get(), againstInput,
+                       inputHulls ? &(*inputHulls)[i] : nullptr, inputHulls ? &(*inputHulls)[j] : nullptr, o, co);
         });
       }
       if (!unions[k]->ok) continue;
       const int i = id[pairs[k].a], j = id[pairs[k].b];
       finals[i].mesh = std::move(unions[k]->glued);
       hulls[i] = std::move(unions[k]->hull);
+      if (inputHulls) (*inputHulls)[i] = std::move(unions[k]->inputHull);
       finalInfo[i].concavity = unions[k]->concavity;
       finalInfo[i].hullExcess = unions[k]->hullExcess;
       finalInfo[i].depth = std::min(finalInfo[i].depth, finalInfo[j].depth);
@@ -617,18 +632,21 @@ Decomposition decomposeSolid(const TriMesh& mesh, const TriMesh* heldTo, double 
     mergeOptions.tau = mergeTau - allowance;
     if (o.merge) {
       const bool heldToInput = excess && o.mergeScope == MergeScope::Model;
+      std::vector<TriMesh> inputHulls;
       if (heldToInput) {
         // Unions are then measured against the input to the full tau where the working model's
-        // tau less the stand-off refuses them, so their hulls hold the input's vertices already:
-        // what the merge accepts is what the components' hulls will be.
+        // tau less the stand-off refuses them, with the hulls their components would have: with
+        // the input's vertices, so that what the merge accepts is what the hulls will be.
         const std::vector<std::vector<Vec3>> points = inputPointsOf(finals);
+        inputHulls.resize(finals.size());
         tbb::parallel_for(std::size_t(0), finals.size(), [&](std::size_t i) {
           std::vector<Vec3> all = finals[i].mesh.vertices;
           all.insert(all.end(), points[i].begin(), points[i].end());
-          finalInfo[i].hull = convexHull(all).mesh;
+          inputHulls[i] = convexHull(all).mesh;
         });
       }
-      mergePieces(finals, finalInfo, model, heldToInput ? excess.get() : nullptr, mergeOptions, result.stats);
+      mergePieces(finals, finalInfo, model, heldToInput ? excess.get() : nullptr, heldToInput ? &inputHulls : nullptr,
+                  mergeOptions, result.stats);
     }
     result.times.merging = secondsSince(t);
 

@@ -73,12 +73,15 @@ std::pair<double, int> farthestCornerFrom(const Triangle& t, const Patch& p) {
 /// matters (the patch's radius, less q's depth inside the model) and the surface triangle nearest
 /// to q when there is one, or a negative distance when the whole patch is known to be 0.
 template <class Probe>
-HullExcess branchAndBound(const TriMesh& hull, double limit, double resolution, Probe probe) {
+HullExcess branchAndBound(const TriMesh& hull, double limit, double resolution, Probe probe, int firstFace = -1) {
   HullExcess out;
   std::vector<Patch> stack;
+  auto patchOf = [&](int f) {
+    return Patch{{hull.vertices[hull.faces[f][0]], hull.vertices[hull.faces[f][1]], hull.vertices[hull.faces[f][2]]}, f};
+  };
   for (std::size_t f = 0; f < hull.faces.size(); ++f)
-    stack.push_back({{hull.vertices[hull.faces[f][0]], hull.vertices[hull.faces[f][1]], hull.vertices[hull.faces[f][2]]},
-                     static_cast<int>(f)});
+    if (static_cast<int>(f) != firstFace) stack.push_back(patchOf(static_cast<int>(f)));
+  if (firstFace >= 0 && firstFace < static_cast<int>(hull.faces.size())) stack.push_back(patchOf(firstFace));
   auto record = [&out](double d, const Vec3& hullPoint, const Vec3& surfacePoint, int face) {
     if (d <= out.distance) return;
     out.distance = d;
@@ -188,7 +191,7 @@ ModelExcess::~ModelExcess() = default;
 
 int ModelExcess::openShells() const { return impl_->shells ? impl_->shells->openShells() : 0; }
 
-HullExcess ModelExcess::measure(const TriMesh& hull, double limit, double resolution) const {
+HullExcess ModelExcess::measure(const TriMesh& hull, double limit, double resolution, int firstFace) const {
   if (impl_->triangles.empty() || hull.faces.empty()) return {};
   return branchAndBound(hull, limit, resolution,
                         [&](const Vec3& q, const Patch&, double radius, Vec3& nearest, double& reach,
@@ -217,7 +220,8 @@ HullExcess ModelExcess::measure(const TriMesh& hull, double limit, double resolu
                           nearest = q;
                           reach = radius - d;
                           return 0.0;
-                        });
+                        },
+                        firstFace);
 }
 
 struct InputExcess::Impl {
@@ -234,7 +238,7 @@ InputExcess::InputExcess(TriMesh input, TriMesh standIn, double standOff)
     : impl_(std::make_unique<Impl>(std::move(input), std::move(standIn), standOff)) {}
 InputExcess::~InputExcess() = default;
 
-HullExcess InputExcess::measure(const TriMesh& hull, double limit, double resolution) const {
+HullExcess InputExcess::measure(const TriMesh& hull, double limit, double resolution, int firstFace) const {
   if (impl_->input.faces.empty() || hull.faces.empty()) return {};
   const Impl& m = *impl_;
   Triangle nearestFace;  // the probe's, read by the search before the next probe
@@ -274,7 +278,8 @@ HullExcess InputExcess::measure(const TriMesh& hull, double limit, double resolu
                           // its distance to the surface.
                           reach = d + radius;
                           return 0.0;
-                        });
+                        },
+                        firstFace);
 }
 
 namespace {

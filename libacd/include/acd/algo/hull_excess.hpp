@@ -44,8 +44,10 @@ class ModelExcess {
   ModelExcess(const ModelExcess&) = delete;
   ModelExcess& operator=(const ModelExcess&) = delete;
 
-  /// The same branch and bound as measureHullExcess, with the distance to the solid.
-  HullExcess measure(const TriMesh& hull, double limit, double resolution) const;
+  /// The same branch and bound as measureHullExcess, with the distance to the solid; hull face
+  /// `firstFace`, when given, is searched first (where another measure found the largest distance:
+  /// a hull beyond the limit is then found so at once).
+  HullExcess measure(const TriMesh& hull, double limit, double resolution, int firstFace = -1) const;
 
   /// With ModelSolid::AnyClosedShell, the shells that bound no solid (0 otherwise).
   int openShells() const;
@@ -77,8 +79,8 @@ class InputExcess {
   InputExcess(const InputExcess&) = delete;
   InputExcess& operator=(const InputExcess&) = delete;
 
-  /// The same branch and bound as ModelExcess::measure.
-  HullExcess measure(const TriMesh& hull, double limit, double resolution) const;
+  /// The same branch and bound as ModelExcess::measure, `firstFace` as there.
+  HullExcess measure(const TriMesh& hull, double limit, double resolution, int firstFace = -1) const;
 
  private:
   struct Impl;
