@@ -43,6 +43,7 @@ FaceGrid::Nearest FaceGrid::nearest(const Vec3& p, double within) const {
   inside = std::max(0.0, inside - 1e-6 * cell_);
   double best = std::numeric_limits<double>::infinity();
   int bestMesh = -1, bestFace = -1;
+  const double slack2 = 1e-18 * cell_ * cell_;  // rounding's worth, squared, for the box tests
   const int rings = std::max({dims_[0], dims_[1], dims_[2]});
   for (int r = 0; r <= rings; ++r) {
     for (int i = std::max(0, at[0] - r); i <= std::min(dims_[0] - 1, at[0] + r); ++i)
@@ -60,8 +61,16 @@ FaceGrid::Nearest FaceGrid::nearest(const Vec3& p, double within) const {
             const auto [m, f] = entries_[e];
             const TriMesh& mesh = *meshes_[m];
             const Face& t = mesh.faces[f];
-            const double d =
-                (closestPointOnTriangle(p, mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]) - p).squaredNorm();
+            const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+            // A face whose box lies farther than the best found cannot be nearer, nor tie: skip the
+            // exact distance (most faces of a cell are such).
+            double box = 0.0;
+            for (int x = 0; x < 3; ++x) {
+              const double gap = std::max({std::min({a[x], b[x], c[x]}) - p[x], p[x] - std::max({a[x], b[x], c[x]}), 0.0});
+              box += gap * gap;
+            }
+            if (box > best * (1 + 1e-9) + slack2) continue;
+            const double d = (closestPointOnTriangle(p, a, b, c) - p).squaredNorm();
             if (d < best || (d == best && m < bestMesh)) best = d, bestMesh = m, bestFace = f;
           }
         }
