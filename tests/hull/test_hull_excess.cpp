@@ -135,6 +135,14 @@ TEST(InputExcess, UShapeSlotAgainstAFineCopyIsAsDeepAsItIsWide) {
   const acd::HullExcess above = input.measure(hull, 0.51, 0.001);
   EXPECT_FALSE(above.exceeds);
   EXPECT_LE(above.bound, 0.51 + 1e-12);
+  // The hull's corners are the U's own: settling short faces by them changes no answer.
+  EXPECT_TRUE(input.measure(hull, 0.49, 0.001, -1, 0.0).exceeds);
+  const acd::HullExcess settled = input.measure(hull, 0.51, 0.001, -1, 0.0);
+  EXPECT_FALSE(settled.exceeds);
+  EXPECT_LE(settled.bound, 0.51 + 1e-12);
+  // Nor does a search started elsewhere.
+  for (int first = 0; first < static_cast<int>(hull.faces.size()); first += 5)
+    EXPECT_TRUE(input.measure(hull, 0.49, 0.001, first, 0.0).exceeds) << first;
 }
 
 // A dense bumpy sphere against a hull that sticks out of it at its corners and runs through it

@@ -260,7 +260,9 @@ class ExcessAgainstInput {
       input_model_ = std::make_unique<InputExcess>(concatenate(input_), workingModel_, sideMargin());
       input_ = {};
     });
-    return input_model_->measure(hull, limit, kExcessResolution * tau_, firstFace);
+    // A hull vertex is an input vertex (on the input), a working vertex (an input vertex too) or a
+    // cut point inside the working model: inside the input, or within two side margins of it.
+    return input_model_->measure(hull, limit, kExcessResolution * tau_, firstFace, 2 * sideMargin());
   }
 
  private:
@@ -270,6 +272,13 @@ class ExcessAgainstInput {
   double standOff_, tau_;
   std::once_flag built_;
   std::unique_ptr<InputExcess> input_model_;
+};
+
+/// With a working mesh, what a piece stands for of the input: the input vertices nearest to it
+/// (before the merge; a union takes both pieces') and the hull with them, its component's hull.
+struct InputShare {
+  std::vector<Vec3> points;
+  TriMesh hull;
 };
 
 /// One candidate union of the merge pass: screened by the cheaper test, then confirmed by the
@@ -364,7 +373,7 @@ void confirmUnion(MergeCandidate& m, const Piece& a, const Piece& b, const Model
 /// that may be taken after it, in parallel; which ones are confirmed early never changes a
 /// decision, so the result does not depend on the thread count.
 void mergePieces(std::vector<Piece>& finals, std::vector<Component>& finalInfo, const TriMesh& input,
-                 ExcessAgainstInput* againstInput, std::vector<TriMesh>* inputHulls, const DecomposeOptions& o,
+                 ExcessAgainstInput* againstInput, std::vector<InputShare>* shares, const DecomposeOptions& o,
                  DecomposeStats& stats) {
   ConcavityOptions co;
   co.epsilon = o.epsilon;
@@ -417,14 +426,19 @@ void mergePieces(std::vector<Piece>& finals, std::vector<Component>& finalInfo, 
           const std::size_t q = next[t];
           const int i = id[pairs[q].a], j = id[pairs[q].b];
           confirmUnion(*unions[q], finals[i], finals[j], model.get(), againstInput,
-                       inputHulls ? &(*inputHulls)[i] : nullptr, inputHulls ? &(*inputHulls)[j] : nullptr, o, co);
+                       shares ? &(*shares)[i].hull : nullptr, shares ? &(*shares)[j].hull : nullptr, o, co);
         });
       }
       if (!unions[k]->ok) continue;
       const int i = id[pairs[k].a], j = id[pairs[k].b];
       finals[i].mesh = std::move(unions[k]->glued);
       hulls[i] = std::move(unions[k]->hull);
-      if (inputHulls) (*inputHulls)[i] = std::move(unions[k]->inputHull);
+      if (shares) {
+        InputShare &into = (*shares)[i], &from = (*shares)[j];
+        into.hull = std::move(unions[k]->inputHull);
+        into.points.insert(into.points.end(), from.points.begin(), from.points.end());
+        from = {};
+      }
       finalInfo[i].concavity = unions[k]->concavity;
       finalInfo[i].hullExcess = unions[k]->hullExcess;
       finalInfo[i].depth = std::min(finalInfo[i].depth, finalInfo[j].depth);
@@ -439,13 +453,16 @@ void mergePieces(std::vector<Piece>& finals, std::vector<Component>& finalInfo, 
   }
   std::vector<Piece> keptPieces;
   std::vector<Component> keptInfo;
+  std::vector<InputShare> keptShares;
   std::vector<std::size_t> measure;
   for (std::size_t i = 0; i < finals.size(); ++i)
     if (alive[i]) {
       if (mergedInModel[i]) measure.push_back(keptPieces.size());
       keptPieces.push_back(std::move(finals[i]));
       keptInfo.push_back(finalInfo[i]);
+      if (shares) keptShares.push_back(std::move((*shares)[i]));
     }
+  if (shares) *shares = std::move(keptShares);
   // A union kept for its hull may be more concave than tau (its pockets lie in other components):
   // its concavity is measured as it is and reported, never assumed.
   tbb::parallel_for(std::size_t(0), measure.size(), [&](std::size_t k) {
@@ -630,29 +647,33 @@ Decomposition decomposeSolid(const TriMesh& mesh, const TriMesh* heldTo, double 
       excess = std::make_unique<ExcessAgainstInput>(model, std::move(inputMeshes), working.distance, mergeTau);
     DecomposeOptions mergeOptions = inner;
     mergeOptions.tau = mergeTau - allowance;
+    std::vector<InputShare> shares;  // with heldToInput, by final piece
     if (o.merge) {
       const bool heldToInput = excess && o.mergeScope == MergeScope::Model;
-      std::vector<TriMesh> inputHulls;
       if (heldToInput) {
         // Unions are then measured against the input to the full tau where the working model's
         // tau less the stand-off refuses them, with the hulls their components would have: with
         // the input's vertices, so that what the merge accepts is what the hulls will be.
-        const std::vector<std::vector<Vec3>> points = inputPointsOf(finals);
-        inputHulls.resize(finals.size());
+        std::vector<std::vector<Vec3>> points = inputPointsOf(finals);
+        shares.resize(finals.size());
         tbb::parallel_for(std::size_t(0), finals.size(), [&](std::size_t i) {
           std::vector<Vec3> all = finals[i].mesh.vertices;
           all.insert(all.end(), points[i].begin(), points[i].end());
-          inputHulls[i] = convexHull(all).mesh;
+          shares[i].hull = convexHull(all).mesh;
+          shares[i].points = std::move(points[i]);
         });
       }
-      mergePieces(finals, finalInfo, model, heldToInput ? excess.get() : nullptr, heldToInput ? &inputHulls : nullptr,
+      mergePieces(finals, finalInfo, model, heldToInput ? excess.get() : nullptr, heldToInput ? &shares : nullptr,
                   mergeOptions, result.stats);
     }
     result.times.merging = secondsSince(t);
 
     t = Clock::now();
     std::vector<std::vector<Vec3>> inputPoints;
-    if (working.used()) inputPoints = inputPointsOf(finals);
+    if (!shares.empty())
+      for (InputShare& share : shares) inputPoints.push_back(std::move(share.points));
+    else if (working.used())
+      inputPoints = inputPointsOf(finals);
     result.components.resize(finals.size());
     tbb::parallel_for(std::size_t(0), finals.size(), [&](std::size_t i) {
       Component& c = result.components[i];

@@ -238,8 +238,39 @@ InputExcess::InputExcess(TriMesh input, TriMesh standIn, double standOff)
     : impl_(std::make_unique<Impl>(std::move(input), std::move(standIn), standOff)) {}
 InputExcess::~InputExcess() = default;
 
-HullExcess InputExcess::measure(const TriMesh& hull, double limit, double resolution, int firstFace) const {
+HullExcess InputExcess::measure(const TriMesh& hull, double limit, double resolution, int firstFace,
+                                double cornerExcess) const {
   if (impl_->input.faces.empty() || hull.faces.empty()) return {};
+  // Every point of a triangle lies within 1/sqrt(3) of its longest edge from one of its corners
+  // (the circumradius of an equilateral one, the worst case), and the excess is 1-Lipschitz: a
+  // face that is short enough is settled by its corners' bound, without a probe. A dense input's
+  // hulls are mostly such faces.
+  TriMesh open;
+  open.vertices = hull.vertices;
+  std::vector<int> openFace;  // open's faces -> hull's
+  double settled = 0.0;
+  int first = -1;
+  for (std::size_t f = 0; f < hull.faces.size(); ++f) {
+    const Face& t = hull.faces[f];
+    double longest = 0.0;
+    for (int k = 0; k < 3; ++k) longest = std::max(longest, (hull.vertices[t[k]] - hull.vertices[t[(k + 1) % 3]]).norm());
+    const double bound = 0.578 * longest + cornerExcess;
+    if (bound <= limit) {
+      settled = std::max(settled, bound);
+      continue;
+    }
+    if (static_cast<int>(f) == firstFace) first = static_cast<int>(openFace.size());
+    openFace.push_back(static_cast<int>(f));
+    open.faces.push_back(t);
+  }
+  HullExcess out;
+  if (!open.faces.empty()) out = searchFrom(open, limit, resolution, first);
+  if (out.hullFace >= 0) out.hullFace = openFace[out.hullFace];
+  if (!out.exceeds) out.bound = std::max(out.bound, settled);
+  return out;
+}
+
+HullExcess InputExcess::searchFrom(const TriMesh& hull, double limit, double resolution, int firstFace) const {
   const Impl& m = *impl_;
   Triangle nearestFace;  // the probe's, read by the search before the next probe
   return branchAndBound(hull, limit, resolution,

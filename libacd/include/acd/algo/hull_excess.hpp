@@ -79,10 +79,14 @@ class InputExcess {
   InputExcess(const InputExcess&) = delete;
   InputExcess& operator=(const InputExcess&) = delete;
 
-  /// The same branch and bound as ModelExcess::measure, `firstFace` as there.
-  HullExcess measure(const TriMesh& hull, double limit, double resolution, int firstFace = -1) const;
+  /// The same branch and bound as ModelExcess::measure, `firstFace` as there. `cornerExcess`, when
+  /// given, bounds how far any vertex of the hull stands off the input: faces short enough to be
+  /// within the limit by that bound alone are not searched.
+  HullExcess measure(const TriMesh& hull, double limit, double resolution, int firstFace = -1,
+                     double cornerExcess = std::numeric_limits<double>::infinity()) const;
 
  private:
+  HullExcess searchFrom(const TriMesh& hull, double limit, double resolution, int firstFace) const;
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
