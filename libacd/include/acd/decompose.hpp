@@ -49,9 +49,10 @@ struct DecomposeOptions {
   /// Detail far below tau cannot change the parts: the input is first simplified to a working mesh
   /// that stands at most this share of tau off it (acd/algo/working_mesh.hpp), the recursion runs
   /// on that at tau less the share, and each hull is built from the working piece and the input
-  /// vertices it stands for, its distance to the model bounded against the input. 0: decompose the
-  /// input's own triangles (the default: on the corpus at 0.1 the working mesh costs about 17 % more
-  /// parts at tau 0.05; docs/ALGORITHM.md, "The working mesh"). A piece whose working mesh would
+  /// vertices it stands for, and unions of the merge pass and the hulls' distance to the model are
+  /// held to tau against the input. 0: decompose the input's own triangles (the default: on the
+  /// corpus at 0.1 the working mesh costs about 10 % more parts at tau 0.05, 1 % at 0.02;
+  /// docs/ALGORITHM.md, "The working mesh"). A piece whose working mesh would
   /// pass through itself is simplified within less, or not at all.
   double workingShare = 0.0;
   int threads = 0;               // 0: all cores. The output never depends on it.
