@@ -61,6 +61,16 @@ TEST(FaceGrid, ASearchRadiusKeepsWhatIsWithinAndSaysBeyondOfTheRest) {
   }
 }
 
+TEST(FaceGrid, PointsFarOffTheGridFindTheirNearestFace) {
+  const TriMesh box = acd::shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1));
+  const acd::FaceGrid grid({&box});
+  for (const Vec3& p : {Vec3(1e150, 0.5, 0.5), Vec3(-1e150, -1e150, 0.5), Vec3(0.5, 0.5, 1e15)}) {
+    const acd::FaceGrid::Nearest n = grid.nearest(p);
+    EXPECT_EQ(n.mesh, 0);
+    EXPECT_NEAR(n.distance, everyFace({&box}, p).second, 1e-9 * everyFace({&box}, p).second);
+  }
+}
+
 TEST(FaceGrid, NoFacesFindNothing) {
   const TriMesh empty;
   const acd::FaceGrid grid({&empty});

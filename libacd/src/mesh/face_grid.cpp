@@ -32,7 +32,7 @@ FaceGrid::FaceGrid(std::vector<const TriMesh*> meshes) : meshes_(std::move(meshe
 FaceGrid::Nearest FaceGrid::nearest(const Vec3& p, double within) const {
   if (entries_.empty()) return {};
   std::array<int, 3> at;
-  for (int k = 0; k < 3; ++k) at[k] = std::clamp(static_cast<int>((p[k] - lo_[k]) / cell_), 0, dims_[k] - 1);
+  for (int k = 0; k < 3; ++k) at[k] = cellOf(p[k], k);
   // How far p stands inside its own cell: a face unseen after ring r is at least r cells and this
   // far away (less a little for the rounding of cell indices; none when p lies outside the grid).
   double inside = std::numeric_limits<double>::infinity();
@@ -84,6 +84,11 @@ FaceGrid::Nearest FaceGrid::nearest(const Vec3& p, double within) const {
   return {bestMesh, bestFace, std::sqrt(best)};
 }
 
+int FaceGrid::cellOf(double x, int axis) const {
+  // Clamped before the conversion: a point far off the grid must not overflow an int.
+  return static_cast<int>(std::clamp((x - lo_[axis]) / cell_, 0.0, static_cast<double>(dims_[axis] - 1)));
+}
+
 double FaceGrid::cellDistance2(const Vec3& p, int i, int j, int k) const {
   const std::array<int, 3> at{i, j, k};
   double d2 = 0.0;
@@ -106,8 +111,8 @@ void FaceGrid::forEachFaceCell(const Visit& visit) const {
       for (int v : mesh.faces[f]) lo = lo.cwiseMin(mesh.vertices[v]), hi = hi.cwiseMax(mesh.vertices[v]);
       std::array<int, 3> a, b;
       for (int k = 0; k < 3; ++k) {
-        a[k] = std::clamp(static_cast<int>((lo[k] - lo_[k]) / cell_), 0, dims_[k] - 1);
-        b[k] = std::clamp(static_cast<int>((hi[k] - lo_[k]) / cell_), 0, dims_[k] - 1);
+        a[k] = cellOf(lo[k], k);
+        b[k] = cellOf(hi[k], k);
       }
       for (int i = a[0]; i <= b[0]; ++i)
         for (int j = a[1]; j <= b[1]; ++j)

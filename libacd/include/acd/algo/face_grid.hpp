@@ -29,6 +29,8 @@ class FaceGrid {
   Nearest nearest(const Vec3& p, double within = std::numeric_limits<double>::infinity()) const;
 
  private:
+  /// The cell index along `axis` of coordinate x, clamped to the grid.
+  int cellOf(double x, int axis) const;
   /// The squared distance from p to cell (i, j, k)'s box, less rounding's worth (a lower bound).
   double cellDistance2(const Vec3& p, int i, int j, int k) const;
   template <class Visit>
