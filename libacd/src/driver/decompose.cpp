@@ -474,6 +474,41 @@ void mergePieces(std::vector<Piece>& finals, std::vector<Component>& finalInfo, 
   finalInfo = std::move(keptInfo);
 }
 
+/// The input's own vertices each working piece stands for (its nearest), which join its hull;
+/// `firstOf` gives a piece's place among the first pieces from its source.
+std::vector<std::vector<Vec3>> inputPointsOf(const WorkingModel& working, const std::vector<Piece>& pieces,
+                                             const std::map<int, int>& firstOf) {
+  std::vector<const TriMesh*> meshes;
+  std::vector<int> sources;
+  for (const Piece& p : pieces) meshes.push_back(&p.mesh), sources.push_back(firstOf.at(p.source));
+  return inputVerticesOf(working, meshes, sources);
+}
+
+/// The merge pass. Held to the input (`againstInput`, a working mesh's), each piece first gets the
+/// hull its component would have, with the input vertices it stands for (`points`, by piece), so
+/// that unions are measured against the input to the full tau where the working model's tau less
+/// the stand-off refuses them, and what the merge accepts is what the hulls will be; the input
+/// vertices of each final piece come back (nothing when not held to the input).
+std::vector<std::vector<Vec3>> mergeHeldToInput(std::vector<Piece>& finals, std::vector<Component>& finalInfo,
+                                                const TriMesh& model, ExcessAgainstInput* againstInput,
+                                                std::vector<std::vector<Vec3>> points, const DecomposeOptions& o,
+                                                DecomposeStats& stats) {
+  std::vector<InputShare> shares;
+  if (againstInput) {
+    shares.resize(finals.size());
+    tbb::parallel_for(std::size_t(0), finals.size(), [&](std::size_t i) {
+      std::vector<Vec3> all = finals[i].mesh.vertices;
+      all.insert(all.end(), points[i].begin(), points[i].end());
+      shares[i].hull = convexHull(all).mesh;
+      shares[i].points = std::move(points[i]);
+    });
+  }
+  mergePieces(finals, finalInfo, model, againstInput, againstInput ? &shares : nullptr, o, stats);
+  std::vector<std::vector<Vec3>> kept;
+  for (InputShare& share : shares) kept.push_back(std::move(share.points));
+  return kept;
+}
+
 }  // namespace
 
 PhaseTimes& operator+=(PhaseTimes& into, const PhaseTimes& t) {
@@ -635,45 +670,22 @@ Decomposition decomposeSolid(const TriMesh& mesh, const TriMesh* heldTo, double 
     }
 
     t = Clock::now();
-    // The input's own vertices each working piece stands for (its nearest) join its hull.
-    auto inputPointsOf = [&](const std::vector<Piece>& pieces) {
-      std::vector<const TriMesh*> meshes;
-      std::vector<int> sources;
-      for (const Piece& p : pieces) meshes.push_back(&p.mesh), sources.push_back(firstOf.at(p.source));
-      return inputVerticesOf(working, meshes, sources);
-    };
     std::unique_ptr<ExcessAgainstInput> excess;
     if (working.used())
       excess = std::make_unique<ExcessAgainstInput>(model, std::move(inputMeshes), working.distance, mergeTau);
     DecomposeOptions mergeOptions = inner;
     mergeOptions.tau = mergeTau - allowance;
-    std::vector<InputShare> shares;  // with heldToInput, by final piece
+    std::vector<std::vector<Vec3>> inputPoints;  // by final piece, with a working mesh
     if (o.merge) {
       const bool heldToInput = excess && o.mergeScope == MergeScope::Model;
-      if (heldToInput) {
-        // Unions are then measured against the input to the full tau where the working model's
-        // tau less the stand-off refuses them, with the hulls their components would have: with
-        // the input's vertices, so that what the merge accepts is what the hulls will be.
-        std::vector<std::vector<Vec3>> points = inputPointsOf(finals);
-        shares.resize(finals.size());
-        tbb::parallel_for(std::size_t(0), finals.size(), [&](std::size_t i) {
-          std::vector<Vec3> all = finals[i].mesh.vertices;
-          all.insert(all.end(), points[i].begin(), points[i].end());
-          shares[i].hull = convexHull(all).mesh;
-          shares[i].points = std::move(points[i]);
-        });
-      }
-      mergePieces(finals, finalInfo, model, heldToInput ? excess.get() : nullptr, heldToInput ? &shares : nullptr,
-                  mergeOptions, result.stats);
+      inputPoints = mergeHeldToInput(finals, finalInfo, model, heldToInput ? excess.get() : nullptr,
+                                     heldToInput ? inputPointsOf(working, finals, firstOf) : std::vector<std::vector<Vec3>>{},
+                                     mergeOptions, result.stats);
     }
     result.times.merging = secondsSince(t);
 
     t = Clock::now();
-    std::vector<std::vector<Vec3>> inputPoints;
-    if (!shares.empty())
-      for (InputShare& share : shares) inputPoints.push_back(std::move(share.points));
-    else if (working.used())
-      inputPoints = inputPointsOf(finals);
+    if (inputPoints.empty() && working.used()) inputPoints = inputPointsOf(working, finals, firstOf);
     result.components.resize(finals.size());
     tbb::parallel_for(std::size_t(0), finals.size(), [&](std::size_t i) {
       Component& c = result.components[i];
