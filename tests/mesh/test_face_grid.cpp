@@ -71,6 +71,17 @@ TEST(FaceGrid, PointsFarOffTheGridFindTheirNearestFace) {
   }
 }
 
+// A plate a nanometre thick and two units wide: cells of the faces' own size would number
+// billions; the grid stays about the size of the mesh and still finds the nearest face.
+TEST(FaceGrid, AFlatBoxGivesAGridAboutTheSizeOfTheMesh) {
+  const TriMesh plate = acd::shapes::box(Vec3(-1, -1, 0), Vec3(1, 1, 1e-9));
+  const acd::FaceGrid grid({&plate});
+  for (const Vec3& p : {Vec3(0.3, 0.2, 0.5), Vec3(2, 2, 0), Vec3(0, 0, 5e-10)}) {
+    const acd::FaceGrid::Nearest n = grid.nearest(p);
+    EXPECT_NEAR(n.distance, everyFace({&plate}, p).second, 1e-12) << p.transpose();
+  }
+}
+
 TEST(FaceGrid, NoFacesFindNothing) {
   const TriMesh empty;
   const acd::FaceGrid grid({&empty});

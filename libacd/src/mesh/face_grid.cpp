@@ -20,7 +20,12 @@ FaceGrid::FaceGrid(std::vector<const TriMesh*> meshes) : meshes_(std::move(meshe
   const Vec3 size = box.size().cwiseMax(1e-9);
   cell_ = std::max(1e-6, std::cbrt(size.prod() / static_cast<double>(faces)));
   lo_ = box.lo;
-  for (int k = 0; k < 3; ++k) dims_[k] = std::max(1, static_cast<int>(std::ceil(size[k] / cell_)) + 1);
+  // A box flat in one direction gives cells far more than faces (a plate a nanometre thick, a
+  // billion): coarser cells, until the grid is about the size of the mesh.
+  const double most = 8.0 * static_cast<double>(faces) + 4096.0;
+  auto cellsAlong = [&](int k) { return std::ceil(size[k] / cell_) + 1.0; };
+  while (cellsAlong(0) * cellsAlong(1) * cellsAlong(2) > most) cell_ *= 1.25;
+  for (int k = 0; k < 3; ++k) dims_[k] = static_cast<int>(cellsAlong(k));
   start_.assign(static_cast<std::size_t>(dims_[0]) * dims_[1] * dims_[2] + 1, 0);
   forEachFaceCell([&](std::size_t c, int, int) { ++start_[c + 1]; });
   for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
