@@ -289,8 +289,11 @@ HullExcess InputExcess::searchFrom(const TriMesh& hull, double limit, double res
                           if (clear && m.standInSide.inside(q)) return -1.0;
                           if (clear && w - off > limit) return w - off;  // beyond, and no nearer than that
                           if (w + off + radius <= limit) {
-                            reach = radius + 2 * off;  // d + reach = w + off + radius
-                            return clear ? std::max(0.0, w - off) : 0.0;
+                            // Outside, at least w - off from the input; no point of the patch
+                            // farther than w + off + radius: settled.
+                            const double d = clear ? std::max(0.0, w - off) : 0.0;
+                            reach = w + off + radius - d;
+                            return d;
                           }
                           // Only the distance decides beyond limit + radius: a value there is a
                           // lower bound, which still says "beyond".
