@@ -51,7 +51,7 @@ struct DecomposeOptions {
   /// on that at tau less the share, and each hull is built from the working piece and the input
   /// vertices it stands for, and unions of the merge pass and the hulls' distance to the model are
   /// held to tau against the input. 0: decompose the input's own triangles (the default: on the
-  /// corpus at 0.1 the working mesh costs about 10 % more parts at tau 0.05, 1 % at 0.02;
+  /// corpus at 0.1 the working mesh costs about 10 % more parts at tau 0.05, about as many at 0.02;
   /// docs/ALGORITHM.md, "The working mesh"). A piece whose working mesh would
   /// pass through itself is simplified within less, or not at all.
   double workingShare = 0.0;
