@@ -244,6 +244,8 @@ class ExcessAgainstInput {
   /// How far apart the working model's surface and the input's may lie, with room for what the
   /// stand-off's samples missed: beyond it from one, a point is on the same side of both.
   double sideMargin() const { return 2 * standOff_; }
+  /// The working model's own measure.
+  const ModelExcess& workingMeasure() const { return working_; }
 
   double operator()(const TriMesh& hull, const TriMesh& piece, MergeScope scope) {
     const HullExcess e = scope == MergeScope::Model
@@ -339,8 +341,8 @@ void confirmUnion(MergeCandidate& m, const Piece& a, const Piece& b, const Model
     const TriMesh& hull = inputHullA && inputHullB ? m.inputHull : m.hull;
     HullExcess e = model->measure(hull, kExcessLimit * o.tau, kExcessResolution * o.tau);
     // A working model is held to tau less its stand-off; what that refuses, the input decides,
-    // unless the union is beyond by more than the stand-off on the working model too (the cheaper
-    // measure; about half the unions the input would have to refuse, on the corpus).
+    // unless the union is beyond by more than the side margin on the working model too (the
+    // cheaper measure; about half the unions the input would have to refuse, on bunny00).
     // Both start where the working model's measure found the union beyond.
     if (e.exceeds && input) {
       const double limit = kExcessLimit * input->tau();
@@ -377,8 +379,11 @@ void mergePieces(std::vector<Piece>& finals, std::vector<Component>& finalInfo, 
                  DecomposeStats& stats) {
   ConcavityOptions co;
   co.epsilon = o.epsilon;
-  std::unique_ptr<ModelExcess> model;
-  if (o.mergeScope == MergeScope::Model) model = std::make_unique<ModelExcess>(input);
+  // Held to the input, the working model's measure is the one againstInput already has.
+  std::unique_ptr<ModelExcess> own;
+  const ModelExcess* model = nullptr;
+  if (o.mergeScope == MergeScope::Model)
+    model = againstInput ? &againstInput->workingMeasure() : (own = std::make_unique<ModelExcess>(input)).get();
   std::vector<char> alive(finals.size(), 1), mergedInModel(finals.size(), 0);
   std::map<std::pair<int, int>, MergeCandidate> measured;  // by the pieces' indices
   std::vector<TriMesh> hulls(finals.size());                 // each piece's hull, kept through merges
@@ -401,7 +406,7 @@ void mergePieces(std::vector<Piece>& finals, std::vector<Component>& finalInfo, 
     tbb::parallel_for(std::size_t(0), fresh.size(), [&](std::size_t f) {
       const int i = id[pairs[fresh[f]].a], j = id[pairs[fresh[f]].b];
       screenedNow[f] = screenUnion(finals[i], finals[j], hulls[i], hulls[j],
-                                   mix64(static_cast<std::uint64_t>(i) << 32 | static_cast<std::uint32_t>(j)), model.get());
+                                   mix64(static_cast<std::uint64_t>(i) << 32 | static_cast<std::uint32_t>(j)), model);
     });
     for (std::size_t f = 0; f < fresh.size(); ++f)
       measured[{id[pairs[fresh[f]].a], id[pairs[fresh[f]].b]}] = std::move(screenedNow[f]);
@@ -425,7 +430,7 @@ void mergePieces(std::vector<Piece>& finals, std::vector<Component>& finalInfo, 
         tbb::parallel_for(std::size_t(0), next.size(), [&](std::size_t t) {
           const std::size_t q = next[t];
           const int i = id[pairs[q].a], j = id[pairs[q].b];
-          confirmUnion(*unions[q], finals[i], finals[j], model.get(), againstInput,
+          confirmUnion(*unions[q], finals[i], finals[j], model, againstInput,
                        shares ? &(*shares)[i].hull : nullptr, shares ? &(*shares)[j].hull : nullptr, o, co);
         });
       }
