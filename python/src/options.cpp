@@ -100,6 +100,7 @@ void bindOptions(py::module_& m) {
         o.decompose.mergeScope = v == "model" ? acd::MergeScope::Model : acd::MergeScope::Component;
       });
   plain(solid, "working_share", [](SolidOptions& o) -> double& { return o.decompose.workingShare; });
+  plain(solid, "working_from_faces", [](SolidOptions& o) -> int& { return o.decompose.workingFromFaces; });
   plain(solid, "threads", [](SolidOptions& o) -> int& { return o.decompose.threads; });  // 0: all cores
   // The post-passes (acd/post_passes.hpp); None: not given, as an option absent from the command line.
   plain(solid, "tau_abs", [](SolidOptions& o) -> std::optional<double>& { return o.post.tauAbs; });

@@ -24,12 +24,13 @@ namespace {
 using acd::TriMesh;
 using acd::Vec3;
 
-/// tau 0.05 on two threads, through a working mesh within a tenth of tau.
+/// tau 0.05 on two threads, through a working mesh within a tenth of tau whatever the face count.
 acd::DecomposeOptions throughWorkingMesh() {
   acd::DecomposeOptions o;
   o.tau = 0.05;
   o.threads = 2;
   o.workingShare = 0.1;
+  o.workingFromFaces = 0;
   return o;
 }
 
@@ -105,6 +106,23 @@ TEST(DenseInput, HalfAMillionFaceTorusKeepsTauAgainstTheInput) {
   EXPECT_LE(uncovered, 1e-9);
 }
 
+TEST(DenseInput, WorkingMeshFromTheFaceCountOn) {
+  const TriMesh torus = acd::shapes::torus(1.0, 0.35, 120, 40);  // 9600 faces
+  const int faces = static_cast<int>(torus.faces.size());
+  acd::DecomposeOptions o = throughWorkingMesh();
+  o.workingFromFaces = faces + 1;
+  const acd::Decomposition below = acd::decompose(torus, o);
+  ASSERT_TRUE(below.status.ok()) << below.status.message;
+  EXPECT_EQ(below.stats.workingFaces, 0);
+  o.workingFromFaces = faces;
+  const acd::Decomposition from = acd::decompose(torus, o);
+  ASSERT_TRUE(from.status.ok()) << from.status.message;
+  EXPECT_GT(from.stats.workingFaces, 0);
+  EXPECT_LT(from.stats.workingFaces, faces);
+  // By default a working share applies from 20k faces.
+  EXPECT_EQ(acd::DecomposeOptions{}.workingFromFaces, 20000);
+}
+
 TEST(DenseInput, SubdividedModelGivesAboutTheSameParts) {
   acd::ReadResult read = acd::readMesh(corpus("elephant"));
   if (!read.status.ok()) GTEST_SKIP() << "the corpus is not fetched (scripts/fetch_corpus.sh)";
@@ -113,8 +131,9 @@ TEST(DenseInput, SubdividedModelGivesAboutTheSameParts) {
   acd::DecomposeOptions o;
   o.tau = 0.05;
   o.threads = 2;
-  const acd::Decomposition a = acd::decompose(elephant, o);  // the input's own triangles
-  o.workingShare = 0.1;
+  o.workingShare = 0.1;  // from 20k faces, the default of workingFromFaces
+  const acd::Decomposition a = acd::decompose(elephant, o);  // 5.6k faces: the input's own triangles
+  EXPECT_EQ(a.stats.workingFaces, 0);
   const acd::Decomposition b = acd::decompose(dense, o);
   ASSERT_TRUE(b.status.ok()) << b.status.message;
   EXPECT_GT(b.stats.workingFaces, 0);

@@ -46,15 +46,19 @@ struct DecomposeOptions {
   /// on coordinates rounded to the frame's grid (2.4e-7 of the model's radius), so a cut face through
   /// input vertices and points a cut made is planar to within that.
   bool invariant = true;
-  /// Detail far below tau cannot change the parts: the input is first simplified to a working mesh
-  /// that stands at most this share of tau off it (acd/algo/working_mesh.hpp), the recursion runs
-  /// on that at tau less the share, and each hull is built from the working piece and the input
-  /// vertices it stands for, and unions of the merge pass and the hulls' distance to the model are
-  /// held to tau against the input. 0: decompose the input's own triangles (the default: on the
-  /// corpus at 0.1 the working mesh costs about 10 % more parts at tau 0.05, about as many at 0.02;
-  /// docs/ALGORITHM.md, "The working mesh"). A piece whose working mesh would
-  /// pass through itself is simplified within less, or not at all.
+  /// Detail far below tau cannot change the parts: a solid of at least `workingFromFaces` faces is
+  /// first simplified to a working mesh that stands at most this share of tau off it
+  /// (acd/algo/working_mesh.hpp), the recursion runs on that at tau less the share, and each hull
+  /// is built from the working piece and the input vertices it stands for, and unions of the merge
+  /// pass and the hulls' distance to the model are held to tau against the input
+  /// (docs/ALGORITHM.md, "The working mesh"). 0, the default: always the input's own triangles
+  /// (0.1 makes a dense scan's cost follow tau; not the default yet, see that section). A piece
+  /// whose working mesh would pass through itself is simplified within less, or not at all.
   double workingShare = 0.0;
+  /// With a working share, the working mesh is made for solids of at least this many faces. Below, the input's own
+  /// triangles cost about as little (the two cross between 8k and 16k faces on the meshes timed in
+  /// docs/ALGORITHM.md) and give fewer parts: the working mesh decomposes at tau less its share.
+  int workingFromFaces = 20000;
   int threads = 0;               // 0: all cores. The output never depends on it.
   int maxComponents = 10000;     // safety net against runaway recursion
   int maxDepth = 64;

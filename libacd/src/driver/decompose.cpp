@@ -563,6 +563,7 @@ Status validate(const DecomposeOptions& o) {
     return bad("delta must lie in [0, tau]");
   if (!std::isfinite(o.workingShare) || o.workingShare < 0 || o.workingShare > 0.5)
     return bad("workingShare must lie in [0, 0.5]");
+  if (o.workingFromFaces < 0) return bad("workingFromFaces must not be negative");
   if (o.threads < 0 || o.threads > 1024) return bad("threads must lie in [0, 1024]");
   if (o.maxComponents < 1) return bad("maxComponents must be at least 1");
   return Status::success();
@@ -599,6 +600,18 @@ PreparedSolid prepareUnlessClean(const TriMesh& mesh, const PrepareOptions& po, 
   p.status = Status::success();
   p.components = {mesh};
   return p;
+}
+
+/// The working model of a solid's first pieces when the options ask for one: `meshes` become the
+/// working meshes and `inputMeshes` keeps what they were (acd/algo/working_mesh.hpp).
+WorkingModel workingModelOf(std::vector<TriMesh>& meshes, std::vector<TriMesh>& inputMeshes, bool wrap,
+                            const DecomposeOptions& o) {
+  std::size_t faces = 0;
+  for (const TriMesh& m : meshes) faces += m.faces.size();
+  // A wrap is held to its input by decomposeHeldTo's own rules.
+  if (o.workingShare <= 0 || wrap || faces < static_cast<std::size_t>(o.workingFromFaces)) return {};
+  inputMeshes = meshes;
+  return simplifyPieces(meshes, o.workingShare * o.tau);
 }
 
 /// The decomposition of a solid with repairs done; the merge pass held to the model measures
@@ -640,11 +653,7 @@ Decomposition decomposeSolid(const TriMesh& mesh, const TriMesh* heldTo, double 
       firstMeshes.push_back(std::move(pending[k].mesh));
       firstOf[pending[k].source] = static_cast<int>(k);
     }
-    WorkingModel working;
-    if (o.workingShare > 0 && !heldTo) {  // a wrap is held to its input by decomposeHeldTo's own rules
-      inputMeshes = firstMeshes;
-      working = simplifyPieces(firstMeshes, o.workingShare * o.tau);
-    }
+    WorkingModel working = workingModelOf(firstMeshes, inputMeshes, heldTo != nullptr, o);
     for (std::size_t k = 0; k < pending.size(); ++k) pending[k].mesh = firstMeshes[k];
     const double allowance = working.used() ? o.workingShare * o.tau : 0.0;
     result.stats.workingFaces = working.workingFaces;

@@ -67,6 +67,7 @@ json solidReport(const ReportInput& in, const Decomposition& d) {
                      {"merge_scope", d.options.mergeScope == MergeScope::Model ? "model" : "component"},
                      {"invariant", d.options.invariant},
                      {"working_share", d.options.workingShare},
+                     {"working_from_faces", d.options.workingFromFaces},
                      {"threads", d.options.threads},
                      {"units", kUnits}};
   const int edges = d.stats.inputEdges;
