@@ -44,7 +44,7 @@ for m in $MODELS; do
     for ((r = 0; r < REPEAT; r++)); do
         for mode in full working; do
             flags=(--working-share 0)
-            [[ $mode == working ]] && flags=(--working-from-faces 0)
+            [[ $mode == working ]] && flags=(--working-share 0.1 --working-from-faces 0)
             start=$(date +%s.%N)
             "$ACD" decompose "$mesh" -t "$TAU" "${flags[@]}" -q -o "$OUT/$m-$mode" >/dev/null 2>&1 || true
             t=$(echo "$(date +%s.%N) - $start" | bc)

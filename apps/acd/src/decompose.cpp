@@ -306,8 +306,7 @@ CLI::App* addDecomposeCommand(CLI::App& app, DecomposeArgs& a) {
                   "A solid of --working-from-faces faces or more is decomposed as a simplified copy that stands at most "
                   "this share of tau off it, at tau less that share; the hulls are built from it and the input's own "
                   "vertices, merged and checked against the input, so a dense scan's cost follows tau, not its face "
-                  "count (0, the default: always the input's own triangles; 0.1 costs about 2 % more parts on the corpus at "
-                  "tau 0.05)")
+                  "count (0: always the input's own triangles)")
       ->check(CLI::Range(0.0, 0.5))
       ->capture_default_str();
   dec->add_option("--working-from-faces", a.options.workingFromFaces,

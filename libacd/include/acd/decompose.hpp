@@ -51,10 +51,10 @@ struct DecomposeOptions {
   /// (acd/algo/working_mesh.hpp), the recursion runs on that at tau less the share, and each hull
   /// is built from the working piece and the input vertices it stands for, and unions of the merge
   /// pass and the hulls' distance to the model are held to tau against the input
-  /// (docs/ALGORITHM.md, "The working mesh"). 0, the default: always the input's own triangles
-  /// (0.1 makes a dense scan's cost follow tau; not the default yet, see that section). A piece
-  /// whose working mesh would pass through itself is simplified within less, or not at all.
-  double workingShare = 0.0;
+  /// (docs/ALGORITHM.md, "The working mesh"): a dense scan's cost follows tau, not its face count.
+  /// 0: always the input's own triangles. A piece whose working mesh would pass through itself is
+  /// simplified within less, or not at all.
+  double workingShare = 0.1;
   /// With a working share, the working mesh is made for solids of at least this many faces. Below, the input's own
   /// triangles cost about as little (the two cross between 8k and 16k faces on the meshes timed in
   /// docs/ALGORITHM.md) and give fewer parts: the working mesh decomposes at tau less its share.
