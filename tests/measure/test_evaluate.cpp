@@ -118,6 +118,27 @@ TEST(Evaluate, ShrunkHullLeavesModelUncovered) {
   EXPECT_GE(e.modelToHullsMax, 0.097);
 }
 
+// The promise's coverage check: a box against a hull cut short of its top, in the box's own units.
+TEST(SurfaceOutsideHulls, KnownDistanceAndTheSamePointOnAnyThreadCount) {
+  const TriMesh model = shapes::box(Vec3(0, 0, 0), Vec3(1, 2, 3));
+  const TriMesh shorter = shapes::box(Vec3(0, 0, 0), Vec3(1, 2, 2.5));
+  const Coverage one = surfaceOutsideHulls(model, {shorter}, 20000, 1, 1);
+  EXPECT_NEAR(one.max, 0.5, 1e-9);  // the top face stands 0.5 above the hull
+  EXPECT_NEAR(one.worst.z(), 3.0, 1e-9);
+  // 8 vertices and 50k samples in blocks across two workers: the same point as one pass.
+  const Coverage many = surfaceOutsideHulls(model, {shorter}, 50000, 7, 2);
+  const Coverage single = surfaceOutsideHulls(model, {shorter}, 50000, 7, 1);
+  EXPECT_EQ(many.max, single.max);
+  EXPECT_EQ(many.worst, single.worst);
+  // Inside: nothing outside, and no point named.
+  const Coverage covered = surfaceOutsideHulls(shorter, {model}, 20000, 1, 2);
+  EXPECT_EQ(covered.max, 0.0);
+  EXPECT_EQ(covered.worst, Vec3::Zero());
+  // A box shrunk about its centre leaves its corners outside by a tenth of the half-diagonal.
+  const TriMesh shrunk = shapes::box(Vec3(0.05, 0.1, 0.15), Vec3(0.95, 1.9, 2.85));
+  EXPECT_NEAR(surfaceOutsideHulls(model, {shrunk}, 0, 1, 2).max, 0.1 * std::sqrt(0.25 + 1 + 2.25), 1e-9);
+}
+
 TEST(Evaluate, LShapeWithItsConvexPieces) {
   const TriMesh model = shapes::lShape();
   const std::vector<std::vector<TriMesh>> decompositions = {

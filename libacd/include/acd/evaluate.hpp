@@ -49,13 +49,14 @@ Evaluation evaluate(const TriMesh& model, const std::vector<TriMesh>& hulls,
 /// How far a surface reaches outside a set of hulls: the largest distance from a point of
 /// `surface` (each vertex, and `samples` points spread over its faces by area from `seed`) to the
 /// union of the hulls, 0 when every one is inside some hull; in the surface's own units. Any
-/// triangles will do (a soup, an open sheet): nothing is asked of the surface but faces.
+/// triangles will do (a soup, an open sheet): nothing is asked of the surface but faces. On
+/// `threads` workers (0: all cores); the answer does not depend on their number.
 struct Coverage {
   double max = 0.0;
   Vec3 worst = Vec3::Zero();  // the point that reaches furthest out
 };
 Coverage surfaceOutsideHulls(const TriMesh& surface, const std::vector<TriMesh>& hulls,
-                             std::int64_t samples = 20000, std::uint64_t seed = 1);
+                             std::int64_t samples = 20000, std::uint64_t seed = 1, int threads = 1);
 
 /// The input as read against a decomposition's hulls: surfaceOutsideHulls with `max` in the
 /// decomposition's normalised units (tau's). The second half of the promise: at most tau.

@@ -537,7 +537,7 @@ Evaluation evaluate(const TriMesh& model, const std::vector<TriMesh>& hulls, con
 }
 
 Coverage surfaceOutsideHulls(const TriMesh& surface, const std::vector<TriMesh>& hulls, std::int64_t samples,
-                             std::uint64_t seed) {
+                             std::uint64_t seed, int threads) {
   Coverage out;
   if (surface.faces.empty() || hulls.empty()) return out;
   const Normalization norm = minimumSphereNormalization(surface);
@@ -550,18 +550,31 @@ Coverage surfaceOutsideHulls(const TriMesh& surface, const std::vector<TriMesh>&
   const SurfaceSampler sampler(std::move(triangles));
   Box3 box = boundingBox(m);
   for (const Hull& h : hs) box.lo = box.lo.cwiseMin(h.lo), box.hi = box.hi.cwiseMax(h.hi);
-  tbb::task_arena arena = workerArena(1);
+  tbb::task_arena arena = workerArena(threads);
   const HullSet index = hullUnion(hs, box, arena);
   const Stream rng(seed, 4);
-  std::vector<std::pair<double, int>> order;
-  auto visit = [&](const Vec3& p) {
-    if (index.inside(p)) return;
-    const double d = distanceToHulls(hs, p, order);
-    if (d > out.max) out.max = d, out.worst = norm.undo(p);
-  };
-  for (const Vec3& v : m.vertices) visit(v);
-  if (sampler.area() > 0.0)
-    for (std::int64_t i = 0; i < samples; ++i) visit(sampler.sample(rng, static_cast<std::uint64_t>(i)));
+  // The vertices, then the samples: point k of them. Blocks of a fixed size, each keeping the first
+  // point farthest out, taken in order: the same point as one pass, on any number of threads.
+  const std::int64_t vertices = static_cast<std::int64_t>(m.vertices.size());
+  const std::int64_t points = vertices + (sampler.area() > 0.0 ? samples : 0);
+  const std::int64_t block = 4096;
+  std::vector<Coverage> found(static_cast<std::size_t>((points + block - 1) / block));
+  arena.execute([&] {
+    tbb::parallel_for(std::size_t{0}, found.size(), [&](std::size_t b) {
+      std::vector<std::pair<double, int>> order;
+      Coverage& c = found[b];
+      const std::int64_t end = std::min(points, static_cast<std::int64_t>(b + 1) * block);
+      for (std::int64_t k = static_cast<std::int64_t>(b) * block; k < end; ++k) {
+        const Vec3 p = k < vertices ? m.vertices[k] : sampler.sample(rng, static_cast<std::uint64_t>(k - vertices));
+        if (index.inside(p)) continue;
+        const double d = distanceToHulls(hs, p, order);
+        if (d > c.max) c.max = d, c.worst = p;
+      }
+    });
+  });
+  for (const Coverage& c : found)
+    if (c.max > out.max) out = c;
+  if (out.max > 0.0) out.worst = norm.undo(out.worst);
   out.max /= norm.scale;
   return out;
 }
@@ -569,7 +582,7 @@ Coverage surfaceOutsideHulls(const TriMesh& surface, const std::vector<TriMesh>&
 Coverage inputOutsideHulls(const TriMesh& input, const Decomposition& d) {
   std::vector<TriMesh> hulls;
   for (const Component& c : d.components) hulls.push_back(c.hull);
-  Coverage c = surfaceOutsideHulls(input, hulls);
+  Coverage c = surfaceOutsideHulls(input, hulls, 20000, 1, d.options.threads);
   c.max *= d.normalization.scale;
   return c;
 }
