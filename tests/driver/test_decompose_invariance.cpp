@@ -95,6 +95,15 @@ TEST(DecomposeInvariance, CorpusModels) {
   }
 }
 
+// Armadillo (52k faces) goes through the working mesh by default: it is made in the canonical
+// frame and order, so the parts do not move with the input either.
+TEST(DecomposeInvariance, ThroughTheWorkingMesh) {
+  const acd::ReadResult r = acd::readMesh(corpus("armadillo"));
+  if (!r.status.ok()) GTEST_SKIP() << corpus("armadillo") << " not present (scripts/fetch_corpus.sh)";
+  ASSERT_GE(r.mesh.faces.size(), static_cast<std::size_t>(DecomposeOptions{}.workingFromFaces));
+  expectInvariant(r.mesh, 0.05, 2);
+}
+
 /// Largest distance from a sample of the hulls' surfaces to the model, for samples outside the
 /// model (inside it a hull does not stick out), in normalised units.
 double hullsStickOut(const TriMesh& model, const Decomposition& d, int samples) {

@@ -154,6 +154,25 @@ TEST(Diagnosis, TwoDisjointBoxes) {
   EXPECT_NEAR(d.volume, 2.0, 1e-12);
 }
 
+// The count alone (the repairs' clean-surface test), on meshes whose pinches are known.
+TEST(Diagnosis, NonManifoldVertexCountAlone) {
+  const TriMesh pinched = tetrahedraSharingAVertex();
+  EXPECT_EQ(countNonManifoldVertices(pinched.faces, static_cast<int>(pinched.vertices.size())), 1);
+  const TriMesh box = unitBox();
+  EXPECT_EQ(countNonManifoldVertices(box.faces, static_cast<int>(box.vertices.size())), 0);
+  // Two boxes corner to corner, the corner shared: one pinch; kept apart: none.
+  TriMesh two = concat(unitBox(), shapes::box(Vec3(1, 1, 1), Vec3(2, 2, 2)));
+  EXPECT_EQ(countNonManifoldVertices(two.faces, static_cast<int>(two.vertices.size())), 0);
+  const int corner = 7, other = 8;  // the first box's (1,1,1) and the second box's
+  ASSERT_EQ(two.vertices[corner], Vec3(1, 1, 1));
+  ASSERT_EQ(two.vertices[other], Vec3(1, 1, 1));
+  for (Face& f : two.faces)
+    for (int& v : f)
+      if (v == other) v = corner;
+  EXPECT_EQ(countNonManifoldVertices(two.faces, static_cast<int>(two.vertices.size())), 1);
+  EXPECT_EQ(diagnose(two).nonManifoldVertices, 1);
+}
+
 TEST(Diagnosis, NonManifoldEdge) {
   const MeshDiagnosis d = diagnose(boxWithFin());
   EXPECT_EQ(d.nonManifoldEdges, 1);

@@ -34,6 +34,10 @@ struct MeshDiagnosis {
 
 MeshDiagnosis diagnose(const TriMesh& mesh);
 
+/// diagnose()'s nonManifoldVertices alone, for faces whose indices lie in [0, vertexCount): the
+/// edge topology and the fans, without the sorts for duplicates (millions of faces).
+int countNonManifoldVertices(const std::vector<Face>& faces, int vertexCount);
+
 /// Pairs of faces that intersect other than along a shared edge or vertex (exact predicates;
 /// CGAL's box-intersection filter, on one thread), a degenerate face counting as one; -1 when
 /// the faces are no oriented edge-manifold surface or a coordinate is not finite. Stops counting

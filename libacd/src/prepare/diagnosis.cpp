@@ -355,6 +355,11 @@ MeshDiagnosis diagnose(const TriMesh& mesh) {
   return d;
 }
 
+int countNonManifoldVertices(const std::vector<Face>& faces, int vertexCount) {
+  const std::vector<int> fans = fansPerVertex(faces, Topology(faces), vertexCount);
+  return static_cast<int>(std::count_if(fans.begin(), fans.end(), [](int n) { return n > 1; }));
+}
+
 namespace {
 
 /// An exact copy adds nothing; a copy facing the other way is a two-sided sheet we cannot interpret.

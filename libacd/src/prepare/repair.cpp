@@ -62,7 +62,7 @@ bool cleanSurface(const TriMesh& mesh, const RepairOptions& options) {
     }
     if (!(shortest2 > 0.0 && longest2 < ratio2 * shortest2)) return false;
   }
-  return diagnose(mesh).nonManifoldVertices == 0;
+  return countNonManifoldVertices(mesh.faces, static_cast<int>(mesh.vertices.size())) == 0;
 }
 
 /// Steps 3 to 6, with CGAL's polygon-soup and mesh repairs; `r.mesh` is the result. Should CGAL
@@ -239,7 +239,7 @@ MeshRepair repairMesh(const TriMesh& input, const RepairOptions& options) {
     const TouchingSolidsSplit parts = splitTouchingSolids(merged);
     r.splitVertices = parts.copiedVertices;
     const bool manifold = options.skipWhenClean && isOrientedEdgeManifold(parts.mesh.faces) &&
-                          diagnose(parts.mesh).nonManifoldVertices == 0;
+                          countNonManifoldVertices(parts.mesh.faces, static_cast<int>(parts.mesh.vertices.size())) == 0;
     repairWithCgal(parts.mesh, options, diagonal, manifold, r);
   }
 
