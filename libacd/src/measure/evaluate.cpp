@@ -43,8 +43,12 @@ namespace {
 
 // Slack of the half-space test, in normalised units: inside a hull iff n.x <= d + kHullSlack.
 constexpr double kHullSlack = 1e-10;
-// Cells of the grid over the union of the hulls (about).
+// Cells of the grid over the union of the hulls (about), for evaluate's millions of samples. The
+// grid only spares queries the planes: any size gives the same answers. Building it tests every
+// cell against the hulls, so the promise's coverage check, with tens of thousands of points, takes
+// about one cell per kPointsPerCell of them.
 constexpr std::size_t kUnionCells = std::size_t(1) << 15;
+constexpr std::size_t kPointsPerCell = 8;
 
 // ---------------------------------------------------------------- random numbers
 
@@ -153,7 +157,8 @@ bool buildHull(const std::vector<Vec3>& points, Hull& hull) {
 
 /// The hulls as one HullSet (acd/algo/hull_set.hpp) indexed over the sampling box: a point is in
 /// their union iff some hull holds it, box and facets, within kHullSlack.
-HullSet hullUnion(const std::vector<Hull>& hulls, const Box3& box, tbb::task_arena& arena) {
+HullSet hullUnion(const std::vector<Hull>& hulls, const Box3& box, tbb::task_arena& arena,
+                  std::size_t cells = kUnionCells) {
   HullSet set(kHullSlack);
   std::vector<HalfSpace> facets;
   for (const Hull& h : hulls) {
@@ -161,7 +166,7 @@ HullSet hullUnion(const std::vector<Hull>& hulls, const Box3& box, tbb::task_are
     for (std::size_t i = 0; i < h.normals.size(); ++i) facets.push_back({h.normals[i], h.offsets[i]});
     set.add(Box3{h.lo, h.hi}, facets);
   }
-  set.buildIndex(box, kUnionCells, arena);
+  set.buildIndex(box, cells, arena);
   return set;
 }
 
@@ -551,12 +556,12 @@ Coverage surfaceOutsideHulls(const TriMesh& surface, const std::vector<TriMesh>&
   Box3 box = boundingBox(m);
   for (const Hull& h : hs) box.lo = box.lo.cwiseMin(h.lo), box.hi = box.hi.cwiseMax(h.hi);
   tbb::task_arena arena = workerArena(threads);
-  const HullSet index = hullUnion(hs, box, arena);
   const Stream rng(seed, 4);
   // The vertices, then the samples: point k of them. Blocks of a fixed size, each keeping the first
   // point farthest out, taken in order: the same point as one pass, on any number of threads.
   const std::int64_t vertices = static_cast<std::int64_t>(m.vertices.size());
   const std::int64_t points = vertices + (sampler.area() > 0.0 ? samples : 0);
+  const HullSet index = hullUnion(hs, box, arena, std::clamp<std::size_t>(static_cast<std::size_t>(points) / kPointsPerCell, 512, kUnionCells));
   const std::int64_t block = 4096;
   std::vector<Coverage> found(static_cast<std::size_t>((points + block - 1) / block));
   arena.execute([&] {
