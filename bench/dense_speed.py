@@ -2,7 +2,7 @@
 """acd against V-HACD's defaults on time and peak memory, from the corpus up to dense inputs of
 about a million faces.
 
-  bench/dense_speed.py [--tau 0.05] [--repeat 3] [--models A,B] [--acd-flags="--working-share 0.1"] [--out DIR]
+  bench/dense_speed.py [--tau 0.05] [--repeat 3] [--models A,B] [--acd-flags="--working-share 0"] [--out DIR]
                                                                               -> Markdown on stdout
 
 The dense inputs are made here, by midpoint subdivision (every triangle into four, the same
