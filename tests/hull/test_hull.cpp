@@ -145,6 +145,12 @@ TEST(Hull, DuplicatePointsMapToTheFirstOccurrence) {
   EXPECT_EQ(hull.mesh.vertices.size(), 4u);
   std::set<int> sources(hull.source.begin(), hull.source.end());
   EXPECT_EQ(sources, std::set<int>({0, 1, 2, 3}));
+  // A repeat before its first occurrence's index in sorted order, and -0 against +0: the first
+  // occurrence in input order still wins.
+  const std::vector<Vec3> signedZeros = {Vec3(1, 1, 1), Vec3(-0.0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0),
+                                         Vec3(0, 0, 1), Vec3(0, -0.0, 0), Vec3(1, 1, 1)};
+  const ConvexHull z = convexHull(signedZeros);
+  EXPECT_EQ(std::set<int>(z.source.begin(), z.source.end()), std::set<int>({0, 1, 2, 3, 4}));
 }
 
 TEST(Hull, GridPointsWithCollinearAndCoplanarPointsGiveNoDegenerateFacets) {
@@ -188,6 +194,9 @@ TEST(Hull, DegenerateInputs) {
   const ConvexHull h = convexHull(planar);
   EXPECT_TRUE(h.degenerate);
   EXPECT_TRUE(h.mesh.empty());
+  // A coordinate that is no number: no hull, rather than one built on it.
+  EXPECT_TRUE(convexHull({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1),
+                          Vec3(std::nan(""), 0, 0)}).degenerate);
 }
 
 // Large inputs go through the interior-point elimination and all through the hull's own

@@ -14,14 +14,6 @@
 namespace acd {
 
 namespace {
-struct PointHash {
-  std::size_t operator()(const std::array<double, 3>& p) const {
-    std::size_t h = 1469598103934665603ull;
-    for (double d : p) h = (h ^ std::hash<double>()(d)) * 1099511628211ull;
-    return h;
-  }
-};
-
 // Akl-Toussaint elimination: the points extreme in 26 directions span a polytope inside the hull,
 // and a point strictly inside it cannot be a hull vertex. The test is a floating-point orientation
 // with a margin above its worst rounding error, so a point is dropped only when it is certainly
@@ -87,20 +79,39 @@ void dropInteriorPoints(std::vector<Vec3>& pts, std::vector<int>& orig) {
   orig.resize(kept);
 }
 
+/// The points at positions not seen before, in input order, and their indices. By sorting (a
+/// hash map allocated a node per point); +0 and -0 are one position.
+void firstOfEachPosition(const std::vector<Vec3>& points, std::vector<Vec3>& pts, std::vector<int>& orig) {
+  std::vector<int> byPosition(points.size());
+  std::iota(byPosition.begin(), byPosition.end(), 0);
+  std::sort(byPosition.begin(), byPosition.end(), [&](int a, int b) {
+    const Vec3 &p = points[a], &q = points[b];
+    if (p.x() != q.x()) return p.x() < q.x();
+    if (p.y() != q.y()) return p.y() < q.y();
+    if (p.z() != q.z()) return p.z() < q.z();
+    return a < b;
+  });
+  std::vector<char> repeated(points.size(), 0);
+  for (std::size_t k = 1; k < byPosition.size(); ++k)
+    repeated[byPosition[k]] = points[byPosition[k]] == points[byPosition[k - 1]];
+  pts.reserve(points.size());
+  orig.reserve(points.size());
+  for (int i = 0; i < static_cast<int>(points.size()); ++i)
+    if (!repeated[i]) pts.push_back(points[i]), orig.push_back(i);
+}
+
 }  // namespace
 
 ConvexHull convexHull(const std::vector<Vec3>& points) {
   ConvexHull out;
   std::vector<Vec3> pts;
-  std::vector<int> orig;  // pts -> index in points
-  pts.reserve(points.size());
-  orig.reserve(points.size());
-  std::unordered_map<std::array<double, 3>, int, PointHash> index;
-  index.reserve(points.size() * 2);
-  for (int i = 0; i < static_cast<int>(points.size()); ++i) {
-    const Vec3& p = points[i];
-    if (index.emplace(std::array<double, 3>{p.x(), p.y(), p.z()}, i).second) pts.push_back(p), orig.push_back(i);
-  }
+  std::vector<int> orig;  // pts -> index in points: the first of each position, in input order
+  for (const Vec3& p : points)
+    if (!p.allFinite()) {  // no hull, and no order to sort by
+      out.degenerate = true;
+      return out;
+    }
+  firstOfEachPosition(points, pts, orig);
   if (pts.size() < 4) {
     out.degenerate = true;
     return out;

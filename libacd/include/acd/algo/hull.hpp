@@ -14,7 +14,8 @@ struct ConvexHull {
 };
 
 /// Exact-predicate hull (quickhull, acd/algo/quickhull.hpp), in canonical form: corners only, sorted by
-/// input index. Duplicate input points map to the first occurrence.
+/// input index. Duplicate input points map to the first occurrence. A point with a coordinate that
+/// is not finite makes the hull degenerate.
 ConvexHull convexHull(const std::vector<Vec3>& points);
 
 /// Convenience: hull mesh only.
