@@ -47,7 +47,7 @@ for m in $MODELS; do
             [[ $mode == working ]] && flags=(--working-share 0.1 --working-from-faces 0)
             start=$(date +%s.%N)
             "$ACD" decompose "$mesh" -t "$TAU" "${flags[@]}" -q -o "$OUT/$m-$mode" >/dev/null 2>&1 || true
-            t=$(echo "$(date +%s.%N) - $start" | bc)
+            t=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "%.3f", b - a }')
             if [[ $mode == full ]]; then full+=("$t"); else working+=("$t"); fi
         done
     done

@@ -77,4 +77,8 @@ bool isClosedOriented(const TriMesh& mesh);
 /// repeats a vertex: an oriented surface, closed or not (vertices where fans meet allowed).
 bool isOrientedEdgeManifold(const std::vector<Face>& faces);
 
+/// For each vertex, the first vertex with exactly the same position, or itself (+0 and -0 are
+/// equal; a non-finite position equals nothing).
+std::vector<int> firstAtSamePosition(const std::vector<Vec3>& vertices);
+
 }  // namespace acd

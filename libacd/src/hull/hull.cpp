@@ -79,27 +79,6 @@ void dropInteriorPoints(std::vector<Vec3>& pts, std::vector<int>& orig) {
   orig.resize(kept);
 }
 
-/// The points at positions not seen before, in input order, and their indices. By sorting (a
-/// hash map allocated a node per point); +0 and -0 are one position.
-void firstOfEachPosition(const std::vector<Vec3>& points, std::vector<Vec3>& pts, std::vector<int>& orig) {
-  std::vector<int> byPosition(points.size());
-  std::iota(byPosition.begin(), byPosition.end(), 0);
-  std::sort(byPosition.begin(), byPosition.end(), [&](int a, int b) {
-    const Vec3 &p = points[a], &q = points[b];
-    if (p.x() != q.x()) return p.x() < q.x();
-    if (p.y() != q.y()) return p.y() < q.y();
-    if (p.z() != q.z()) return p.z() < q.z();
-    return a < b;
-  });
-  std::vector<char> repeated(points.size(), 0);
-  for (std::size_t k = 1; k < byPosition.size(); ++k)
-    repeated[byPosition[k]] = points[byPosition[k]] == points[byPosition[k - 1]];
-  pts.reserve(points.size());
-  orig.reserve(points.size());
-  for (int i = 0; i < static_cast<int>(points.size()); ++i)
-    if (!repeated[i]) pts.push_back(points[i]), orig.push_back(i);
-}
-
 }  // namespace
 
 ConvexHull convexHull(const std::vector<Vec3>& points) {
@@ -111,7 +90,9 @@ ConvexHull convexHull(const std::vector<Vec3>& points) {
       out.degenerate = true;
       return out;
     }
-  firstOfEachPosition(points, pts, orig);
+  const std::vector<int> first = firstAtSamePosition(points);
+  for (int i = 0; i < static_cast<int>(points.size()); ++i)
+    if (first[i] == i) pts.push_back(points[i]), orig.push_back(i);
   if (pts.size() < 4) {
     out.degenerate = true;
     return out;

@@ -2,6 +2,9 @@
 #include <acd/mesh.hpp>
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstring>
 #include <numeric>
 
 namespace acd {
@@ -183,5 +186,33 @@ bool directedEdgesOnce(const std::vector<Face>& faces, bool closed) {
 bool isClosedOriented(const TriMesh& mesh) { return directedEdgesOnce(mesh.faces, true); }
 
 bool isOrientedEdgeManifold(const std::vector<Face>& faces) { return directedEdgesOnce(faces, false); }
+
+/// For each vertex, the first vertex with exactly the same position, or itself (+0 and -0 are equal).
+/// Sorting instead of hashing: no allocation per vertex, and meshes have millions of them.
+std::vector<int> firstAtSamePosition(const std::vector<Vec3>& vertices) {
+  auto bits = [](double x) {
+    x += 0.0;  // turns -0 into +0
+    std::uint64_t b;
+    std::memcpy(&b, &x, sizeof b);
+    return b;
+  };
+  struct Keyed {
+    std::array<std::uint64_t, 3> key;
+    int vertex;
+    bool operator<(const Keyed& o) const { return key != o.key ? key < o.key : vertex < o.vertex; }
+  };
+  std::vector<Keyed> keyed;
+  keyed.reserve(vertices.size());
+  std::vector<int> first(vertices.size());
+  for (int v = 0; v < static_cast<int>(vertices.size()); ++v) {
+    first[v] = v;
+    const Vec3& p = vertices[v];
+    if (p.allFinite()) keyed.push_back({{bits(p.x()), bits(p.y()), bits(p.z())}, v});  // NaN equals nothing
+  }
+  std::sort(keyed.begin(), keyed.end());
+  for (size_t i = 1; i < keyed.size(); ++i)
+    if (keyed[i].key == keyed[i - 1].key) first[keyed[i].vertex] = first[keyed[i - 1].vertex];
+  return first;
+}
 
 }  // namespace acd

@@ -59,34 +59,6 @@ Box3 finiteBoundingBox(const std::vector<Vec3>& vertices) {
   return box;
 }
 
-/// For each vertex, the first vertex with exactly the same position, or itself (+0 and -0 are equal).
-/// Sorting instead of hashing: no allocation per vertex, and meshes have millions of them.
-std::vector<int> firstAtSamePosition(const std::vector<Vec3>& vertices) {
-  auto bits = [](double x) {
-    x += 0.0;  // turns -0 into +0
-    std::uint64_t b;
-    std::memcpy(&b, &x, sizeof b);
-    return b;
-  };
-  struct Keyed {
-    std::array<std::uint64_t, 3> key;
-    int vertex;
-    bool operator<(const Keyed& o) const { return key != o.key ? key < o.key : vertex < o.vertex; }
-  };
-  std::vector<Keyed> keyed;
-  keyed.reserve(vertices.size());
-  std::vector<int> first(vertices.size());
-  for (int v = 0; v < static_cast<int>(vertices.size()); ++v) {
-    first[v] = v;
-    const Vec3& p = vertices[v];
-    if (isFinite(p)) keyed.push_back({{bits(p.x()), bits(p.y()), bits(p.z())}, v});  // NaN equals nothing
-  }
-  std::sort(keyed.begin(), keyed.end());
-  for (size_t i = 1; i < keyed.size(); ++i)
-    if (keyed[i].key == keyed[i - 1].key) first[keyed[i].vertex] = first[keyed[i - 1].vertex];
-  return first;
-}
-
 /// Faces grouped by vertex set: each group lists face positions in increasing order.
 /// Returns, per face, the first face with the same vertex set (itself when it is the first).
 std::vector<int> firstWithSameVertices(const std::vector<Face>& faces) {
