@@ -226,3 +226,58 @@ TEST(Repair, PinchedVertexIsSplitWithTheShortcutOn) {
   EXPECT_EQ(r.splitVertices, 1);
   EXPECT_TRUE(isClosedOriented(r.mesh));
 }
+
+namespace {
+
+/// prepareSolid told that repairMesh found the surface clean gives what its full checks give.
+/// Returns whether the repair found it clean (the shortcut applied).
+bool expectSamePreparation(const TriMesh& input, const std::string& what) {
+  const MeshRepair r = repairMesh(input);
+  if (!r.status.ok()) return false;
+  PrepareOptions known;
+  known.knownClean = r.clean;
+  const PreparedSolid fast = prepareSolid(r.mesh, known), full = prepareSolid(r.mesh);
+  EXPECT_EQ(fast.status.code, full.status.code) << what;
+  EXPECT_EQ(fast.repairs, full.repairs) << what;
+  EXPECT_EQ(fast.components.size(), full.components.size()) << what;
+  for (std::size_t i = 0; i < std::min(fast.components.size(), full.components.size()); ++i) {
+    EXPECT_EQ(fast.components[i].vertices, full.components[i].vertices) << what << " piece " << i;
+    EXPECT_EQ(fast.components[i].faces, full.components[i].faces) << what << " piece " << i;
+  }
+  return r.clean;
+}
+
+}  // namespace
+
+// A surface the repairs found clean skips prepareSolid's checks: the pieces, their orientation and
+// the repairs' lines must be exactly what the checks give, and every other case must take them.
+TEST(Repair, KnownCleanSurfacePreparesAsTheFullChecks) {
+  for (const badmeshes::Case& c : badmeshes::all()) expectSamePreparation(c.mesh, c.name);
+  EXPECT_TRUE(expectSamePreparation(shapes::torus(2.0, 0.6, 24, 12), "torus"));
+  TriMesh insideOut = shapes::icosphere(Vec3(0, 0, 0), 1.0, 3);
+  for (Face& f : insideOut.faces) std::swap(f[1], f[2]);
+  EXPECT_TRUE(expectSamePreparation(insideOut, "inside-out sphere"));
+  // Two solids, the second inside out: split, one turned, both lines.
+  TriMesh two = shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1));
+  TriMesh second = shapes::icosphere(Vec3(5, 0, 0), 1.0, 2);
+  const int offset = static_cast<int>(two.vertices.size());
+  two.vertices.insert(two.vertices.end(), second.vertices.begin(), second.vertices.end());
+  for (const Face& f : second.faces) two.faces.push_back({f[0] + offset, f[2] + offset, f[1] + offset});
+  EXPECT_TRUE(expectSamePreparation(two, "box and inside-out sphere"));
+  // A face and its reverse alone close nothing: not clean (they go), and prepared as the checks do.
+  TriMesh sheet = two;
+  const int n = static_cast<int>(sheet.vertices.size());
+  sheet.vertices.insert(sheet.vertices.end(), {Vec3(9, 0, 0), Vec3(10, 0, 0), Vec3(9, 1, 0)});
+  sheet.faces.push_back({n, n + 1, n + 2});
+  sheet.faces.push_back({n, n + 2, n + 1});
+  expectSamePreparation(sheet, "with a double-sided triangle");
+  // Open: clean, but the shortcut is for closed surfaces only.
+  TriMesh open = shapes::icosphere(Vec3(0, 0, 0), 1.0, 2);
+  open.faces.pop_back();
+  expectSamePreparation(open, "open sphere");
+  for (const char* name : {"armadillo", "elephant", "knot"}) {
+    const ReadResult r = readMesh(acdtest::corpus(name));
+    ASSERT_TRUE(r.status.ok()) << name;
+    EXPECT_TRUE(expectSamePreparation(r.mesh, name)) << name;
+  }
+}

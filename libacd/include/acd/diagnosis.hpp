@@ -62,6 +62,10 @@ enum class OpenMeshPolicy {
 
 struct PrepareOptions {
   OpenMeshPolicy openMeshes = OpenMeshPolicy::Refuse;
+  /// The caller knows the mesh is an oriented edge-manifold surface with one fan of faces around
+  /// each vertex, no two vertices at one position and no vertex unused (MeshRepair::clean): a
+  /// closed one then skips the checks and repairs that would give it back unchanged.
+  bool knownClean = false;
 };
 
 /// Result of checking and repairing a mesh for solid decomposition.

@@ -46,6 +46,9 @@ struct MeshRepair {
   int stitchedEdges = 0;              // boundary edge pairs sewn together
   int removedDegenerateFaces = 0;     // zero-area, needle and cap faces removed by collapse or flip
   int leftDegenerateFaces = 0;        // zero-area faces the collapse could not remove
+  /// The mesh was found clean (skipWhenClean) and given back as it was: oriented, edge-manifold,
+  /// one fan a vertex, every vertex used and none at another's position (PrepareOptions::knownClean).
+  bool clean = false;
   double seconds = 0.0;
 };
 

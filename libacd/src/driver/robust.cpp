@@ -148,7 +148,9 @@ PreparedModel prepareModel(const TriMesh& mesh, const DecomposeOptions& options,
 
   PrepareOptions po;
   po.openMeshes = options.fillHoles ? OpenMeshPolicy::FillHoles : OpenMeshPolicy::Refuse;
+  po.knownClean = repaired.clean;
   PreparedSolid whole = prepareSolid(repaired.mesh, po);
+  po.knownClean = false;
   std::vector<TriMesh> unclosable;
   if (whole.status.ok()) {
     out.shells = std::move(whole.components);

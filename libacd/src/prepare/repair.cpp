@@ -232,6 +232,7 @@ MeshRepair repairMesh(const TriMesh& input, const RepairOptions& options) {
   if (options.skipWhenClean && cleanSurface(merged, options)) {
     // As CGAL's Surface_mesh gives a triangle back: from its last corner.
     r.mesh = merged;
+    r.clean = options.mergeTolerance * diagonal > 0.0;  // then no two vertices share a position
     for (Face& f : r.mesh.faces) f = {f[2], f[0], f[1]};
   } else {
     // Parts welded where they touch along an edge come apart first, each face glued to the one
