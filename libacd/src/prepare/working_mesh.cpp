@@ -245,7 +245,8 @@ class Collapser {
   /// A face keeps its shape but for one corner moved by `shift`, so each of its points moves by at
   /// most `shift`: a vertex's known bound plus the shift, when within the tolerance, keeps it there
   /// without the exact distance (the same decision the exact distance would make). Faces around
-  /// the end that stays do not move at all.
+  /// the end that stays do not move at all: their vertices keep their homes and bounds (every
+  /// bound is within the tolerance) and are not listed.
   bool rehomeInputVertices(Lane& L, const Candidate& c, const Vec3& p) {
     const int a = c.a, b = c.b;
     const int moved = c.ontoB ? a : b;
@@ -253,6 +254,7 @@ class Collapser {
     const double shift = (p - pos_[moved]).norm();
     L.rehomed.clear();
     for (int f : L.changed) {
+      if (untouched(f, c)) continue;
       const bool stays = !(contains(f, a) && contains(f, b));
       const double faceShift = contains(f, moved) ? shift : 0.0;
       for (int x : homed_[f]) {
@@ -334,18 +336,27 @@ class Collapser {
       };
       for (int v : faces_[g])
         if (within(v == a || v == b ? (c.ontoB ? b : a) : v)) return true;
-      // The input vertex nearest to q first: its faces hold q's nearest input point as a rule.
+      // The input vertices g stands for now: those that came to it, and, when the collapse left
+      // it where it was, those it had.
       const auto from = std::lower_bound(L.rehomed.begin(), L.rehomed.end(), Rehome{g, -1, 0.0}, byFaceThenVertex);
       auto to = from;
+      while (to != L.rehomed.end() && to->face == g) ++to;
+      static const std::vector<int> none;
+      const std::vector<int>& had = untouched(g, c) ? homed_[g] : none;
+      // The input vertex nearest to q first: its faces hold q's nearest input point as a rule.
       int nearest = -1;
       double nearestDistance = std::numeric_limits<double>::infinity();
-      for (; to != L.rehomed.end() && to->face == g; ++to) {
-        const double d = (input_[to->vertex] - q).squaredNorm();
-        if (d < nearestDistance) nearestDistance = d, nearest = to->vertex;
-      }
+      auto nearer = [&](int x) {
+        const double d = (input_[x] - q).squaredNorm();
+        if (d < nearestDistance) nearestDistance = d, nearest = x;
+      };
+      for (auto it = from; it != to; ++it) nearer(it->vertex);
+      for (int x : had) nearer(x);
       if (nearest >= 0 && within(nearest)) return true;
       for (auto it = from; it != to; ++it)
         if (it->vertex != nearest && within(it->vertex)) return true;
+      for (int x : had)
+        if (x != nearest && within(x)) return true;
       return false;
     };
     std::sort(L.rehomed.begin(), L.rehomed.end(), byFaceThenVertex);  // for nearInput
@@ -357,7 +368,8 @@ class Collapser {
 
     pos_[a] = p;  // a stays, at b's position when collapsing onto b
     quadric_[a] += quadric_[b];
-    for (int f : changed) homed_[f].clear();
+    for (int f : changed)
+      if (!untouched(f, c)) homed_[f].clear();  // its vertices are in L.rehomed
     for (const Rehome& r : L.rehomed) homed_[r.face].push_back(r.vertex), bound_[r.vertex] = r.bound;
     for (int f : shared) faceAlive_[f] = 0;
     if (L.slab < 0)
@@ -404,6 +416,8 @@ class Collapser {
   };
 
   bool contains(int f, int v) const { return faces_[f][0] == v || faces_[f][1] == v || faces_[f][2] == v; }
+  /// Whether the collapse of `c` leaves face f where it is: around the end that stays, not on the edge.
+  bool untouched(int f, const Candidate& c) const { return !contains(f, c.ontoB ? c.a : c.b); }
 
   const std::vector<Vec3> input_;
   const std::vector<Face> inputFaces_;
