@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 namespace {
 
@@ -185,6 +186,70 @@ TEST(InputExcess, AgreesWithDenseSamplingOnADenseBumpySphere) {
       EXPECT_LE(e.distance, sampled + spacing) << limit;
       if (sampled + spacing < limit) EXPECT_FALSE(e.exceeds) << limit;
     }
+  }
+}
+
+}  // namespace
+
+namespace {
+
+using acd::TriMesh;
+using acd::Vec3;
+
+void expectSameAnswer(const acd::HullExcess& a, const acd::HullExcess& b, const std::string& what) {
+  EXPECT_EQ(a.exceeds, b.exceeds) << what;
+  EXPECT_EQ(a.distance, b.distance) << what;
+  EXPECT_EQ(a.bound, b.bound) << what;
+  EXPECT_EQ(a.hullPoint, b.hullPoint) << what;
+  EXPECT_EQ(a.surfacePoint, b.surfacePoint) << what;
+  EXPECT_EQ(a.hullFace, b.hullFace) << what;
+  EXPECT_EQ(a.probes, b.probes) << what;
+}
+
+/// A bumpy sphere, the hull of all its vertices and the hulls of its two halves (which share many
+/// faces with the whole one, as the hulls of a union in the merge pass share the parts' faces).
+struct Halves {
+  TriMesh model, whole, left, right;
+  Halves(int subdivisions, double bump) {
+    model = acd::shapes::icosphere(Vec3(0, 0, 0), 1.0, subdivisions);
+    for (Vec3& v : model.vertices) v *= 1.0 + bump * std::sin(7 * v.x()) * std::cos(5 * v.y());
+    std::vector<Vec3> l, r;
+    for (const Vec3& v : model.vertices) {
+      if (v.x() < 0.3) l.push_back(v);
+      if (v.x() > -0.3) r.push_back(v);
+    }
+    whole = acd::hullMesh(model.vertices), left = acd::hullMesh(l), right = acd::hullMesh(r);
+  }
+};
+
+// A measure remembers the faces it searched to the end; a face met again is not searched again.
+// The answer must be the one a fresh measure gives, bit for bit, whatever was measured before.
+TEST(ModelExcess, FacesSearchedBeforeGiveTheSameAnswer) {
+  const Halves h(3, 0.08);
+  for (double limit : {0.01, 0.03, 0.2}) {
+    const acd::HullExcess fresh = acd::ModelExcess(h.model).measure(h.whole, limit, 1e-3);
+    const acd::ModelExcess used(h.model);
+    used.measure(h.left, limit, 1e-3);
+    used.measure(h.right, limit, 1e-3);
+    expectSameAnswer(used.measure(h.whole, limit, 1e-3), fresh, "after the halves, limit " + std::to_string(limit));
+    expectSameAnswer(used.measure(h.whole, limit, 1e-3), fresh, "again, limit " + std::to_string(limit));
+    // Another limit or resolution is another search.
+    expectSameAnswer(used.measure(h.whole, limit, 2e-3), acd::ModelExcess(h.model).measure(h.whole, limit, 2e-3),
+                     "another resolution");
+  }
+}
+
+TEST(InputExcess, FacesSearchedBeforeGiveTheSameAnswer) {
+  const Halves h(4, 0.05);
+  const acd::WorkingMesh standIn = acd::simplifyWithin(h.model, 0.01);
+  const double standOff = 2 * std::max(standIn.inputToWorking, 0.01);
+  for (double limit : {0.01, 0.03, 0.2}) {
+    const acd::HullExcess fresh = acd::InputExcess(h.model, standIn.mesh, standOff).measure(h.whole, limit, 1e-3);
+    const acd::InputExcess used(h.model, standIn.mesh, standOff);
+    used.measure(h.left, limit, 1e-3);
+    used.measure(h.right, limit, 1e-3);
+    expectSameAnswer(used.measure(h.whole, limit, 1e-3), fresh, "after the halves, limit " + std::to_string(limit));
+    expectSameAnswer(used.measure(h.whole, limit, 1e-3), fresh, "again, limit " + std::to_string(limit));
   }
 }
 

@@ -15,8 +15,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <memory>
+#include <mutex>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -68,12 +72,58 @@ std::pair<double, int> farthestCornerFrom(const Triangle& t, const Patch& p) {
   return farthest;
 }
 
+/// What the branch and bound found on one hull face searched to its end (no point beyond the
+/// limit). The search of a face depends on nothing but its corners, the limit, the resolution and
+/// the surface measured against, so a face met again is not searched again: the hull of a union in
+/// the merge pass keeps most faces of the hulls it joins, and each hull is measured again after.
+/// The answer is the same, bit for bit, whether a face was searched before or not.
+class FaceSearches {
+ public:
+  using Key = std::array<double, 11>;  // the corners in order, the limit, the resolution
+  struct Found {
+    double distance = 0.0;             // the largest distance met, first met where it was
+    Vec3 hullPoint = Vec3::Zero(), surfacePoint = Vec3::Zero();
+    double bound = 0.0;                // over the patches the search settled
+    int probes = 0;
+  };
+
+  bool find(const Key& key, Found& found) const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const auto it = map_.find(key);
+    if (it == map_.end()) return false;
+    found = it->second;
+    return true;
+  }
+  void add(const Key& key, const Found& found) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (map_.size() < kMost) map_.emplace(key, found);
+  }
+
+ private:
+  static constexpr std::size_t kMost = 1 << 20;  // about 150 MB at most
+  struct Bits {  // bit for bit: -0 is not 0 here, and a NaN never matches
+    std::size_t operator()(const Key& k) const {
+      std::uint64_t h = 0x9E3779B97F4A7C15ull;
+      for (double x : k) {
+        std::uint64_t b;
+        std::memcpy(&b, &x, sizeof b);
+        h = mix64(h ^ b);
+      }
+      return static_cast<std::size_t>(h);
+    }
+    bool operator()(const Key& a, const Key& b) const { return std::memcmp(a.data(), b.data(), sizeof(Key)) == 0; }
+  };
+  mutable std::mutex mutex_;
+  std::unordered_map<Key, Found, Bits, Bits> map_;
+};
+
 /// The branch and bound shared by both measures. `probe(q, patch, radius, nearest, reach, face)`
 /// returns the distance at q, how far every point of the patch may be from q before the bound
 /// matters (the patch's radius, less q's depth inside the model) and the surface triangle nearest
 /// to q when there is one, or a negative distance when the whole patch is known to be 0.
 template <class Probe>
-HullExcess branchAndBound(const TriMesh& hull, double limit, double resolution, Probe probe, int firstFace = -1) {
+HullExcess branchAndBound(const TriMesh& hull, double limit, double resolution, Probe probe, int firstFace = -1,
+                          FaceSearches* searched = nullptr) {
   HullExcess out;
   std::vector<Patch> stack;
   auto patchOf = [&](int f) {
@@ -91,27 +141,57 @@ HullExcess branchAndBound(const TriMesh& hull, double limit, double resolution, 
   };
   // Faces are visited in their order and split depth first, so the answer does not depend on
   // threads; a patch is skipped only when no point of it can exceed the limit, so the first point
-  // beyond the limit is the same whichever bound skipped it.
+  // beyond the limit is the same whichever bound skipped it. Depth first, a face's patches come
+  // one after the other: what the face gave is known when the next face starts.
+  int face = -1;
+  FaceSearches::Key key{};
+  FaceSearches::Found found;
+  auto faceDone = [&] {
+    if (face >= 0 && searched) searched->add(key, found);
+  };
+  auto recordOnFace = [&](double d, const Vec3& hullPoint, const Vec3& surfacePoint, int f) {
+    if (d > found.distance) found.distance = d, found.hullPoint = hullPoint, found.surfacePoint = surfacePoint;
+    record(d, hullPoint, surfacePoint, f);
+  };
+  auto settle = [&](double bound) {
+    found.bound = std::max(found.bound, bound);
+    out.bound = std::max(out.bound, bound);
+  };
   while (!stack.empty()) {
     const Patch p = stack.back();
     stack.pop_back();
+    if (p.face != face) {  // a face's first patch: the face itself
+      faceDone();
+      face = p.face;
+      found = {};
+      for (int k = 0; k < 3; ++k)
+        for (int i = 0; i < 3; ++i) key[3 * k + i] = p.corner[k][i];
+      key[9] = limit, key[10] = resolution;
+      if (searched && searched->find(key, found)) {
+        record(found.distance, found.hullPoint, found.surfacePoint, p.face);
+        out.bound = std::max(out.bound, found.bound);
+        out.probes += found.probes;
+        face = -1;  // nothing to add
+        continue;
+      }
+    }
     const Vec3 centroid = (p.corner[0] + p.corner[1] + p.corner[2]) / 3.0;
     double radius = 0.0;
     for (const Vec3& c : p.corner) radius = std::max(radius, (c - centroid).norm());
     Vec3 nearest = Vec3::Zero();
     double reach = radius;
-    const Triangle* face = nullptr;
-    ++out.probes;
-    const double d = probe(centroid, p, radius, nearest, reach, face);
+    const Triangle* nearestFace = nullptr;
+    ++out.probes, ++found.probes;
+    const double d = probe(centroid, p, radius, nearest, reach, nearestFace);
     if (d < 0) continue;  // zero all over
-    record(d, centroid, nearest, p.face);
+    recordOnFace(d, centroid, nearest, p.face);
     if (d > limit) {
       out.exceeds = true;
       out.bound = std::max(out.bound, d + reach);
       return out;
     }
-    if (face && d + reach > limit) {
-      const auto [farthest, corner] = farthestCornerFrom(*face, p);
+    if (nearestFace && d + reach > limit) {
+      const auto [farthest, corner] = farthestCornerFrom(*nearestFace, p);
       if (farthest < d + reach) reach = std::max(0.0, farthest - d);
       if (d + reach <= limit) {
         // Settled without the points the splits would have probed: the corner farthest from the
@@ -119,13 +199,13 @@ HullExcess branchAndBound(const TriMesh& hull, double limit, double resolution, 
         Vec3 cornerNearest = Vec3::Zero();
         double cornerReach = 0.0;
         const Triangle* cornerFace = nullptr;
-        ++out.probes;
+        ++out.probes, ++found.probes;
         const double dc = probe(p.corner[corner], p, 0.0, cornerNearest, cornerReach, cornerFace);
-        record(dc, p.corner[corner], cornerNearest, p.face);
+        recordOnFace(dc, p.corner[corner], cornerNearest, p.face);
       }
     }
     if (d + reach <= limit || radius <= resolution) {  // within the limit, or too small to split further
-      out.bound = std::max(out.bound, d + reach);
+      settle(d + reach);
       continue;
     }
     const Vec3 m01 = 0.5 * (p.corner[0] + p.corner[1]), m12 = 0.5 * (p.corner[1] + p.corner[2]),
@@ -135,6 +215,7 @@ HullExcess branchAndBound(const TriMesh& hull, double limit, double resolution, 
     stack.push_back({{m20, m12, p.corner[2]}, p.face});
     stack.push_back({{m01, m12, m20}, p.face});
   }
+  faceDone();
   out.bound = std::max(out.bound, out.distance);
   return out;
 }
@@ -184,6 +265,7 @@ struct ModelExcess::Impl {
   Tree tree;
   std::unique_ptr<InsideTest> whole;
   std::unique_ptr<ShellsInside> shells;
+  mutable FaceSearches searched;
 };
 
 ModelExcess::ModelExcess(const TriMesh& model, ModelSolid solid) : impl_(std::make_unique<Impl>(model, solid)) {}
@@ -221,7 +303,7 @@ HullExcess ModelExcess::measure(const TriMesh& hull, double limit, double resolu
                           reach = radius - d;
                           return 0.0;
                         },
-                        firstFace);
+                        firstFace, &impl_->searched);
 }
 
 struct InputExcess::Impl {
@@ -232,6 +314,7 @@ struct InputExcess::Impl {
   double standOff;
   FaceGrid inputFaces, standInFaces;
   InsideTest standInSide;
+  mutable FaceSearches searched;
 };
 
 InputExcess::InputExcess(TriMesh input, TriMesh standIn, double standOff)
@@ -313,7 +396,7 @@ HullExcess InputExcess::searchFrom(const TriMesh& hull, double limit, double res
                           reach = d + radius;
                           return 0.0;
                         },
-                        firstFace);
+                        firstFace, &impl_->searched);
 }
 
 namespace {
