@@ -245,3 +245,38 @@ TEST(QuickHull, DegenerateLatticesAgreeWithCgalsStockHull) {
   }
   EXPECT_GT(checked, 100);
 }
+
+namespace {
+
+// collinear() decides in doubles where a component of the normal stands clear of its rounding and
+// exactly otherwise: it must agree with CGAL's exact predicate on points that are collinear only
+// in exact arithmetic, one unit in the last place off it, tiny, huge, and far from the origin.
+TEST(Collinear, AgreesWithCgalsExactPredicate) {
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int collinearSeen = 0, tested = 0;
+  for (double scale : {1e-200, 1e-9, 1.0, 1e9, 1e200})
+    for (double shift : {0.0, 1e6})
+      for (int n = 0; n < 400; ++n) {
+        const Vec3 a = Vec3(unit(random), unit(random), unit(random)) * scale + Vec3::Constant(shift * scale);
+        const Vec3 d = Vec3(unit(random), unit(random), unit(random)) * scale;
+        // b and c on the line through a along d where the doubles allow it exactly (steps of a
+        // power of two along an axis-aligned d), or near it, then perhaps one ulp off.
+        Vec3 step = d;
+        if (n % 3 == 0) step = Vec3(d.x(), 0.0, 0.0);
+        if (n % 3 == 1) step = Vec3(d.x(), d.x(), 0.0);
+        Vec3 b = a + 0.5 * step, c = a + 2.0 * step;
+        if (n % 4 == 1) c.y() = std::nextafter(c.y(), std::numeric_limits<double>::infinity());
+        if (n % 4 == 2) b.z() = std::nextafter(b.z(), -std::numeric_limits<double>::infinity());
+        const bool exact = CGAL::collinear(cgal(a), cgal(b), cgal(c));
+        EXPECT_EQ(collinear(a, b, c), exact) << "scale " << scale << " shift " << shift << " case " << n;
+        EXPECT_EQ(collinear(c, a, b), exact);
+        collinearSeen += exact;
+        ++tested;
+      }
+  EXPECT_GT(collinearSeen, tested / 10);  // the exact branch was taken, both ways
+  EXPECT_LT(collinearSeen, tested);
+  EXPECT_TRUE(collinear(Vec3(1, 1, 1), Vec3(1, 1, 1), Vec3(5, 6, 7)));  // a repeated point
+}
+
+}  // namespace

@@ -39,16 +39,19 @@ int TriangleSide::exactSign(const Vec3& s) const {
 }
 
 bool collinear(const Vec3& a, const Vec3& b, const Vec3& c) {
-  // The triangle's normal is exactly zero iff the points are collinear. Its side test at a point
-  // moved from a along one axis has the sign of that component of the normal: one of the three
-  // is non-zero unless the normal is zero.
-  const TriangleSide side(a, b, c);
-  for (int axis = 0; axis < 3; ++axis) {
-    Vec3 moved = a;
-    moved[axis] = std::nextafter(a[axis], std::numeric_limits<double>::infinity());
-    if (side.sign(moved) != 0) return false;
+  // Collinear exactly when the normal (b - a) x (c - a) is zero. A component whose double value
+  // stands clear of its rounding error (orient2d's bound, differences included, with room) is
+  // certainly not zero; otherwise the exact normal decides, once for all three components.
+  const Vec3 u = b - a, v = c - a;
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    const double terms = std::abs(u[j] * v[k]) + std::abs(u[k] * v[j]);
+    if (terms > 1e-250 && terms < 1e250 && std::abs(u[j] * v[k] - u[k] * v[j]) > 1e-15 * terms) return false;
   }
-  return true;
+  using E = CGAL::Mpzf;
+  const E ux = E(b.x()) - E(a.x()), uy = E(b.y()) - E(a.y()), uz = E(b.z()) - E(a.z());
+  const E vx = E(c.x()) - E(a.x()), vy = E(c.y()) - E(a.y()), vz = E(c.z()) - E(a.z());
+  return (uy * vz - uz * vy).sign() == 0 && (uz * vx - ux * vz).sign() == 0 && (ux * vy - uy * vx).sign() == 0;
 }
 
 namespace {
