@@ -348,7 +348,7 @@ void accumulateShell(Decomposition& into, Decomposition&& d) {
 /// its crossings and decomposed again, its merges held to the shell at the user's tau: the rest of
 /// the shell keeps its components and the user's tau (the repaired surface stands off the input,
 /// and the tau of what is decomposed on it shrinks by that: the whole cow at tau 0.05 took 22
-/// parts that way, against 14 plus its tail). Fails as decomposeUntangled does, for any of them.
+/// parts, against 19 this way). Fails as decomposeUntangled does, for any of them.
 Decomposition decomposeUntangledPieces(const Decomposition& first, const TriMesh& shell, int index,
                                        const DecomposeOptions& o, double scale, int done, std::string& line) {
   Decomposition out;
@@ -468,8 +468,6 @@ Decomposition decomposeShells(const DecomposeOptions& o, PreparedModel prepared)
           (tooMany ? " (the surface passes through itself in more than " + std::to_string(kUntangleMaxPairs) +
                          " face pairs, too many for a local repair)"
                    : crosses ? " (the surface passes through itself)" : "");
-      // The first attempt's statistics are kept (work done), its components replaced. The volume
-      // decomposed is the repaired or wrapped surface's now: the components add up to it.
       // First the local repair: only the faces around the crossings change, so the rest keeps its
       // exact surface and the user's tau (a wrap stands off everywhere and costs parts).
       std::string line;
