@@ -148,9 +148,9 @@ PreparedModel prepareModel(const TriMesh& mesh, const DecomposeOptions& options,
 
   PrepareOptions po;
   po.openMeshes = options.fillHoles ? OpenMeshPolicy::FillHoles : OpenMeshPolicy::Refuse;
-  po.knownClean = repaired.clean;
-  PreparedSolid whole = prepareSolid(repaired.mesh, po);
-  po.knownClean = false;
+  PrepareOptions wholeOptions = po;
+  wholeOptions.knownClean = repaired.clean;  // the pieces below, split apart, are not known so
+  PreparedSolid whole = prepareSolid(repaired.mesh, wholeOptions);
   std::vector<TriMesh> unclosable;
   if (whole.status.ok()) {
     out.shells = std::move(whole.components);
@@ -284,30 +284,50 @@ constexpr double kUntangledCutOff = 1.0;
 /// and a failure), and a surface that crosses itself everywhere is the wrap's case.
 constexpr int kUntangleMaxPairs = 2000;
 
-/// The shell repaired around its crossings and decomposed again, its merges held to the shell at
-/// the user's tau; `line` says what was done. A failed status when the repair fails, cuts off more
-/// than kUntangledCutOff * tau, or leaves a component above tau.
-Decomposition decomposeUntangled(const TriMesh& shell, int index, const DecomposeOptions& o, double scale, int done,
-                                 std::string& line) {
+/// `surface` (the shell, or one of its components) repaired around its crossings and decomposed
+/// again, its merges held to the shell at the user's tau. A failed status when the repair fails,
+/// cuts off more than kUntangledCutOff * tau, or leaves a component above tau; `facesReplaced` and
+/// `cutOff` (how far `surface` reaches outside its repair, normalised) say what the repair did.
+Decomposition untangleAndDecompose(const TriMesh& surface, const TriMesh& shell, int index, const DecomposeOptions& o,
+                                   double scale, int done, int& facesReplaced, double& cutOff) {
   Decomposition d;
-  const Untangled u = untangleShell(shell, o.invariant);
+  const Untangled u = untangleShell(surface, o.invariant);
   if (!u.status.ok()) {
     d.status = u.status;
     return d;
   }
-  const double cutOff = distanceOutside(shell, u.mesh) * scale;
+  facesReplaced = u.facesReplaced;
+  cutOff = distanceOutside(surface, u.mesh) * scale;
   if (cutOff > kUntangledCutOff * o.tau) {
     d.status = Status::error(StatusCode::InvalidParameter, "the repair cuts off more than tau");
     return d;
   }
-  d = decomposeShell(u.mesh, index, optionsForWrap(o, u.mesh, shell, scale), scale, done, &shell, o.tau);
+  d = decomposeShell(u.mesh, index, optionsForWrap(o, u.mesh, surface, scale), scale, done, &shell, o.tau);
   if (d.status.ok() &&
       std::any_of(d.components.begin(), d.components.end(), [](const Component& c) { return c.unresolved; }))
     d.status = Status::error(StatusCode::InternalError, "a component stays above tau");
-  line = "removed its self-intersections instead (" + plural(u.facesReplaced, "face", "faces") +
+  return d;
+}
+
+/// The whole shell repaired around its crossings and decomposed again (untangleAndDecompose);
+/// `line` says what was done.
+Decomposition decomposeUntangled(const TriMesh& shell, int index, const DecomposeOptions& o, double scale, int done,
+                                 std::string& line) {
+  int replaced = 0;
+  double cutOff = 0.0;
+  Decomposition d = untangleAndDecompose(shell, shell, index, o, scale, done, replaced, cutOff);
+  line = "removed its self-intersections instead (" + plural(replaced, "face", "faces") +
          " replaced; the input reaches " + number(cutOff) +
          " normalised units outside the repaired surface) and decomposed it again";
   return d;
+}
+
+/// The work a second decomposition did, added to the first's (whose statistics are kept).
+void addRedoneWork(Decomposition& d, const Decomposition& redo) {
+  d.stats.cuts += redo.stats.cuts;
+  d.times.concavity += redo.times.concavity;
+  d.times.cutting += redo.times.cutting;
+  d.times.grouping += redo.times.grouping;
 }
 
 /// The components of `d` left above tau give way to `redo`'s (decomposeUntangledPieces); the volume
@@ -321,10 +341,7 @@ void replaceUnresolved(Decomposition& d, Decomposition&& redo) {
   for (Component& c : redo.components) kept.push_back(std::move(c));
   d.components = std::move(kept);
   d.stats.inputVolume += redo.stats.inputVolume - dropped;
-  d.stats.cuts += redo.stats.cuts;
-  d.times.concavity += redo.times.concavity;
-  d.times.cutting += redo.times.cutting;
-  d.times.grouping += redo.times.grouping;
+  addRedoneWork(d, redo);
 }
 
 /// The first attempt's statistics are kept (work done), its components replaced. The volume
@@ -332,10 +349,7 @@ void replaceUnresolved(Decomposition& d, Decomposition&& redo) {
 void replaceAll(Decomposition& d, Decomposition&& redo) {
   d.components = std::move(redo.components);
   d.stats.inputVolume = redo.stats.inputVolume;
-  d.stats.cuts += redo.stats.cuts;
-  d.times.concavity += redo.times.concavity;
-  d.times.cutting += redo.times.cutting;
-  d.times.grouping += redo.times.grouping;
+  addRedoneWork(d, redo);
 }
 
 void accumulateShell(Decomposition& into, Decomposition&& d) {
@@ -358,22 +372,12 @@ Decomposition decomposeUntangledPieces(const Decomposition& first, const TriMesh
   for (const Component& c : first.components) {
     if (!c.unresolved) continue;
     ++pieces;
-    const Untangled u = untangleShell(c.mesh, o.invariant);
-    if (!u.status.ok()) {
-      out.status = u.status;
-      return out;
-    }
-    replaced += u.facesReplaced;
-    cutOff = std::max(cutOff, distanceOutside(c.mesh, u.mesh) * scale);
-    if (cutOff > kUntangledCutOff * o.tau) {
-      out.status = Status::error(StatusCode::InvalidParameter, "the repair cuts off more than tau");
-      return out;
-    }
-    Decomposition d = decomposeShell(u.mesh, index, optionsForWrap(o, u.mesh, c.mesh, scale), scale,
-                                     done + static_cast<int>(out.components.size()), &shell, o.tau);
-    if (d.status.ok() &&
-        std::any_of(d.components.begin(), d.components.end(), [](const Component& x) { return x.unresolved; }))
-      d.status = Status::error(StatusCode::InternalError, "a component stays above tau");
+    int facesReplaced = 0;
+    double pieceCutOff = 0.0;
+    Decomposition d = untangleAndDecompose(c.mesh, shell, index, o, scale, done + static_cast<int>(out.components.size()),
+                                           facesReplaced, pieceCutOff);
+    replaced += facesReplaced;
+    cutOff = std::max(cutOff, pieceCutOff);
     if (!d.status.ok()) {
       out.status = d.status;
       return out;

@@ -147,7 +147,7 @@ HullExcess branchAndBound(const TriMesh& hull, double limit, double resolution, 
   FaceSearches::Key key{};
   FaceSearches::Found found;
   auto faceDone = [&] {
-    if (face >= 0 && searched) searched->add(key, found);
+    if (face >= 0) searched->add(key, found);
   };
   auto recordOnFace = [&](double d, const Vec3& hullPoint, const Vec3& surfacePoint, int f) {
     if (d > found.distance) found.distance = d, found.hullPoint = hullPoint, found.surfacePoint = surfacePoint;
@@ -160,14 +160,14 @@ HullExcess branchAndBound(const TriMesh& hull, double limit, double resolution, 
   while (!stack.empty()) {
     const Patch p = stack.back();
     stack.pop_back();
-    if (p.face != face) {  // a face's first patch: the face itself
+    if (searched && p.face != face) {  // a face's first patch: the face itself
       faceDone();
       face = p.face;
       found = {};
       for (int k = 0; k < 3; ++k)
         for (int i = 0; i < 3; ++i) key[3 * k + i] = p.corner[k][i];
       key[9] = limit, key[10] = resolution;
-      if (searched && searched->find(key, found)) {
+      if (searched->find(key, found)) {
         record(found.distance, found.hullPoint, found.surfacePoint, p.face);
         out.bound = std::max(out.bound, found.bound);
         out.probes += found.probes;
