@@ -5,8 +5,14 @@ set(ACD_SANITIZE "" CACHE STRING "Sanitizers for every target, e.g. address,unde
 option(ACD_BUILD_FUZZERS "Build the libFuzzer harnesses in fuzz/ (clang only)" OFF)
 
 if(ACD_SANITIZE)
-  # Stop at the first report: a sanitizer finding must fail the run, not scroll past.
-  add_compile_options(-fsanitize=${ACD_SANITIZE} -fno-sanitize-recover=all -fno-omit-frame-pointer -g)
+  # Stop at the first report: a sanitizer finding must fail the run, not scroll past. Line
+  # tables are all a report's stack needs, and full debug info of CGAL's templates doubled the build.
+  if(CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    set(ACD_SANITIZE_DEBUG_INFO -gline-tables-only)
+  else()
+    set(ACD_SANITIZE_DEBUG_INFO -g1)
+  endif()
+  add_compile_options(-fsanitize=${ACD_SANITIZE} -fno-sanitize-recover=all -fno-omit-frame-pointer ${ACD_SANITIZE_DEBUG_INFO})
   add_link_options(-fsanitize=${ACD_SANITIZE} -fno-sanitize-recover=all)
 endif()
 

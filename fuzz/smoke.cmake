@@ -3,7 +3,7 @@
 # and by the top-level CMakeLists.txt otherwise, where the harnesses come from a clang
 # sanitizer build next to this one (build-asan/, scripts/build_sanitized.sh).
 set(ACD_FUZZ_HARNESSES fuzz_read_off fuzz_read_obj fuzz_read_obj_objects fuzz_read_ply fuzz_read_stl fuzz_read_scene fuzz_decompose)
-set(ACD_FUZZ_SMOKE_SECONDS 60 CACHE STRING "Length of each harness's smoke run in the test suite")
+set(ACD_FUZZ_SMOKE_SECONDS 30 CACHE STRING "Length of each harness's smoke run in the test suite")
 # The smoke runs are a regression check, so they do not depend on a random seed: a test suite
 # that fails on one run in several proves nothing about the commit. Exploring is fuzz/run.sh
 # without -seed (docs/FUZZING.md); its findings go into the seeds once fixed.
