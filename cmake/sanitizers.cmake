@@ -6,7 +6,8 @@ option(ACD_BUILD_FUZZERS "Build the libFuzzer harnesses in fuzz/ (clang only)" O
 
 if(ACD_SANITIZE)
   # Stop at the first report: a sanitizer finding must fail the run, not scroll past. Line
-  # tables are all a report's stack needs, and full debug info of CGAL's templates doubled the build.
+  # tables are all a report's stack needs; full debug info of CGAL's templates made the heaviest
+  # file (alpha_wrap.cpp) take 86 s instead of 66 s to compile.
   if(CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
     set(ACD_SANITIZE_DEBUG_INFO -gline-tables-only)
   else()

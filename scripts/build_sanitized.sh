@@ -18,7 +18,8 @@ if ! command -v clang++ >/dev/null 2>&1; then
     echo "build_sanitized: clang++ not found (scripts/setup.sh installs clang)" >&2
     exit 1
 fi
-# -O2 and NDEBUG: optimised as shipped, with line numbers in the reports (cmake/sanitizers.cmake). The
+# -O2 and NDEBUG, without the build type's -g: cmake/sanitizers.cmake adds the line tables the
+# reports need. The
 # applications other than acd and pointloc, and the Python module (an ASan extension cannot be
 # loaded into an uninstrumented interpreter), are left out: their tests run in the main build.
 mkdir -p "$BUILD"
