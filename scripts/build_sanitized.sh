@@ -19,9 +19,9 @@ if ! command -v clang++ >/dev/null 2>&1; then
     exit 1
 fi
 # -O2 and NDEBUG, without the build type's -g: cmake/sanitizers.cmake adds the line tables the
-# reports need. The
-# applications other than acd and pointloc, and the Python module (an ASan extension cannot be
-# loaded into an uninstrumented interpreter), are left out: their tests run in the main build.
+# reports need. The applications other than acd and pointloc, and the Python module (an ASan
+# extension cannot be loaded into an uninstrumented interpreter), are left out: their tests run
+# in the main build.
 mkdir -p "$BUILD"
 if ! cmake -S . -B "$BUILD" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
         -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2 -DNDEBUG" \
