@@ -74,3 +74,44 @@ TEST(HullSet, AMeshWithoutAFaceAddsNothing) {
   EXPECT_EQ(set.planeCount(), 0u);
   EXPECT_FALSE(set.insideDirect(Vec3(0.5, 0, 0)));
 }
+
+// Cells are classified block by block (4 x 4 x 4 cells); a grid whose sides are not multiples
+// of the block, and hulls of many small facets whose planes cross many cells, must still answer
+// as testing every plane, also for points on and just beside the facets.
+TEST(HullSet, ManyFacetedHullsOnAGridOfPartBlocks) {
+  std::mt19937_64 rng(11);
+  std::normal_distribution<double> g(0.0, 1.0);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  HullSet set(1e-10);
+  std::vector<TriMesh> hulls;
+  for (int h = 0; h < 6; ++h) {
+    std::vector<Vec3> points;
+    const Vec3 centre(0.7 * h, 0.3 * (h % 2), 0.2 * (h % 3));
+    for (int i = 0; i < 400; ++i) points.push_back(centre + 0.5 * Vec3(g(rng), g(rng), 0.6 * g(rng)).normalized());
+    hulls.push_back(hullMesh(points));
+    ASSERT_TRUE(set.add(hulls.back()));
+  }
+  const Box3 box{Vec3(-0.7, -0.65, -0.45), Vec3(4.3, 1.0, 0.95)};
+  tbb::task_arena arena = workerArena(2);
+  set.buildIndex(box, 2000, arena);
+  ASSERT_TRUE(set.gridX() % 4 != 0 || set.gridY() % 4 != 0 || set.gridZ() % 4 != 0);
+  EXPECT_GT(set.boundaryCells(), 0u);
+  EXPECT_GT(set.insideCells(), 0u);
+  std::vector<Vec3> points;
+  for (int i = 0; i < 40000; ++i)
+    points.push_back(box.lo + box.size().cwiseProduct(acdtest::drawPoint([&] { return u(rng); })));
+  for (const TriMesh& hull : hulls)  // on each facet's plane at its centroid, and 1e-9 either side of it
+    for (const Face& f : hull.faces) {
+      const Vec3 &a = hull.vertices[f[0]], &b = hull.vertices[f[1]], &c = hull.vertices[f[2]];
+      const Vec3 n = (b - a).cross(c - a).normalized(), centroid = (a + b + c) / 3;
+      for (double off : {-1e-9, 0.0, 1e-9}) points.push_back(centroid + off * n);
+    }
+  std::uint64_t direct = 0;
+  for (const Vec3& p : points) {
+    ASSERT_EQ(set.inside(p), set.insideDirect(p)) << p.transpose();
+    direct += set.insideDirect(p) ? 1 : 0;
+  }
+  EXPECT_EQ(set.countInside([&](std::uint64_t i) { return points[i]; }, 0, points.size()), direct);
+  EXPECT_GT(direct, 1000u);
+  EXPECT_LT(direct, points.size() - 1000);
+}
