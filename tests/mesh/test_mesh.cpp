@@ -1,6 +1,7 @@
 // TriMesh's basic measures and operations (libacd/src/mesh/mesh.cpp) on solids with known answers:
 // boxes (volume, area, bounds), a right triangle's normal, connected parts, concatenation,
 // compaction, and what makes a mesh closed and consistently oriented.
+#include <acd/diagnosis.hpp>
 #include <acd/mesh.hpp>
 #include <acd/algo/shapes.hpp>
 
@@ -8,6 +9,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
+#include <random>
 #include <set>
 
 using namespace acd;
@@ -117,4 +120,57 @@ TEST(Mesh, ClosedAndOrientedOrNot) {
   TriMesh flipped = box;
   std::swap(flipped.faces[0][1], flipped.faces[0][2]);
   EXPECT_FALSE(isClosedOriented(flipped));
+}
+
+// pinchedVertices walks the fans around each vertex; diagnose's count joins corners across the
+// numbered edges with a union-find. On oriented surfaces, closed or open, they must agree.
+TEST(Mesh, PinchedVerticesAsTheDiagnosisCountsThem) {
+  auto diagnosed = [](const std::vector<Face>& faces) {
+    int nv = 0;
+    for (const Face& f : faces) nv = std::max({nv, f[0] + 1, f[1] + 1, f[2] + 1});
+    return countNonManifoldVertices(faces, nv);
+  };
+  const TriMesh box = shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1));
+  EXPECT_EQ(pinchedVertices(box.faces), 0);
+  // Two boxes corner to corner, the corner shared: one pinch.
+  TriMesh two = concatenate({box, shapes::box(Vec3(1, 1, 1), Vec3(2, 2, 2))});
+  const int n = static_cast<int>(box.vertices.size());
+  int corner = -1, other = -1;
+  for (int v = 0; v < static_cast<int>(two.vertices.size()); ++v)
+    if (two.vertices[v] == Vec3(1, 1, 1)) (v < n ? corner : other) = v;
+  ASSERT_GE(corner, 0);
+  ASSERT_GE(other, 0);
+  for (Face& f : two.faces)
+    for (int& v : f)
+      if (v == other) v = corner;
+  EXPECT_EQ(pinchedVertices(two.faces), 1);
+  // Two triangles meeting at one vertex (open fans): one pinch; an open box: none.
+  EXPECT_EQ(pinchedVertices({{0, 1, 2}, {0, 3, 4}}), 1);
+  TriMesh open = box;
+  open.faces.pop_back();
+  EXPECT_EQ(pinchedVertices(open.faces), 0);
+  // Not an oriented edge-manifold: -1.
+  TriMesh flipped = box;
+  std::swap(flipped.faces[0][1], flipped.faces[0][2]);
+  EXPECT_EQ(pinchedVertices(flipped.faces), -1);
+  EXPECT_EQ(pinchedVertices({{0, 0, 1}}), -1);
+  // Spheres with random faces taken away: open fans, pinches where the faces left around a vertex
+  // fall apart; vertices renumbered at random.
+  const TriMesh sphere = shapes::icosphere(Vec3(0, 0, 0), 1.0, 3);
+  std::mt19937 rng(5);
+  int withPinches = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<int> rename(sphere.vertices.size());
+    std::iota(rename.begin(), rename.end(), 0);
+    std::shuffle(rename.begin(), rename.end(), rng);
+    const double keep = 0.5 + 0.5 * (trial % 10) / 10.0;
+    std::vector<Face> faces;
+    for (const Face& f : sphere.faces)
+      if (std::uniform_real_distribution<double>(0, 1)(rng) < keep) faces.push_back({rename[f[0]], rename[f[1]], rename[f[2]]});
+    if (faces.empty()) continue;
+    const int expected = diagnosed(faces);
+    ASSERT_EQ(pinchedVertices(faces), expected) << "trial " << trial;
+    withPinches += expected > 0 ? 1 : 0;
+  }
+  EXPECT_GT(withPinches, 50);  // the comparison saw pinches, not only clean fans
 }

@@ -77,6 +77,11 @@ bool isClosedOriented(const TriMesh& mesh);
 /// repeats a vertex: an oriented surface, closed or not (vertices where fans meet allowed).
 bool isOrientedEdgeManifold(const std::vector<Face>& faces);
 
+/// For an oriented edge-manifold surface, the number of vertices whose faces form more than one
+/// fan (a pinch: parts that meet at a point), as diagnose() counts them; -1 when the surface is
+/// not oriented edge-manifold. One pass of sides by vertex, with no edge numbering.
+int pinchedVertices(const std::vector<Face>& faces);
+
 /// For each vertex, the first vertex with exactly the same position, or itself (+0 and -0 are
 /// equal; a non-finite position equals nothing).
 std::vector<int> firstAtSamePosition(const std::vector<Vec3>& vertices);

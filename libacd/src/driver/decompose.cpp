@@ -585,8 +585,7 @@ int countNotches(const TriMesh& mesh, double angle) {
     const int a = mesh.faces[f][k], b = mesh.faces[f][(k + 1) % 3];
     const Vec3 nl = faceNormal(mesh, f).normalized(), nr = faceNormal(mesh, g).normalized();
     const Vec3 c = nl.cross(nr);
-    const double turn = std::atan2(c.norm(), nl.dot(nr));
-    if (c.dot(mesh.vertices[b] - mesh.vertices[a]) < 0 && turn > angle) ++notches;
+    if (c.dot(mesh.vertices[b] - mesh.vertices[a]) < 0 && std::atan2(c.norm(), nl.dot(nr)) > angle) ++notches;
   }
   return notches;
 }

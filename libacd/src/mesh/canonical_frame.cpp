@@ -336,6 +336,7 @@ std::size_t CanonicalInverse::KeyHash::operator()(const Vec3& p) const {
 }
 
 void CanonicalInverse::add(const CanonicalMesh& canonical, const TriMesh& input) {
+  exact_.reserve(exact_.size() + canonical.mesh.vertices.size());  // no rehashing on the way
   for (std::size_t i = 0; i < canonical.mesh.vertices.size(); ++i)
     exact_.emplace(canonical.mesh.vertices[i], input.vertices[canonical.source[i]]);
 }

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <numeric>
 
 namespace acd {
@@ -58,7 +59,13 @@ TriMesh compactFaces(const std::vector<Vec3>& vertices, const std::vector<Face>&
   for (const Face& f : faces)
     for (int v : f)
       if (remap[v] < 0) remap[v] = 0, used.push_back(v);
-  std::sort(used.begin(), used.end());
+  if (4 * used.size() >= vertices.size()) {  // most vertices used: listed in order without a sort
+    used.clear();
+    for (int v = 0; v < static_cast<int>(vertices.size()); ++v)
+      if (remap[v] == 0) used.push_back(v);
+  } else {
+    std::sort(used.begin(), used.end());
+  }
   TriMesh out;
   out.vertices.reserve(used.size());
   for (int v : used) {
@@ -146,42 +153,88 @@ SideEdges numberEdges(const std::vector<Face>& faces) {
 
 namespace {
 
+/// Each face's sides by their first vertex: for vertex v, (w, u) for every face (v, w, u) in
+/// rotation, w the end of the side leaving v and u the start of the one entering it.
+struct SidesByVertex {
+  std::vector<int> start;                   // by vertex, into sides
+  std::vector<std::pair<int, int>> sides;   // (w, u), sorted by w within each vertex
+  bool valid = false;                       // no negative index, no face repeating a vertex
+
+  explicit SidesByVertex(const std::vector<Face>& faces) {
+    int nv = 0;
+    for (const Face& f : faces)
+      for (int k = 0; k < 3; ++k) {
+        if (f[k] < 0 || f[k] == f[(k + 1) % 3]) return;
+        nv = std::max(nv, f[k] + 1);
+      }
+    start.assign(nv + 1, 0);
+    for (const Face& f : faces)
+      for (int v : f) ++start[v + 1];
+    for (int v = 0; v < nv; ++v) start[v + 1] += start[v];
+    sides.resize(start[nv]);
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (const Face& f : faces)
+      for (int k = 0; k < 3; ++k) sides[fill[f[k]]++] = {f[(k + 1) % 3], f[(k + 2) % 3]};
+    for (int v = 0; v < nv; ++v) std::sort(sides.begin() + start[v], sides.begin() + start[v + 1]);
+    valid = true;
+  }
+  int vertices() const { return static_cast<int>(start.size()) - 1; }
+  /// Each directed edge at most once.
+  bool directedOnce() const {
+    for (int v = 0; v < vertices(); ++v)
+      for (int i = start[v] + 1; i < start[v + 1]; ++i)
+        if (sides[i].first == sides[i - 1].first) return false;
+    return true;
+  }
+  /// The side leaving v toward w, or -1.
+  int leaving(int v, int w) const {
+    const auto first = sides.begin() + start[v], last = sides.begin() + start[v + 1];
+    const auto it = std::lower_bound(first, last, std::pair<int, int>(w, std::numeric_limits<int>::min()));
+    return it != last && it->first == w ? static_cast<int>(it - sides.begin()) : -1;
+  }
+};
+
 /// Each directed edge at most once, no face repeating a vertex, and (when `closed`) every edge's
-/// reverse there too: out-neighbour lists per vertex, sorted.
+/// reverse there too.
 bool directedEdgesOnce(const std::vector<Face>& faces, bool closed) {
   if (faces.empty()) return !closed;
-  int nv = 0;
-  for (const Face& f : faces)
-    for (int v : f) {
-      if (v < 0) return false;
-      nv = std::max(nv, v + 1);
-    }
-  std::vector<int> start(nv + 1, 0);
-  for (const Face& f : faces)
-    for (int k = 0; k < 3; ++k) {
-      if (f[k] == f[(k + 1) % 3]) return false;
-      ++start[f[k] + 1];
-    }
-  for (int v = 0; v < nv; ++v) start[v + 1] += start[v];
-  std::vector<int> next(start[nv]);
-  std::vector<int> fill(start.begin(), start.end() - 1);
-  for (const Face& f : faces)
-    for (int k = 0; k < 3; ++k) next[fill[f[k]]++] = f[(k + 1) % 3];
-  for (int v = 0; v < nv; ++v) {
-    std::sort(next.begin() + start[v], next.begin() + start[v + 1]);
-    if (std::adjacent_find(next.begin() + start[v], next.begin() + start[v + 1]) != next.begin() + start[v + 1])
-      return false;
-  }
+  const SidesByVertex by(faces);
+  if (!by.valid || !by.directedOnce()) return false;
   if (!closed) return true;
-  for (int a = 0; a < nv; ++a)
-    for (int i = start[a]; i < start[a + 1]; ++i) {
-      const int b = next[i];
-      if (!std::binary_search(next.begin() + start[b], next.begin() + start[b + 1], a)) return false;
-    }
+  for (int a = 0; a < by.vertices(); ++a)
+    for (int i = by.start[a]; i < by.start[a + 1]; ++i)
+      if (by.leaving(by.sides[i].first, a) < 0) return false;
   return true;
 }
 
 }  // namespace
+
+int pinchedVertices(const std::vector<Face>& faces) {
+  const SidesByVertex by(faces);
+  if (!by.valid || !by.directedOnce()) return -1;
+  // Around v, face (v, w, u) and the face leaving v toward u share the edge vu: one fan goes on
+  // from the first to the second. Each side leaves v once and enters it at most once, so the
+  // faces around v form chains and cycles, one per fan; a vertex with more than one pinches.
+  int pinched = 0;
+  std::vector<char> seen;
+  for (int v = 0; v < by.vertices(); ++v) {
+    const int s0 = by.start[v], degree = by.start[v + 1] - s0;
+    if (degree == 0) continue;
+    seen.assign(degree, 0);
+    auto walk = [&](int i) {  // marks the fan from face i on around v
+      for (int j = s0 + i; j >= 0 && !seen[j - s0]; j = by.leaving(v, by.sides[j].second)) seen[j - s0] = 1;
+    };
+    int fans = 0;
+    // The open fans first, from their first face (no face enters v along its side vw), then
+    // the closed ones, from any face not yet seen.
+    for (int i = 0; i < degree; ++i)
+      if (by.leaving(by.sides[s0 + i].first, v) < 0) ++fans, walk(i);
+    for (int i = 0; i < degree; ++i)
+      if (!seen[i]) ++fans, walk(i);
+    pinched += fans > 1 ? 1 : 0;
+  }
+  return pinched;
+}
 
 bool isClosedOriented(const TriMesh& mesh) { return directedEdgesOnce(mesh.faces, true); }
 

@@ -34,6 +34,10 @@ DuplicateOutcome resolveDuplicates(const std::vector<Face>& faces) {
     if (reverse >= 0) doubleSided[first] = 1;
     i = j;
   }
+  if (std::count(keep.begin(), keep.end(), 1) == nf) {  // no face given twice (most meshes)
+    out.faces = faces;
+    return out;
+  }
   // Edge uses: by single faces (c) and by double-sided pairs (p).
   const SideEdges edges = numberEdges(faces);
   std::vector<std::pair<int, int>> uses(edges.edges, {0, 0});

@@ -47,7 +47,6 @@ std::string count(int n, const char* singular, const char* plural) {
 /// vertex one fan (diagnose's checks), and every face clear of the needle and cap limits by a wide
 /// margin (so no rounding decides).
 bool cleanSurface(const TriMesh& mesh, const RepairOptions& options) {
-  if (!isOrientedEdgeManifold(mesh.faces)) return false;
   const double ratio2 = 0.25 * options.needleRatio * options.needleRatio;  // half the ratio, squared
   const double capCos = std::cos((options.capDegrees - 1.0) * std::acos(-1.0) / 180.0);
   for (const Face& f : mesh.faces) {
@@ -62,7 +61,7 @@ bool cleanSurface(const TriMesh& mesh, const RepairOptions& options) {
     }
     if (!(shortest2 > 0.0 && longest2 < ratio2 * shortest2)) return false;
   }
-  return countNonManifoldVertices(mesh.faces, static_cast<int>(mesh.vertices.size())) == 0;
+  return pinchedVertices(mesh.faces) == 0;  // oriented, edge-manifold, one fan a vertex
 }
 
 /// Steps 3 to 6, with CGAL's polygon-soup and mesh repairs; `r.mesh` is the result. Should CGAL
@@ -227,7 +226,11 @@ MeshRepair repairMesh(const TriMesh& input, const RepairOptions& options) {
   r.tJunctionEdges = cracks.splitEdges;
   r.tJunctionVertices = cracks.splitVertices;
   faces = std::move(cracks.faces);
-  const TriMesh merged = compact(TriMesh{used.vertices, faces});  // the merged-away vertices go
+  // The merged-away vertices go; with nothing merged, dropped or split, every vertex is still
+  // used and compacting would give the mesh back as it is.
+  const bool unchanged = r.mergedVertices == 0 && r.droppedCollapsedFaces == 0 && dup.exactCopies == 0 &&
+                         dup.keptOne == 0 && dup.droppedBoth == 0 && cracks.splitEdges == 0;
+  const TriMesh merged = unchanged ? TriMesh{used.vertices, std::move(faces)} : compact(TriMesh{used.vertices, faces});
 
   if (options.skipWhenClean && cleanSurface(merged, options)) {
     // As CGAL's Surface_mesh gives a triangle back: from its last corner.
@@ -239,8 +242,7 @@ MeshRepair repairMesh(const TriMesh& input, const RepairOptions& options) {
     // that bounds its material; CGAL's soup repair would pair them in file order.
     const TouchingSolidsSplit parts = splitTouchingSolids(merged);
     r.splitVertices = parts.copiedVertices;
-    const bool manifold = options.skipWhenClean && isOrientedEdgeManifold(parts.mesh.faces) &&
-                          countNonManifoldVertices(parts.mesh.faces, static_cast<int>(parts.mesh.vertices.size())) == 0;
+    const bool manifold = options.skipWhenClean && pinchedVertices(parts.mesh.faces) == 0;
     repairWithCgal(parts.mesh, options, diagonal, manifold, r);
   }
 
