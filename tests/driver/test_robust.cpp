@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <memory>
 #include <random>
 
@@ -261,4 +262,18 @@ TEST(CleanShells, CutAsTheModelItselfDoes) {
     const double s = a.normalization.scale;  // volumes are in normalised units
     if (name == "box" || name == "corner") EXPECT_NEAR(volume, 2.0 * s * s * s, 1e-9) << name;  // outward, all of it
   }
+}
+
+// The reported total is the call's own time, the repairs included: a soup of 20k faces (every
+// face with its own corners) spends a good part of it merging them before any cut.
+TEST(CleanShells, TheTotalTimeCountsTheRepairs) {
+  const TriMesh mesh = badmeshes::soup(shapes::icosphere(Vec3(0, 0, 0), 1.0, 5));
+  const auto start = std::chrono::steady_clock::now();
+  const Decomposition d = decompose(mesh, atTau(0.05));
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ASSERT_TRUE(d.status.ok()) << d.status.message;
+  EXPECT_GT(d.repairSeconds, 0.0);
+  EXPECT_LE(d.times.total, wall);
+  EXPECT_GE(d.times.total, 0.95 * wall) << "repairs " << d.repairSeconds << " s, prepare " << d.times.prepare << " s";
+  EXPECT_GE(d.times.total, d.times.prepare + d.times.merging + d.times.hulls);
 }

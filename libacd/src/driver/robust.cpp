@@ -551,7 +551,11 @@ Decomposition decomposeRepaired(const TriMesh& mesh, const DecomposeOptions& opt
   }
   const DecomposeOptions o = resolvedOptions(options);
   PreparedModel united = prepareModel(mesh, o);
-  if (!united.status.ok() || united.unitedShells == 0) return decomposeShells(o, std::move(united));
+  if (!united.status.ok() || united.unitedShells == 0) {
+    Decomposition d = decomposeShells(o, std::move(united));
+    d.times.total = secondsSince(start);  // the repairs included, as in d.times.prepare
+    return d;
+  }
   // The shells apart first (cheap: most shells of an assembly are nearly convex); the union then
   // gets at most kUnionPieces times their hull count of pieces before its merge pass: a union
   // whose shells meet in coincident faces (a bolt in a hole of its own radius) can cut into

@@ -11,6 +11,7 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -56,6 +57,8 @@ Status readWholeFile(const std::string& path, std::string& data) {
   std::FILE* file = std::fopen(path.c_str(), "rb");
   if (!file) return Status::error(StatusCode::FileUnreadable, path + ": cannot open: " + std::strerror(errno));
   // Read in chunks rather than trusting a size: works for pipes and files that change under us.
+  // The size, when known, only reserves the string (no copy on every growth of a large file).
+  if (const auto size = std::filesystem::file_size(path, ec); !ec && size < (std::uintmax_t(1) << 34)) data.reserve(size);
   char chunk[1 << 16];
   size_t got = 0;
   while ((got = std::fread(chunk, 1, sizeof chunk, file)) > 0) data.append(chunk, got);
