@@ -82,6 +82,31 @@ TEST(FaceGrid, AFlatBoxGivesAGridAboutTheSizeOfTheMesh) {
   }
 }
 
+// Faces are numbered across the meshes (empty ones among them): the face found must be the
+// found mesh's own, the one every face tried gives, also for points on a wall two boxes share.
+TEST(FaceGrid, ManyMeshesGiveBackTheirOwnFaces) {
+  const TriMesh empty;
+  const TriMesh left = acd::shapes::box(Vec3(0, 0, 0), Vec3(1, 1, 1));
+  const TriMesh right = acd::shapes::box(Vec3(1, 0, 0), Vec3(2, 1, 1));
+  const TriMesh ball = acd::shapes::icosphere(Vec3(1, 0.5, 2.5), 0.8, 2);
+  const std::vector<const TriMesh*> meshes{&empty, &left, &empty, &right, &empty, &ball, &empty};
+  const acd::FaceGrid grid(meshes);
+  std::vector<Vec3> points;
+  for (const Vec3& u : acdtest::randomPoints(300, 17, true)) points.push_back(Vec3(1, 0.5, 1.2) + 2.5 * u);
+  for (double y : {0.1, 0.5, 0.9}) points.push_back(Vec3(1, y, 0.5));  // on the shared wall
+  for (const Vec3& p : points) {
+    const auto [mesh, distance] = everyFace(meshes, p);
+    const acd::FaceGrid::Nearest n = grid.nearest(p);
+    ASSERT_EQ(n.mesh, mesh) << p.transpose();
+    ASSERT_GE(n.face, 0);
+    ASSERT_LT(n.face, static_cast<int>(meshes[n.mesh]->faces.size())) << p.transpose();
+    const TriMesh& t = *meshes[n.mesh];
+    const acd::Face& f = t.faces[n.face];
+    EXPECT_NEAR((acd::closestPointOnTriangle(p, t.vertices[f[0]], t.vertices[f[1]], t.vertices[f[2]]) - p).norm(),
+                distance, 1e-12) << p.transpose();
+  }
+}
+
 TEST(FaceGrid, NoFacesFindNothing) {
   const TriMesh empty;
   const acd::FaceGrid grid({&empty});

@@ -4,8 +4,23 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace acd {
+
+namespace {
+
+/// x as a float no greater (down) or no less (up) than x; clamped first, as a double beyond float's
+/// range does not convert.
+float roundedOutward(double x, bool up) {
+  const double most = std::numeric_limits<float>::max();
+  const float f = static_cast<float>(std::clamp(x, -most, most));
+  if (up && f < x) return std::nextafter(f, std::numeric_limits<float>::infinity());
+  if (!up && f > x) return std::nextafter(f, -std::numeric_limits<float>::infinity());
+  return f;
+}
+
+}  // namespace
 
 FaceGrid::FaceGrid(std::vector<const TriMesh*> meshes) : meshes_(std::move(meshes)) {
   Box3 box;
@@ -17,6 +32,21 @@ FaceGrid::FaceGrid(std::vector<const TriMesh*> meshes) : meshes_(std::move(meshe
     faces += m->faces.size();
   }
   if (faces == 0) return;
+  firstFace_.reserve(meshes_.size() + 1);
+  boxes_.reserve(faces);
+  firstFace_.push_back(0);
+  for (const TriMesh* m : meshes_) {
+    for (const Face& t : m->faces) {
+      FaceBox b;
+      for (int k = 0; k < 3; ++k) {
+        const double a = m->vertices[t[0]][k], c = m->vertices[t[1]][k], e = m->vertices[t[2]][k];
+        b.lo[k] = roundedOutward(std::min({a, c, e}), false);
+        b.hi[k] = roundedOutward(std::max({a, c, e}), true);
+      }
+      boxes_.push_back(b);
+    }
+    firstFace_.push_back(static_cast<int>(boxes_.size()));
+  }
   const Vec3 size = box.size().cwiseMax(1e-9);
   cell_ = std::max(1e-6, std::cbrt(size.prod() / static_cast<double>(faces)));
   lo_ = box.lo;
@@ -31,8 +61,9 @@ FaceGrid::FaceGrid(std::vector<const TriMesh*> meshes) : meshes_(std::move(meshe
   for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
   entries_.resize(start_.back());
   std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
-  forEachFaceCell([&](std::size_t c, int m, int f) { entries_[fill[c]++] = {m, f}; });
+  forEachFaceCell([&](std::size_t c, int m, int f) { entries_[fill[c]++] = firstFace_[m] + f; });
 }
+
 
 FaceGrid::Nearest FaceGrid::nearest(const Vec3& p, double within) const {
   if (entries_.empty()) return {};
@@ -63,18 +94,22 @@ FaceGrid::Nearest FaceGrid::nearest(const Vec3& p, double within) const {
           if (box > best * (1 + 1e-9) || box > within * within * (1 + 1e-9)) continue;
           const std::size_t c = (static_cast<std::size_t>(i) * dims_[1] + j) * dims_[2] + k;
           for (std::size_t e = start_[c]; e < start_[c + 1]; ++e) {
-            const auto [m, f] = entries_[e];
-            const TriMesh& mesh = *meshes_[m];
-            const Face& t = mesh.faces[f];
-            const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+            const int number = entries_[e];
             // A face whose box lies farther than the best found cannot be nearer, nor tie: skip the
-            // exact distance (most faces of a cell are such).
+            // exact distance (most faces of a cell are such). The float box holds the face's, so
+            // its distance is no greater: it skips no face the exact box would keep.
+            const FaceBox& fb = boxes_[number];
             double box = 0.0;
             for (int x = 0; x < 3; ++x) {
-              const double gap = std::max({std::min({a[x], b[x], c[x]}) - p[x], p[x] - std::max({a[x], b[x], c[x]}), 0.0});
+              const double gap = std::max({fb.lo[x] - p[x], p[x] - fb.hi[x], 0.0});
               box += gap * gap;
             }
             if (box > best * (1 + 1e-9) + slack2) continue;
+            const int m = static_cast<int>(std::upper_bound(firstFace_.begin(), firstFace_.end(), number) - firstFace_.begin()) - 1;
+            const int f = number - firstFace_[m];
+            const TriMesh& mesh = *meshes_[m];
+            const Face& t = mesh.faces[f];
+            const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
             const double d = (closestPointOnTriangle(p, a, b, c) - p).squaredNorm();
             if (d < best || (d == best && m < bestMesh)) best = d, bestMesh = m, bestFace = f;
           }
