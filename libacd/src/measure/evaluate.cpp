@@ -337,26 +337,34 @@ Status checkMesh(const TriMesh& m, const std::string& name, bool needClosed) {
 namespace {
 
 /// The hulls to measure: the convex hull of each one's (used) vertices, normalised with the
-/// model's transform. Hulls without 4 non-coplanar vertices are counted in `skipped`.
-std::vector<Hull> normalisedHulls(const std::vector<TriMesh>& hulls, const Normalization& norm, int& skipped) {
+/// model's transform, built on the arena's threads (each on its own, kept in the hulls' order).
+/// Hulls without 4 non-coplanar vertices are counted in `skipped`.
+std::vector<Hull> normalisedHulls(const std::vector<TriMesh>& hulls, const Normalization& norm, tbb::task_arena& arena,
+                                  int& skipped) {
+  std::vector<Hull> built(hulls.size());
+  std::vector<char> usable(hulls.size(), 0);
+  arena.execute([&] {
+    tbb::parallel_for(std::size_t(0), hulls.size(), [&](std::size_t i) {
+      const TriMesh& in = hulls[i];
+      std::vector<Vec3> pts;
+      if (in.faces.empty()) {
+        for (const Vec3& p : in.vertices) pts.push_back(norm.apply(p));
+      } else {
+        std::vector<char> used(in.vertices.size(), 0);
+        for (const Face& f : in.faces)
+          for (int v : f) used[v] = 1;
+        for (std::size_t v = 0; v < in.vertices.size(); ++v)
+          if (used[v]) pts.push_back(norm.apply(in.vertices[v]));
+      }
+      usable[i] = buildHull(pts, built[i]);
+    });
+  });
   std::vector<Hull> hs;
-  for (const TriMesh& in : hulls) {
-    std::vector<Vec3> pts;
-    if (in.faces.empty()) {
-      for (const Vec3& p : in.vertices) pts.push_back(norm.apply(p));
-    } else {
-      std::vector<char> used(in.vertices.size(), 0);
-      for (const Face& f : in.faces)
-        for (int v : f) used[v] = 1;
-      for (std::size_t v = 0; v < in.vertices.size(); ++v)
-        if (used[v]) pts.push_back(norm.apply(in.vertices[v]));
-    }
-    Hull h;
-    if (buildHull(pts, h))
-      hs.push_back(std::move(h));
+  for (std::size_t i = 0; i < hulls.size(); ++i)
+    if (usable[i])
+      hs.push_back(std::move(built[i]));
     else
       ++skipped;
-  }
   return hs;
 }
 
@@ -511,7 +519,8 @@ Evaluation evaluate(const TriMesh& model, const std::vector<TriMesh>& hulls, con
   ev.modelVolume = std::abs(signedVolume(m));
   if (!(ev.modelVolume > 1e-12)) return fail(Status::error(StatusCode::InvalidParameter, "model encloses no volume"));
 
-  std::vector<Hull> hs = normalisedHulls(hulls, norm, ev.skippedHulls);
+  tbb::task_arena arena = workerArena(options.threads);
+  std::vector<Hull> hs = normalisedHulls(hulls, norm, arena, ev.skippedHulls);
   ev.hulls = static_cast<int>(hs.size());
   if (hs.empty())
     return fail(Status::error(StatusCode::InvalidParameter,
@@ -527,7 +536,6 @@ Evaluation evaluate(const TriMesh& model, const std::vector<TriMesh>& hulls, con
   ev.boxVolume = size.prod();
 
   const InsideTest locator(m);
-  tbb::task_arena arena = workerArena(options.threads);
   const HullSet index = hullUnion(hs, box, arena);
 
   sampleVolumes(box, index, locator, arena, options, ev);
@@ -547,7 +555,8 @@ Coverage surfaceOutsideHulls(const TriMesh& surface, const std::vector<TriMesh>&
   if (surface.faces.empty() || hulls.empty()) return out;
   const Normalization norm = minimumSphereNormalization(surface);
   int skipped = 0;
-  const std::vector<Hull> hs = normalisedHulls(hulls, norm, skipped);
+  tbb::task_arena arena = workerArena(threads);
+  const std::vector<Hull> hs = normalisedHulls(hulls, norm, arena, skipped);
   if (hs.empty()) return out;
   const TriMesh m = applyNormalization(surface, norm);
   std::vector<std::array<Vec3, 3>> triangles;
@@ -555,7 +564,6 @@ Coverage surfaceOutsideHulls(const TriMesh& surface, const std::vector<TriMesh>&
   const SurfaceSampler sampler(std::move(triangles));
   Box3 box = boundingBox(m);
   for (const Hull& h : hs) box.lo = box.lo.cwiseMin(h.lo), box.hi = box.hi.cwiseMax(h.hi);
-  tbb::task_arena arena = workerArena(threads);
   const Stream rng(seed, 4);
   // The vertices, then the samples: point k of them. Blocks of a fixed size, each keeping the first
   // point farthest out, taken in order: the same point as one pass, on any number of threads.
