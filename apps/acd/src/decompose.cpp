@@ -18,6 +18,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <sys/resource.h>
+#include <sys/syscall.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -96,6 +98,14 @@ void printSummary(const DecomposeArgs& a, const acd::Decomposition& d, double un
   std::fflush(stdout);  // before the warnings on stderr: with both sent to one file, no line is cut
 }
 
+/// Lowers the calling thread's scheduling priority (Linux: a nice value per thread; elsewhere
+/// nothing). The work it does is the same, it only runs when a core is free.
+void giveWayToOtherThreads() {
+#ifdef __linux__
+  setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 10);
+#endif
+}
+
 int decomposeMesh(DecomposeArgs& a, const acd::TriMesh& mesh) {
   if (const int code = resolveTauAbs(a.sim, mesh, a.options); code != kOk) return code;
   const acd::Status valid = acd::validate(a.options);
@@ -107,10 +117,14 @@ int decomposeMesh(DecomposeArgs& a, const acd::TriMesh& mesh) {
       std::fflush(stderr);
     };
   // The input's description (its diagnosis and self-intersection count, seconds on a dense scan)
-  // does not depend on the decomposition: beside it when more than one thread is allowed.
+  // does not depend on the decomposition: beside it when more than one thread is allowed, on a
+  // thread that gives way to the decomposition's where they compete for the cores.
+  const bool beside = a.options.threads != 1;
   std::future<acd::ReportInput> described =
-      std::async(a.options.threads == 1 ? std::launch::deferred : std::launch::async,
-                 [&] { return acd::describeInput(a.model, mesh, a.options.threads); });
+      std::async(beside ? std::launch::async : std::launch::deferred, [&, beside] {
+        if (beside) giveWayToOtherThreads();
+        return acd::describeInput(a.model, mesh, a.options.threads);
+      });
   acd::Decomposition d = acd::decompose(mesh, a.options);
   if (showProgress) std::fprintf(stderr, "\r%60s\r", "");
   for (const auto& line : d.repairs) std::fprintf(stderr, "acd: %s: repaired: %s\n", a.model.c_str(), line.c_str());
