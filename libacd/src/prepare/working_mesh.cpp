@@ -64,6 +64,12 @@ class Collapser {
     homed_.resize(faces_.size());
     bound_.assign(n, 0.0);  // each input vertex starts as a corner of its face
     liveFaces_ = static_cast<int>(faces_.size());
+    {  // each vertex's list at its final size at once (grown by doubling, it was allocated 3 or 4 times)
+      std::vector<int> valence(n, 0);
+      for (const Face& t : faces_)
+        for (int v : t) ++valence[v];
+      for (std::size_t v = 0; v < n; ++v) vertexFaces_[v].reserve(valence[v]);
+    }
     for (std::size_t f = 0; f < faces_.size(); ++f) {
       const Face& t = faces_[f];
       const Vec3 normal = (pos_[t[1]] - pos_[t[0]]).cross(pos_[t[2]] - pos_[t[0]]);
