@@ -54,6 +54,7 @@ class Collapser {
   struct Lane;
 
  public:
+  /// `mesh` must outlive the collapser: its vertices and faces are read, not copied.
   Collapser(const TriMesh& mesh, double tolerance)
       : input_(mesh.vertices), inputFaces_(mesh.faces), pos_(mesh.vertices), faces_(mesh.faces), tolerance_(tolerance) {
     const std::size_t n = pos_.size();
@@ -425,8 +426,8 @@ class Collapser {
   /// Whether the collapse of `c` leaves face f where it is: around the end that stays, not on the edge.
   bool untouched(int f, const Candidate& c) const { return !contains(f, c.ontoB ? c.a : c.b); }
 
-  const std::vector<Vec3> input_;
-  const std::vector<Face> inputFaces_;
+  const std::vector<Vec3>& input_;  // the mesh given, which outlives the collapser (no copy)
+  const std::vector<Face>& inputFaces_;
   std::vector<int> inputFacesStart_, inputFacesOf_;  // each input vertex's input faces (CSR)
   std::vector<Vec3> inputFaceCentre_;     // each input face's centroid
   std::vector<double> inputFaceRadius_;   // and its farthest corner from it
