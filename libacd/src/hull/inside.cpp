@@ -6,6 +6,8 @@
 // are bucketed in an xy grid of about two cells per triangle.
 #include <acd/algo/inside.hpp>
 
+#include <acd/algo/float_bounds.hpp>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
@@ -82,7 +84,7 @@ class InsideTest::Impl {
             if (pass == 0)
               ++start_[c + 1];
             else
-              items_[fill[c]++] = Item{up(hi.z()), t};
+              items_[fill[c]++] = Item{floatAbove(hi.z()), t};
           }
       }
     }
@@ -127,10 +129,6 @@ class InsideTest::Impl {
     float maxz;
     int tri;
   };
-  static float up(double x) {
-    float f = static_cast<float>(x);
-    return f < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
-  }
   // Monotone in x, so a point inside a triangle's box always lands in one of the triangle's cells.
   int cellX(double x) const { return std::clamp(static_cast<int>(std::floor((x - lo_.x()) * sx_)), 0, nx_ - 1); }
   int cellY(double y) const { return std::clamp(static_cast<int>(std::floor((y - lo_.y()) * sy_)), 0, ny_ - 1); }

@@ -1,26 +1,13 @@
 #include <acd/algo/face_grid.hpp>
 
 #include <acd/algo/closest_point.hpp>
+#include <acd/algo/float_bounds.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace acd {
-
-namespace {
-
-/// x as a float no greater (down) or no less (up) than x; clamped first, as a double beyond float's
-/// range does not convert.
-float roundedOutward(double x, bool up) {
-  const double most = std::numeric_limits<float>::max();
-  const float f = static_cast<float>(std::clamp(x, -most, most));
-  if (up && f < x) return std::nextafter(f, std::numeric_limits<float>::infinity());
-  if (!up && f > x) return std::nextafter(f, -std::numeric_limits<float>::infinity());
-  return f;
-}
-
-}  // namespace
 
 FaceGrid::FaceGrid(std::vector<const TriMesh*> meshes) : meshes_(std::move(meshes)) {
   Box3 box;
@@ -40,8 +27,8 @@ FaceGrid::FaceGrid(std::vector<const TriMesh*> meshes) : meshes_(std::move(meshe
       FaceBox b;
       for (int k = 0; k < 3; ++k) {
         const double a = m->vertices[t[0]][k], c = m->vertices[t[1]][k], e = m->vertices[t[2]][k];
-        b.lo[k] = roundedOutward(std::min({a, c, e}), false);
-        b.hi[k] = roundedOutward(std::max({a, c, e}), true);
+        b.lo[k] = floatBelow(std::min({a, c, e}));
+        b.hi[k] = floatAbove(std::max({a, c, e}));
       }
       boxes_.push_back(b);
     }
@@ -63,7 +50,6 @@ FaceGrid::FaceGrid(std::vector<const TriMesh*> meshes) : meshes_(std::move(meshe
   std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
   forEachFaceCell([&](std::size_t c, int m, int f) { entries_[fill[c]++] = firstFace_[m] + f; });
 }
-
 
 FaceGrid::Nearest FaceGrid::nearest(const Vec3& p, double within) const {
   if (entries_.empty()) return {};

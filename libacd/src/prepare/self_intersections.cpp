@@ -3,6 +3,7 @@
 #include <acd/diagnosis.hpp>
 #include <acd/repair.hpp>
 
+#include <acd/algo/float_bounds.hpp>
 #include <acd/algo/surface_mesh_copy.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -31,14 +32,8 @@ FaceBox boxOf(const TriMesh& mesh, int f) {
   float lo[3], hi[3];
   const Face& t = mesh.faces[f];
   for (int i = 0; i < 3; ++i) {
-    const double a = std::min({mesh.vertices[t[0]][i], mesh.vertices[t[1]][i], mesh.vertices[t[2]][i]});
-    const double b = std::max({mesh.vertices[t[0]][i], mesh.vertices[t[1]][i], mesh.vertices[t[2]][i]});
-    // Clamped first: a double beyond float's range does not convert.
-    const double most = std::numeric_limits<float>::max();
-    lo[i] = static_cast<float>(std::clamp(a, -most, most));
-    hi[i] = static_cast<float>(std::clamp(b, -most, most));
-    if (lo[i] > a) lo[i] = std::nextafter(lo[i], -std::numeric_limits<float>::infinity());
-    if (hi[i] < b) hi[i] = std::nextafter(hi[i], std::numeric_limits<float>::infinity());
+    lo[i] = floatBelow(std::min({mesh.vertices[t[0]][i], mesh.vertices[t[1]][i], mesh.vertices[t[2]][i]}));
+    hi[i] = floatAbove(std::max({mesh.vertices[t[0]][i], mesh.vertices[t[1]][i], mesh.vertices[t[2]][i]}));
   }
   return FaceBox(lo, hi, f);
 }
