@@ -17,6 +17,7 @@
 #include <acd/robust.hpp>
 
 #include "clean_shell.hpp"
+#include "confirm_ahead.hpp"
 #include "held_to.hpp"
 #include "rounds.hpp"
 #include "working_model.hpp"
@@ -24,6 +25,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <cmath>
@@ -371,9 +373,9 @@ void confirmUnion(MergeCandidate& m, const Piece& a, const Piece& b, const Model
 /// candidate union not screened before, in parallel; then the screened ones are taken in order
 /// (Component: largest contact first; Model: least volume added outside the model first, ties by
 /// pair order), each confirmed when its turn comes, skipping pairs whose pieces changed in that
-/// round; rounds repeat until nothing merges. A union is confirmed together with the next few
-/// that may be taken after it, in parallel; which ones are confirmed early never changes a
-/// decision, so the result does not depend on the thread count.
+/// round; rounds repeat until nothing merges. The next few unions that may be taken are confirmed
+/// ahead, on the other threads, while the one whose turn it is waits (ConfirmAhead); which ones
+/// are confirmed early never changes a decision, so the result does not depend on the thread count.
 void mergePieces(std::vector<Piece>& finals, std::vector<Component>& finalInfo, const TriMesh& input,
                  ExcessAgainstInput* againstInput, std::vector<InputShare>* shares, const DecomposeOptions& o,
                  DecomposeStats& stats) {
@@ -417,24 +419,35 @@ void mergePieces(std::vector<Piece>& finals, std::vector<Component>& finalInfo, 
       if (unions[k]->screened) order.push_back(k);
     if (model)
       std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return unions[a]->cost < unions[b]->cost; });
-    std::vector<char> changed(finals.size(), 0);
-    auto open = [&](std::size_t k) { return !changed[id[pairs[k].a]] && !changed[id[pairs[k].b]]; };
-    const std::size_t batch = 2 * static_cast<std::size_t>(tbb::this_task_arena::max_concurrency());
-    for (std::size_t n = 0; n < order.size(); ++n) {
+    // Pieces are changed at the end of the round: until then, every confirmation reads them as
+    // they were screened, whichever thread makes it and when (ConfirmAhead).
+    std::vector<std::atomic<char>> changed(finals.size());
+    auto open = [&](std::size_t n) {
       const std::size_t k = order[n];
-      if (!open(k)) continue;
-      if (!unions[k]->confirmed) {
-        std::vector<std::size_t> next;
-        for (std::size_t m = n; m < order.size() && next.size() < batch; ++m)
-          if (open(order[m]) && !unions[order[m]]->confirmed) next.push_back(order[m]);
-        tbb::parallel_for(std::size_t(0), next.size(), [&](std::size_t t) {
-          const std::size_t q = next[t];
-          const int i = id[pairs[q].a], j = id[pairs[q].b];
-          confirmUnion(*unions[q], finals[i], finals[j], model, againstInput,
-                       shares ? &(*shares)[i].hull : nullptr, shares ? &(*shares)[j].hull : nullptr, o, co);
-        });
-      }
+      return !changed[id[pairs[k].a]].load(std::memory_order_relaxed) &&
+             !changed[id[pairs[k].b]].load(std::memory_order_relaxed);
+    };
+    auto confirm = [&](std::size_t n) {
+      const std::size_t k = order[n];
+      const int i = id[pairs[k].a], j = id[pairs[k].b];
+      confirmUnion(*unions[k], finals[i], finals[j], model, againstInput, shares ? &(*shares)[i].hull : nullptr,
+                   shares ? &(*shares)[j].hull : nullptr, o, co);
+    };
+    ConfirmAhead<decltype(confirm), decltype(open)> confirmations(
+        order.size(), 2 * static_cast<std::size_t>(tbb::this_task_arena::max_concurrency()), confirm, open,
+        [&](std::size_t n) { return unions[order[n]]->confirmed; });
+    std::vector<std::size_t> taken;
+    for (std::size_t n = 0; n < order.size(); ++n) {
+      if (!open(n)) continue;
+      confirmations.await(n);
+      const std::size_t k = order[n];
       if (!unions[k]->ok) continue;
+      taken.push_back(k);
+      changed[id[pairs[k].a]].store(1, std::memory_order_relaxed);
+      changed[id[pairs[k].b]].store(1, std::memory_order_relaxed);
+    }
+    confirmations.finish();
+    for (const std::size_t k : taken) {
       const int i = id[pairs[k].a], j = id[pairs[k].b];
       finals[i].mesh = std::move(unions[k]->glued);
       hulls[i] = std::move(unions[k]->hull);
@@ -449,7 +462,6 @@ void mergePieces(std::vector<Piece>& finals, std::vector<Component>& finalInfo, 
       finalInfo[i].depth = std::min(finalInfo[i].depth, finalInfo[j].depth);
       mergedInModel[i] = model != nullptr;
       alive[j] = 0;
-      changed[i] = changed[j] = 1;
       ++stats.merges;
       merged = true;
     }
