@@ -307,3 +307,39 @@ TEST(SelfIntersectionsAgainstCgal, TheFacesOfASubsetThatCrossAgree) {
     }
   }
 }
+
+// Two faces around one vertex in (nearly) one plane, as in a dense scan or a subdivided mesh: a
+// face's far corners close to the lines of the other's edges, on either side, or inside its
+// angle (they cross). The count against the definition, decided here with CGAL's exact
+// predicates on the edges away from the shared vertex (no double-precision shortcut).
+TEST(SelfIntersections, FacesAroundOneVertexInOnePlaneAgreeWithTheDefinition) {
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  auto point = [](const Vec3& p) { return K::Point_3(p.x(), p.y(), p.z()); };
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> angle(0.0, 2 * M_PI), unit(0.0, 1.0), sign(-1.0, 1.0);
+  int crossing = 0, apart = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const Vec3 v(sign(random), sign(random), sign(random));
+    const double lift = trial % 3 == 0 ? 0.0 : 1e-12 * sign(random);  // exactly flat, or nearly
+    auto at = [&](double theta, double length) -> Vec3 { return v + length * Vec3(std::cos(theta), std::sin(theta), lift); };
+    const double a0 = angle(random), spread = 0.2 + 2.5 * unit(random);
+    const Vec3 p = at(a0, 0.5 + unit(random)), q = at(a0 + spread, 0.5 + unit(random));
+    // b's corners: on the lines of a's edges, beyond v (a subdivided mesh's straight rows), or at
+    // random angles, some inside a's angle.
+    double b0 = a0 + M_PI, b1 = a0 + spread + M_PI;
+    if (trial % 4 == 1) b0 = angle(random), b1 = b0 + 0.2 + 2.5 * unit(random);
+    if (trial % 4 == 2) b0 = a0 + spread * unit(random), b1 = b0 + 0.3;
+    const Vec3 r = at(b0, 0.5 + unit(random)), s = at(b1, 0.5 + unit(random));
+    TriMesh m;
+    m.vertices = {v, p, q, r, s};
+    m.faces = {{0, 1, 2}, {0, 3, 4}};
+    const K::Triangle_3 ta(point(v), point(p), point(q)), tb(point(v), point(r), point(s));
+    if (ta.is_degenerate() || tb.is_degenerate()) continue;
+    const bool expected = CGAL::do_intersect(ta, K::Segment_3(point(r), point(s))) ||
+                          CGAL::do_intersect(tb, K::Segment_3(point(p), point(q)));
+    ASSERT_EQ(countSelfIntersections(m), expected ? 1 : 0) << trial;
+    (expected ? crossing : apart) += 1;
+  }
+  EXPECT_GT(crossing, 500);
+  EXPECT_GT(apart, 500);
+}

@@ -75,6 +75,25 @@ bool certainlyApart(const Vec3* t, const Vec3* points, int count) {
   return false;
 }
 
+/// Faces sharing one corner v, the other corners of `a` (aOthers) and of `b` (bOthers): whether a
+/// plane through v certainly has a's on one side and b's on the other. Then the two meet at v
+/// only (each lies on its side, touching the plane at v alone). The plane's normal points from b's
+/// middle towards a's, as seen from v: in a fan of faces in one plane (a dense scan's, or a
+/// subdivided mesh's, where a face's neighbours across v lie almost on its edges' lines and the
+/// edge planes of certainlyApart are no certain test), this separates every pair not side by side.
+bool certainlyMeetAtCornerOnly(const Vec3& v, const Vec3* aOthers, const Vec3* bOthers) {
+  const Vec3 towardA = aOthers[0] + aOthers[1] - 2 * v, towardB = bOthers[0] + bOthers[1] - 2 * v;
+  const double lengthA = towardA.norm(), lengthB = towardB.norm();
+  if (!(lengthA > 0) || !(lengthB > 0)) return false;
+  const Vec3 n = towardA / lengthA - towardB / lengthB;
+  const double nn = n.norm();
+  for (int k = 0; k < 2; ++k) {
+    const Vec3 da = aOthers[k] - v, db = bOthers[k] - v;
+    if (!certainlyBelow(-da.dot(n), da.norm() * nn) || !certainlyBelow(db.dot(n), db.norm() * nn)) return false;
+  }
+  return true;
+}
+
 /// Whether faces f and g cross other than along the edge or at the vertex they share (CGAL's
 /// rule): faces on one edge cross where they fold onto each other (coplanar, the third corners on
 /// one side of it); faces on one vertex where an edge of either, away from it, meets the other.
@@ -108,6 +127,7 @@ bool facesCross(const TriMesh& mesh, int f, int g) {
   if (shared == 1) {
     const int i = sharedA[0], j = sharedB[0];
     const Vec3 farA[2] = {pa[(i + 1) % 3], pa[(i + 2) % 3]}, farB[2] = {pb[(j + 1) % 3], pb[(j + 2) % 3]};
+    if (certainlyMeetAtCornerOnly(pa[i], farA, farB)) return false;
     const K::Segment_3 awayA(point(a[(i + 1) % 3]), point(a[(i + 2) % 3]));
     const K::Segment_3 awayB(point(b[(j + 1) % 3]), point(b[(j + 2) % 3]));
     return (!certainlyApart(pa, farB, 2) && CGAL::do_intersect(ta, awayB)) ||
