@@ -11,6 +11,7 @@
 #include <atomic>
 #include <chrono>
 #include <memory>
+#include <stdexcept>
 #include <thread>
 #include <vector>
 
@@ -98,5 +99,31 @@ TEST(ConfirmAhead, FinishingEarlyLeavesNothingRunning) {
     // At most the window beyond what was awaited; on one thread, nothing queued is begun after.
     EXPECT_GE(begun.load(), 2);
     EXPECT_LE(begun.load(), threads == 1 ? 2 : 2 + 4 + 1);
+  }
+}
+
+TEST(ConfirmAhead, AConfirmationThatThrowsReachesTheCallerAndNothingHangs) {
+  // Whichever thread runs the throwing position, the caller does not wait for it forever: the
+  // exception comes out of await (the caller ran it) or out of finish (another thread did).
+  for (int threads : {1, 2}) {
+    for (int round = 0; round < 20; ++round) {
+      auto confirm = [](std::size_t n) {
+        std::this_thread::sleep_for(std::chrono::microseconds(100));
+        if (n == 3) throw std::runtime_error("no memory left");
+      };
+      auto wanted = [](std::size_t) { return true; };
+      tbb::task_arena arena(threads);
+      bool thrown = false;
+      arena.execute([&] {
+        acd::ConfirmAhead<decltype(confirm), decltype(wanted)> ahead(10, 4, confirm, wanted, [](std::size_t) { return false; });
+        try {
+          for (std::size_t n = 0; n < 10; ++n) ahead.await(n);
+          ahead.finish();
+        } catch (const std::runtime_error&) {
+          thrown = true;
+        }
+      });
+      EXPECT_TRUE(thrown) << threads << " threads";
+    }
   }
 }

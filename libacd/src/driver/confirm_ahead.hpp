@@ -58,9 +58,14 @@ class ConfirmAhead {
     int waiting = kWaiting;
     return state_[n].compare_exchange_strong(waiting, kRunning, std::memory_order_acq_rel);
   }
+  /// Done even when confirm throws (the exception reaches the caller through finish(), or at
+  /// once when the caller ran it): no one waits for a position forever.
   void run(std::size_t n) {
+    struct MarkDone {
+      std::atomic<int>& state;
+      ~MarkDone() { state.store(kDone, std::memory_order_release); }
+    } markDone{state_[n]};
     confirm_(n);
-    state_[n].store(kDone, std::memory_order_release);
   }
   /// Queues positions after n until `window` wanted ones after n are queued and not done.
   void queueAhead(std::size_t n) {
