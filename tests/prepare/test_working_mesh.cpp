@@ -104,6 +104,23 @@ TEST(WorkingMesh, FlatFacesCollapseToTheirCorners) {
   EXPECT_NEAR(acd::signedVolume(w.mesh), 1.0, 1e-9);
 }
 
+// Each collapse is made only if every new face's centroid stays within the tolerance of the input
+// (its corners are input vertices): what the result must show face by face, measured here on a
+// midpoint-subdivided torus, whose many faces are much smaller than the tolerance (the shortcut
+// near an input vertex) and whose coarse faces are not.
+TEST(WorkingMesh, EveryFaceCentroidStaysWithinTheToleranceOfTheInput) {
+  const TriMesh torus = midpointSubdivided(acd::shapes::torus(1.0, 0.3, 160, 48));  // 61440 faces
+  const double tolerance = 0.004;
+  const acd::WorkingMesh w = acd::simplifyWithin(torus, tolerance);
+  ASSERT_LT(w.mesh.faces.size(), torus.faces.size() / 10);
+  std::vector<Vec3> centroids;
+  for (const acd::Face& t : w.mesh.faces)
+    centroids.push_back((w.mesh.vertices[t[0]] + w.mesh.vertices[t[1]] + w.mesh.vertices[t[2]]) / 3.0);
+  EXPECT_LE(farthest(centroids, torus), tolerance * (1 + 1e-9));
+  EXPECT_LE(farthest(torus.vertices, w.mesh), tolerance);
+  EXPECT_EQ(eulerCharacteristic(w.mesh), 0);
+}
+
 TEST(WorkingMesh, NothingBelowTheToleranceLeavesTheMeshAlone) {
   const TriMesh sphere = acd::shapes::icosphere(Vec3::Zero(), 1.0, 3);
   const acd::WorkingMesh w = acd::simplifyWithin(sphere, 1e-9);

@@ -330,6 +330,11 @@ class Collapser {
     // vertices it now stands for.
     auto nearInput = [&](const Vec3& q, int g) {
       auto within = [&](int x) {
+        // q within the tolerance (less a margin for rounding) of input vertex x is within it of
+        // every input face around x: the search below would say so at its first face.
+        if (inputFacesStart_[x] < inputFacesStart_[x + 1] &&
+            (q - input_[x]).squaredNorm() <= tolerance_ * tolerance_ * (1 - 1e-9))
+          return true;
         for (int k = inputFacesStart_[x]; k < inputFacesStart_[x + 1]; ++k) {
           const int face = inputFacesOf_[k];
           // Beyond the face's bounding sphere by more than the tolerance (and rounding): the exact
