@@ -24,13 +24,7 @@ FaceGrid::FaceGrid(std::vector<const TriMesh*> meshes) : meshes_(std::move(meshe
   firstFace_.push_back(0);
   for (const TriMesh* m : meshes_) {
     for (const Face& t : m->faces) {
-      FaceBox b;
-      for (int k = 0; k < 3; ++k) {
-        const double a = m->vertices[t[0]][k], c = m->vertices[t[1]][k], e = m->vertices[t[2]][k];
-        b.lo[k] = floatBelow(std::min({a, c, e}));
-        b.hi[k] = floatAbove(std::max({a, c, e}));
-      }
-      boxes_.push_back(b);
+      boxes_.push_back(floatBoxOf(m->vertices[t[0]], m->vertices[t[1]], m->vertices[t[2]]));
     }
     firstFace_.push_back(static_cast<int>(boxes_.size()));
   }
@@ -84,7 +78,7 @@ FaceGrid::Nearest FaceGrid::nearest(const Vec3& p, double within) const {
             // A face whose box lies farther than the best found cannot be nearer, nor tie: skip the
             // exact distance (most faces of a cell are such). The float box holds the face's, so
             // its distance is no greater: it skips no face the exact box would keep.
-            const FaceBox& fb = boxes_[number];
+            const FloatBox& fb = boxes_[number];
             double box = 0.0;
             for (int x = 0; x < 3; ++x) {
               const double gap = std::max({fb.lo[x] - p[x], p[x] - fb.hi[x], 0.0});

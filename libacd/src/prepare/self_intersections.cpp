@@ -30,13 +30,8 @@ using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using FaceBox = CGAL::Box_intersection_d::Box_with_info_d<float, 3, int, CGAL::Box_intersection_d::ID_FROM_BOX_ADDRESS>;
 
 FloatBox floatBoxOf(const TriMesh& mesh, int f) {
-  FloatBox b;
   const Face& t = mesh.faces[f];
-  for (int i = 0; i < 3; ++i) {
-    b.lo[i] = floatBelow(std::min({mesh.vertices[t[0]][i], mesh.vertices[t[1]][i], mesh.vertices[t[2]][i]}));
-    b.hi[i] = floatAbove(std::max({mesh.vertices[t[0]][i], mesh.vertices[t[1]][i], mesh.vertices[t[2]][i]}));
-  }
-  return b;
+  return acd::floatBoxOf(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
 }
 
 FaceBox boxOf(const TriMesh& mesh, int f) {

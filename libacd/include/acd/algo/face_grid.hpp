@@ -2,6 +2,7 @@
 // the cells around the point, not the whole surface, and the grid costs a few bytes per face.
 #pragma once
 
+#include <acd/algo/float_bounds.hpp>
 #include <acd/mesh.hpp>
 
 #include <array>
@@ -36,18 +37,15 @@ class FaceGrid {
   template <class Visit>
   void forEachFaceCell(const Visit& visit) const;
 
-  /// A face's box in floats, rounded outward (it still holds the face): the test that skips most
-  /// faces of a cell reads 24 bytes in a row instead of three vertices elsewhere.
-  struct FaceBox {
-    std::array<float, 3> lo, hi;
-  };
 
   std::vector<const TriMesh*> meshes_;
   double cell_ = 1.0;
   Vec3 lo_ = Vec3::Zero();
   std::array<int, 3> dims_{};
   std::vector<int> firstFace_;        // by mesh, its first face's number among all (and the count)
-  std::vector<FaceBox> boxes_;        // by face number
+  // by face number, in floats rounded outward (it still holds the face): the test that skips most
+  // faces of a cell reads 24 bytes in a row instead of three vertices elsewhere
+  std::vector<FloatBox> boxes_;
   std::vector<std::size_t> start_;    // by cell, into entries_
   std::vector<int> entries_;          // face numbers by cell
 };

@@ -2,6 +2,8 @@
 // most of them about one size, where a search over all pairs or a general tree does more work.
 #pragma once
 
+#include <acd/algo/float_bounds.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -11,11 +13,6 @@
 #include <vector>
 
 namespace acd {
-
-/// An axis-aligned box in floats (rounded outward by whoever makes it).
-struct FloatBox {
-  std::array<float, 3> lo, hi;
-};
 
 /// Whether two closed boxes meet (touching counts).
 inline bool boxesMeet(const FloatBox& a, const FloatBox& b) {
