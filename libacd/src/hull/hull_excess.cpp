@@ -423,18 +423,20 @@ struct HalfSpaces {
       nx.push_back(p[0]), ny.push_back(p[1]), nz.push_back(p[2]), offsets.push_back(p[3] + 1e-12);
     }
   }
-  /// Within 1e-12 of every face's plane. Planes are taken in blocks without branches, which the
-  /// compiler turns into vector instructions: a point inside must be tested against all of them.
-  bool contains(const Vec3& q) const {
-    if ((q.array() < box.lo.array() - 1e-9).any() || (q.array() > box.hi.array() + 1e-9).any()) return false;
-    constexpr std::size_t kBlock = 16;
-    for (std::size_t start = 0; start < offsets.size(); start += kBlock) {
-      const std::size_t end = std::min(offsets.size(), start + kBlock);
-      int outside = 0;
-      for (std::size_t i = start; i < end; ++i) outside |= nx[i] * q.x() + ny[i] * q.y() + nz[i] * q.z() > offsets[i];
-      if (outside) return false;
-    }
-    return true;
+  /// Within the box (1e-9, less `margin`), for the point tests' one box test.
+  bool inBox(const Vec3& q, double margin = 0.0) const {
+    const double slack = 1e-9 - margin;
+    return !(q.array() < box.lo.array() - slack).any() && !(q.array() > box.hi.array() + slack).any();
+  }
+  /// Within 1e-12 of plane i (less `margin`).
+  bool below(std::size_t i, const Vec3& q, double margin = 0.0) const {
+    return nx[i] * q.x() + ny[i] * q.y() + nz[i] * q.z() <= offsets[i] - margin;
+  }
+  /// below(i, q, margin) for every plane i, into out.
+  void belowAll(const Vec3& q, double margin, char* out) const {
+    const double *x = nx.data(), *y = ny.data(), *z = nz.data(), *d = offsets.data();
+    const double qx = q.x(), qy = q.y(), qz = q.z();
+    for (std::size_t i = 0, n = offsets.size(); i < n; ++i) out[i] = x[i] * qx + y[i] * qy + z[i] * qz <= d[i] - margin;
   }
   Box3 box;
   std::vector<double> nx, ny, nz, offsets;
@@ -459,6 +461,60 @@ double ModelExcess::addedVolume(const TriMesh& hull, const std::vector<const Tri
   if (total <= 0.0) return 0.0;
   std::vector<HalfSpaces> others;
   for (const TriMesh* h : covered) others.emplace_back(*h);
+  // A sample lies in one tetrahedron of the fan, inside the convex hull of its four corners: a
+  // plane (or the box) of a covering hull that all four corners keep to, it keeps to as well.
+  // So a sample is tested only against the planes its corners leave (few: most corners are the
+  // covering hulls' own), and a tetrahedron whose corners leave none is hidden untested. The
+  // corners are held to a margin above the rounding of a sample's coordinates and of its plane
+  // tests, so each test skipped is one the sample would pass: the count is the one testing
+  // every plane gives.
+  const Box3 hullBox = boundingBox(hull);
+  const double margin = 1e-13 * std::max({1.0, hullBox.lo.cwiseAbs().maxCoeff(), hullBox.hi.cwiseAbs().maxCoeff()});
+  const std::size_t corners = hull.vertices.size() + 1;  // the hull's vertices, then the apex
+  const auto cornerAt = [&](std::size_t c) -> const Vec3& { return c < hull.vertices.size() ? hull.vertices[c] : apex; };
+  struct Left {                      // for one covering hull
+    std::vector<std::uint32_t> first;  // per corner, into planes (corners + 1)
+    std::vector<std::uint32_t> planes; // the planes each corner leaves
+    std::vector<char> box;             // per corner: leaves the box
+  };
+  std::vector<Left> left(others.size());
+  std::vector<char> below;
+  for (std::size_t k = 0; k < others.size(); ++k) {
+    const HalfSpaces& h = others[k];
+    Left& l = left[k];
+    const std::size_t planes = h.offsets.size();
+    below.resize(planes);
+    l.first.assign(1, 0);
+    l.box.resize(corners);
+    for (std::size_t c = 0; c < corners; ++c) {
+      const Vec3& p = cornerAt(c);
+      l.box[c] = !h.inBox(p, margin);
+      h.belowAll(p, margin, below.data());
+      for (std::size_t i = 0; i < planes; ++i)
+        if (!below[i]) l.planes.push_back(static_cast<std::uint32_t>(i));
+      l.first.push_back(static_cast<std::uint32_t>(l.planes.size()));
+    }
+  }
+  const std::size_t apexCorner = corners - 1;
+  const auto hiddenBy = [&](std::size_t k, const Face& f, const Vec3& q) {
+    const HalfSpaces& h = others[k];
+    const Left& l = left[k];
+    if ((l.box[f[0]] || l.box[f[1]] || l.box[f[2]] || l.box[apexCorner]) && !h.inBox(q)) return false;
+    for (const std::size_t c : {apexCorner, std::size_t(f[0]), std::size_t(f[1]), std::size_t(f[2])})
+      for (std::uint32_t i = l.first[c]; i < l.first[c + 1]; ++i)
+        if (!h.below(l.planes[i], q)) return false;
+    return true;
+  };
+  std::vector<char> hiddenTet(hull.faces.size(), 0);
+  for (std::size_t t = 0; t < hull.faces.size(); ++t) {
+    const Face& f = hull.faces[t];
+    for (const Left& l : left) {
+      bool keeps = true;
+      for (const std::size_t c : {apexCorner, std::size_t(f[0]), std::size_t(f[1]), std::size_t(f[2])})
+        keeps = keeps && !l.box[c] && l.first[c + 1] == l.first[c];
+      if (keeps) hiddenTet[t] = 1;
+    }
+  }
   int outside = 0;
   // The samples outside that prove the volume above stopAbove whatever the rest give.
   const double enough = std::floor(stopAbove / total * samples) + 1;
@@ -467,6 +523,7 @@ double ModelExcess::addedVolume(const TriMesh& hull, const std::vector<const Tri
     const double pick = unitInterval(mix64(base + 1)) * total;
     const std::size_t t = std::min<std::size_t>(std::upper_bound(cumulative.begin(), cumulative.end(), pick) -
                                                     cumulative.begin(), cumulative.size() - 1);
+    if (hiddenTet[t]) continue;
     // Uniform in a tetrahedron: three uniforms folded into the simplex s + t + u <= 1.
     double s = unitInterval(mix64(base + 2)), r = unitInterval(mix64(base + 3)), u = unitInterval(mix64(base + 4));
     if (s + r > 1.0) s = 1.0 - s, r = 1.0 - r;
@@ -483,11 +540,7 @@ double ModelExcess::addedVolume(const TriMesh& hull, const std::vector<const Tri
     const Vec3 q = apex + s * (hull.vertices[f[0]] - apex) + r * (hull.vertices[f[1]] - apex) +
                    u * (hull.vertices[f[2]] - apex);
     bool hidden = false;
-    for (const HalfSpaces& h : others)
-      if (h.contains(q)) {
-        hidden = true;
-        break;
-      }
+    for (std::size_t k = 0; k < others.size() && !hidden; ++k) hidden = hiddenBy(k, f, q);
     if (!hidden && !impl_->inside(q)) ++outside;
   }
   return total * outside / samples;
