@@ -86,6 +86,7 @@ TEST(SurfaceGraph, AdjacencyIsTheFacesOwn) {
       for (int s = g.begin(v); s < g.end(v); ++s) {
         const int w = g.neighbour(s);
         ASSERT_TRUE(e.count({v, w})) << v << " -> " << w << " is no edge";
+        if (s > g.begin(v)) EXPECT_LT(g.neighbour(s - 1), w) << "neighbours of " << v << " sorted, once each";
         EXPECT_DOUBLE_EQ(g.length(s), e.at({v, w}));
         seen.insert({v, w});
       }
@@ -102,6 +103,13 @@ TEST(SurfaceGraph, AdjacencyIsTheFacesOwn) {
         EXPECT_EQ(g.faceLeftOf(b, a), across);
       }
   }
+  // A directed edge two faces repeat (a non-manifold input): the later face is left of it.
+  TriMesh twice;
+  twice.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0)};
+  twice.faces = {{0, 1, 2}, {0, 1, 3}};
+  const SurfaceGraph repeated(twice);
+  EXPECT_EQ(repeated.faceLeftOf(0, 1), 1);
+  EXPECT_EQ(repeated.end(0) - repeated.begin(0), 3);  // 1, 2 and 3, each once
   // The grid's border edges have no face across, the torus's none without.
   const TriMesh open = grid(3);
   const SurfaceGraph g(open);

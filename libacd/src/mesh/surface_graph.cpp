@@ -9,28 +9,35 @@ namespace acd {
 SurfaceGraph::SurfaceGraph(const TriMesh& mesh) : mesh_(&mesh) {
   const int nv = static_cast<int>(mesh.vertices.size());
   const int nf = static_cast<int>(mesh.faces.size());
-  std::vector<std::pair<int, int>> directed;
-  directed.reserve(3 * nf * 2);
-  for (int f = 0; f < nf; ++f)
+  // Each vertex's neighbours, sorted and once each: the edges bucketed by vertex (a counting
+  // sort), then each vertex's few sorted on their own. The same lists as sorting every directed
+  // edge as a pair, in time linear in the faces.
+  std::vector<int> offset(nv + 1, 0);
+  for (const Face& f : mesh.faces)
+    for (int k = 0; k < 3; ++k) ++offset[f[k] + 1], ++offset[f[(k + 1) % 3] + 1];
+  for (int v = 0; v < nv; ++v) offset[v + 1] += offset[v];
+  std::vector<int> ends(offset.begin(), offset.end() - 1), all(offset[nv]);
+  for (const Face& f : mesh.faces)
     for (int k = 0; k < 3; ++k) {
-      const int a = mesh.faces[f][k], b = mesh.faces[f][(k + 1) % 3];
-      directed.emplace_back(a, b);
-      directed.emplace_back(b, a);
+      const int a = f[k], b = f[(k + 1) % 3];
+      all[ends[a]++] = b;
+      all[ends[b]++] = a;
     }
-  std::sort(directed.begin(), directed.end());
-  directed.erase(std::unique(directed.begin(), directed.end()), directed.end());
   start_.assign(nv + 1, 0);
-  for (const auto& [a, b] : directed) ++start_[a + 1];
-  for (int v = 0; v < nv; ++v) start_[v + 1] += start_[v];
-  neighbour_.resize(directed.size());
-  length_.resize(directed.size());
-  for (std::size_t i = 0; i < directed.size(); ++i) {
-    neighbour_[i] = directed[i].second;
-    length_[i] = (mesh.vertices[directed[i].first] - mesh.vertices[directed[i].second]).norm();
+  neighbour_.reserve(all.size() / 2);
+  for (int v = 0; v < nv; ++v) {
+    const auto first = all.begin() + offset[v], last = all.begin() + offset[v + 1];
+    std::sort(first, last);
+    neighbour_.insert(neighbour_.end(), first, std::unique(first, last));
+    start_[v + 1] = static_cast<int>(neighbour_.size());
   }
+  length_.resize(neighbour_.size());
+  for (int v = 0; v < nv; ++v)
+    for (int slot = start_[v]; slot < start_[v + 1]; ++slot)
+      length_[slot] = (mesh.vertices[v] - mesh.vertices[neighbour_[slot]]).norm();
   // Neighbour lists are sorted, so a directed edge's slot is found by bisection. On a repeated
   // directed edge (a non-manifold input) the later face is kept.
-  leftFace_.assign(directed.size(), -1);
+  leftFace_.assign(neighbour_.size(), -1);
   for (int f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k) {
       const int a = mesh.faces[f][k], b = mesh.faces[f][(k + 1) % 3];
