@@ -432,12 +432,6 @@ struct HalfSpaces {
   bool below(std::size_t i, const Vec3& q, double margin = 0.0) const {
     return nx[i] * q.x() + ny[i] * q.y() + nz[i] * q.z() <= offsets[i] - margin;
   }
-  /// below(i, q, margin) for every plane i, into out.
-  void belowAll(const Vec3& q, double margin, char* out) const {
-    const double *x = nx.data(), *y = ny.data(), *z = nz.data(), *d = offsets.data();
-    const double qx = q.x(), qy = q.y(), qz = q.z();
-    for (std::size_t i = 0, n = offsets.size(); i < n; ++i) out[i] = x[i] * qx + y[i] * qy + z[i] * qz <= d[i] - margin;
-  }
   Box3 box;
   std::vector<double> nx, ny, nz, offsets;
 };
@@ -478,20 +472,16 @@ double ModelExcess::addedVolume(const TriMesh& hull, const std::vector<const Tri
     std::vector<char> box;             // per corner: leaves the box
   };
   std::vector<Left> left(others.size());
-  std::vector<char> below;
   for (std::size_t k = 0; k < others.size(); ++k) {
     const HalfSpaces& h = others[k];
     Left& l = left[k];
-    const std::size_t planes = h.offsets.size();
-    below.resize(planes);
     l.first.assign(1, 0);
     l.box.resize(corners);
     for (std::size_t c = 0; c < corners; ++c) {
       const Vec3& p = cornerAt(c);
       l.box[c] = !h.inBox(p, margin);
-      h.belowAll(p, margin, below.data());
-      for (std::size_t i = 0; i < planes; ++i)
-        if (!below[i]) l.planes.push_back(static_cast<std::uint32_t>(i));
+      for (std::size_t i = 0; i < h.offsets.size(); ++i)
+        if (!h.below(i, p, margin)) l.planes.push_back(static_cast<std::uint32_t>(i));
       l.first.push_back(static_cast<std::uint32_t>(l.planes.size()));
     }
   }
