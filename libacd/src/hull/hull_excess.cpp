@@ -485,25 +485,25 @@ double ModelExcess::addedVolume(const TriMesh& hull, const std::vector<const Tri
       l.first.push_back(static_cast<std::uint32_t>(l.planes.size()));
     }
   }
-  const std::size_t apexCorner = corners - 1;
+  const auto tetCorners = [&](const Face& f) {
+    return std::array<std::size_t, 4>{corners - 1, std::size_t(f[0]), std::size_t(f[1]), std::size_t(f[2])};
+  };
   const auto hiddenBy = [&](std::size_t k, const Face& f, const Vec3& q) {
     const HalfSpaces& h = others[k];
     const Left& l = left[k];
-    if ((l.box[f[0]] || l.box[f[1]] || l.box[f[2]] || l.box[apexCorner]) && !h.inBox(q)) return false;
-    for (const std::size_t c : {apexCorner, std::size_t(f[0]), std::size_t(f[1]), std::size_t(f[2])})
+    const auto tet = tetCorners(f);
+    if (std::any_of(tet.begin(), tet.end(), [&](std::size_t c) { return l.box[c]; }) && !h.inBox(q)) return false;
+    for (const std::size_t c : tet)
       for (std::uint32_t i = l.first[c]; i < l.first[c + 1]; ++i)
         if (!h.below(l.planes[i], q)) return false;
     return true;
   };
   std::vector<char> hiddenTet(hull.faces.size(), 0);
   for (std::size_t t = 0; t < hull.faces.size(); ++t) {
-    const Face& f = hull.faces[t];
-    for (const Left& l : left) {
-      bool keeps = true;
-      for (const std::size_t c : {apexCorner, std::size_t(f[0]), std::size_t(f[1]), std::size_t(f[2])})
-        keeps = keeps && !l.box[c] && l.first[c + 1] == l.first[c];
-      if (keeps) hiddenTet[t] = 1;
-    }
+    const auto tet = tetCorners(hull.faces[t]);
+    for (const Left& l : left)
+      if (std::none_of(tet.begin(), tet.end(), [&](std::size_t c) { return l.box[c] || l.first[c + 1] > l.first[c]; }))
+        hiddenTet[t] = 1;
   }
   int outside = 0;
   // The samples outside that prove the volume above stopAbove whatever the rest give.
