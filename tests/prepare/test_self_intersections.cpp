@@ -27,6 +27,7 @@
 #include <map>
 #include <optional>
 #include <random>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -135,6 +136,56 @@ TEST(SelfIntersections, CorpusMeshesThatPassThroughThemselvesAreFound) {
   for (const Face& f : other.faces) two.faces.push_back({f[0] + 8, f[1] + 8, f[2] + 8});
   two.vertices.insert(two.vertices.end(), other.vertices.begin(), other.vertices.end());
   EXPECT_GT(countSelfIntersections(two), 0);
+}
+
+// facesCrossingOthers against CGAL's own pairs: of some faces of the cow (which passes through
+// itself, so some of them cross), exactly those that CGAL pairs with another face. The faces
+// asked about are the crossing ones and their neighbours: the box around them is a small part of
+// the model, and the faces outside it must not be needed.
+TEST(SelfIntersections, FacesCrossingOthersAreTheOnesCgalPairs) {
+  const std::string path = acdtest::corpus("cow");
+  if (!std::ifstream(path)) GTEST_SKIP() << path << " not present (scripts/fetch_corpus.sh)";
+  const ReadResult r = readMesh(path);
+  ASSERT_TRUE(r.status.ok());
+  const auto pairs = cgalPairs(r.mesh);
+  ASSERT_TRUE(pairs && !pairs->empty());
+  std::set<int> crossing;
+  for (const auto& [a, b] : *pairs) crossing.insert(a), crossing.insert(b);
+  // The first crossing face, a face on the far side of the model, and every face sharing a
+  // vertex with either.
+  const int first = *crossing.begin();
+  int far = 0;
+  for (int f = 0; f < static_cast<int>(r.mesh.faces.size()); ++f)
+    if ((r.mesh.vertices[r.mesh.faces[f][0]] - r.mesh.vertices[r.mesh.faces[first][0]]).norm() >
+        (r.mesh.vertices[r.mesh.faces[far][0]] - r.mesh.vertices[r.mesh.faces[first][0]]).norm())
+      far = f;
+  std::set<int> corners;
+  for (int v : r.mesh.faces[first]) corners.insert(v);
+  for (int v : r.mesh.faces[far]) corners.insert(v);
+  std::vector<int> among;
+  for (int f = 0; f < static_cast<int>(r.mesh.faces.size()); ++f)
+    for (int v : r.mesh.faces[f])
+      if (corners.count(v)) {
+        among.push_back(f);
+        break;
+      }
+  std::vector<int> expected;
+  for (int f : among)
+    if (crossing.count(f)) expected.push_back(f);
+  ASSERT_FALSE(expected.empty());
+  EXPECT_LT(expected.size(), among.size());
+  EXPECT_EQ(facesCrossingOthers(r.mesh, among), expected);
+  // Two boxes overlapping, asked about the second's faces: those CGAL pairs.
+  const TriMesh two = concatenate({shapes::box(Vec3(0, 0, 0), Vec3(2, 2, 2)), shapes::box(Vec3(1, 1, 1), Vec3(3, 3, 3))});
+  std::vector<int> second;
+  for (int f = 12; f < 24; ++f) second.push_back(f);
+  std::set<int> boxCrossing;
+  for (const auto& [a, b] : *cgalPairs(two)) boxCrossing.insert(a), boxCrossing.insert(b);
+  std::vector<int> boxExpected;
+  for (int f : second)
+    if (boxCrossing.count(f)) boxExpected.push_back(f);
+  ASSERT_FALSE(boxExpected.empty());
+  EXPECT_EQ(facesCrossingOthers(two, second), boxExpected);
 }
 
 // removeSelfIntersections on a lens (a sphere flattened to a third) with one vertex of its top

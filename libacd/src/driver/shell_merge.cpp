@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <map>
+#include <memory>
 #include <utility>
 
 namespace acd {
@@ -42,7 +43,9 @@ int mergeAcrossShells(std::vector<Component>& components, const TriMesh& shells,
   // sampled volumes, and so the order of merges, do not depend on the input's pose.
   const Normalization frame = o.invariant ? canonicalFrame({shells}) : normalization;
   auto toFrame = [&](const TriMesh& m) { return o.invariant ? canonicalMesh(m, frame).mesh : applyNormalization(m, frame); };
-  const ModelExcess model(applyNormalization(shells, frame), ModelSolid::AnyClosedShell);
+  std::unique_ptr<const ModelExcess> built;  // on the decomposition's threads
+  workerArena(o.threads).execute([&] { built = std::make_unique<const ModelExcess>(applyNormalization(shells, frame), ModelSolid::AnyClosedShell); });
+  const ModelExcess& model = *built;
   std::vector<TriMesh> hulls(n);  // in the frame
   std::vector<Box3> boxes(n);
   for (int i = 0; i < n; ++i) {

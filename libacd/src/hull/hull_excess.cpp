@@ -7,6 +7,8 @@
 #include <acd/algo/random.hpp>
 #include <acd/algo/shell_inside.hpp>
 
+#include <tbb/parallel_invoke.h>
+
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
@@ -252,11 +254,17 @@ HullExcess measureHullExcess(const TriMesh& mesh, const TriMesh& hull, double li
 
 struct ModelExcess::Impl {
   Impl(const TriMesh& model, ModelSolid solid) : triangles(trianglesOf(model)) {
-    if (solid == ModelSolid::Whole) whole = std::make_unique<InsideTest>(model);
-    else shells = std::make_unique<ShellsInside>(model);
-    tree.insert(triangles.begin(), triangles.end());
-    tree.build();
-    tree.accelerate_distance_queries();
+    // The inside test and the distance tree share nothing: built side by side.
+    tbb::parallel_invoke(
+        [&] {
+          if (solid == ModelSolid::Whole) whole = std::make_unique<InsideTest>(model);
+          else shells = std::make_unique<ShellsInside>(model);
+        },
+        [&] {
+          tree.insert(triangles.begin(), triangles.end());
+          tree.build();
+          tree.accelerate_distance_queries();
+        });
   }
   bool insideClosed(const Vec3& q) const { return whole ? whole->inside(q) : shells->insideClosed(q); }
   bool insideOpen(const Vec3& q) const { return shells && shells->insideOpen(q); }

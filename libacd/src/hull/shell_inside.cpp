@@ -14,17 +14,22 @@ namespace acd {
 
 namespace {
 
+/// By edge number, how often the faces use the edge from its lower vertex to its higher less how
+/// often the other way (sides along no edge, a face's repeated vertex, count nowhere).
+std::vector<int> netUses(const std::vector<Face>& faces, const SideEdges& numbered) {
+  std::vector<int> net(numbered.edges, 0);
+  for (std::size_t s = 0; s < numbered.edgeOfSide.size(); ++s) {
+    const int e = numbered.edgeOfSide[s];
+    if (e >= 0) net[e] += faces[s / 3][s % 3] < faces[s / 3][(s % 3 + 1) % 3] ? 1 : -1;
+  }
+  return net;
+}
+
 /// Every undirected edge used as often a->b as b->a: a closed 2-cycle, whose winding number is
 /// defined everywhere off the surface.
 bool balanced(const TriMesh& shell) {
-  std::unordered_map<std::uint64_t, int> sum;
-  for (const Face& f : shell.faces)
-    for (int k = 0; k < 3; ++k) {
-      const int a = f[k], b = f[(k + 1) % 3];
-      if (a == b) continue;
-      sum[edgeKey(a, b)] += a < b ? 1 : -1;
-    }
-  return std::all_of(sum.begin(), sum.end(), [](const auto& e) { return e.second == 0; });
+  const std::vector<int> net = netUses(shell.faces, numberEdges(shell.faces));
+  return std::all_of(net.begin(), net.end(), [](int n) { return n == 0; });
 }
 
 /// A closed manifold shell with some faces flipped, oriented by a walk over its edges (each edge
@@ -136,18 +141,19 @@ constexpr std::size_t kWindingRimEdges = 50000;
 /// and the shell's own is that less the cone's (Jacobson et al. 2013, closing the shell up): the cost of a query
 /// follows the rim, not the shell.
 std::vector<std::array<Vec3, 3>> closingCone(const TriMesh& shell) {
-  std::unordered_map<std::uint64_t, int> net;  // uses lo->hi less uses hi->lo
-  for (const Face& f : shell.faces)
-    for (int k = 0; k < 3; ++k) {
-      const int a = f[k], b = f[(k + 1) % 3];
-      net[edgeKey(a, b)] += a < b ? 1 : -1;
-    }
+  const SideEdges numbered = numberEdges(shell.faces);
+  const std::vector<int> net = netUses(shell.faces, numbered);
   std::vector<std::pair<int, int>> rim;  // directed, with repeats
-  for (const auto& [key, n] : net) {
-    const int lo = static_cast<int>(key >> 32), hi = static_cast<int>(key & 0xffffffffu);
+  std::vector<char> listed(net.size(), 0);
+  for (std::size_t s = 0; s < numbered.edgeOfSide.size(); ++s) {
+    const int e = numbered.edgeOfSide[s];
+    if (e < 0 || listed[e]) continue;
+    listed[e] = 1;
+    const int a = shell.faces[s / 3][s % 3], b = shell.faces[s / 3][(s % 3 + 1) % 3];
+    const int lo = std::min(a, b), hi = std::max(a, b), n = net[e];
     for (int i = 0; i < std::abs(n); ++i) rim.emplace_back(n > 0 ? lo : hi, n > 0 ? hi : lo);
   }
-  std::sort(rim.begin(), rim.end());  // the map's order is not the input's: a canonical one
+  std::sort(rim.begin(), rim.end());  // a canonical order
   UnionFind pieces(static_cast<int>(shell.vertices.size()));
   for (const auto& [a, b] : rim) pieces.joinKeepingSmallest(a, b);
   struct Piece {

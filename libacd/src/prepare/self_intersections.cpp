@@ -209,9 +209,18 @@ std::vector<int> facesCrossingOthers(const TriMesh& mesh, const std::vector<int>
     else
       some.push_back(boxOf(mesh, f));
   }
-  all.reserve(mesh.faces.size());
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
-    if (!degenerate(mesh, static_cast<int>(f))) all.push_back(boxOf(mesh, static_cast<int>(f)));
+  // Only faces whose box meets the box around all of `among` can meet one of theirs: a few patch
+  // faces on a scan of a million then sort a few boxes, not the whole mesh's.
+  FloatBox around{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
+  for (const FaceBox& b : some)
+    for (int k = 0; k < 3; ++k) around.lo[k] = std::min(around.lo[k], b.min_coord(k)), around.hi[k] = std::max(around.hi[k], b.max_coord(k));
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    if (degenerate(mesh, static_cast<int>(f))) continue;
+    FloatBox b = floatBoxOf(mesh, static_cast<int>(f));
+    bool meets = true;
+    for (int k = 0; k < 3; ++k) meets = meets && b.lo[k] <= around.hi[k] && around.lo[k] <= b.hi[k];
+    if (meets) all.push_back(FaceBox(b.lo.data(), b.hi.data(), static_cast<int>(f)));
+  }
   std::vector<const FaceBox*> somePointers, allPointers;
   for (const FaceBox& b : some) somePointers.push_back(&b);
   for (const FaceBox& b : all) allPointers.push_back(&b);

@@ -67,11 +67,23 @@ std::vector<std::pair<int, int>> pairByMaterial(const TriMesh& m, int lo, int hi
   return pairs;
 }
 
+/// True when some edge has four faces or more (or a face repeats a vertex): only then can
+/// anything be split. One pass of edge numbers, where the ordered map below costs a node per edge.
+bool mayTouch(const std::vector<Face>& faces) {
+  const SideEdges numbered = numberEdges(faces);
+  std::vector<unsigned char> uses(numbered.edges, 0);
+  for (const int e : numbered.edgeOfSide) {
+    if (e < 0 || ++uses[e] == 4) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 TouchingSolidsSplit splitTouchingSolids(const TriMesh& mesh) {
   TouchingSolidsSplit out;
   out.mesh = mesh;
+  if (!mayTouch(mesh.faces)) return out;
   std::map<std::pair<int, int>, std::vector<Incidence>> edges;  // ordered: the result follows the mesh, not a hash
   for (int f = 0; f < static_cast<int>(mesh.faces.size()); ++f)
     for (int k = 0; k < 3; ++k) {
