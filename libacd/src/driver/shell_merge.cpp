@@ -43,8 +43,9 @@ int mergeAcrossShells(std::vector<Component>& components, const TriMesh& shells,
   // sampled volumes, and so the order of merges, do not depend on the input's pose.
   const Normalization frame = o.invariant ? canonicalFrame({shells}) : normalization;
   auto toFrame = [&](const TriMesh& m) { return o.invariant ? canonicalMesh(m, frame).mesh : applyNormalization(m, frame); };
-  std::unique_ptr<const ModelExcess> built;  // on the decomposition's threads
-  workerArena(o.threads).execute([&] { built = std::make_unique<const ModelExcess>(applyNormalization(shells, frame), ModelSolid::AnyClosedShell); });
+  tbb::task_arena arena = workerArena(o.threads);  // the decomposition's threads, not all the machine's
+  std::unique_ptr<const ModelExcess> built;
+  arena.execute([&] { built = std::make_unique<const ModelExcess>(applyNormalization(shells, frame), ModelSolid::AnyClosedShell); });
   const ModelExcess& model = *built;
   std::vector<TriMesh> hulls(n);  // in the frame
   std::vector<Box3> boxes(n);
@@ -67,16 +68,18 @@ int mergeAcrossShells(std::vector<Component>& components, const TriMesh& shells,
             boxesWithin(boxes[i], boxes[j], o.tau) && !measured.count({i, j}))
           fresh.emplace_back(i, j);
     std::vector<Candidate> screened(fresh.size());
-    tbb::parallel_for(std::size_t(0), fresh.size(), [&](std::size_t k) {
-      Candidate& c = screened[k];
-      c.i = fresh[k].first, c.j = fresh[k].second;
-      std::vector<Vec3> corners = hulls[c.i].vertices;
-      corners.insert(corners.end(), hulls[c.j].vertices.begin(), hulls[c.j].vertices.end());
-      c.hull = convexHull(corners).mesh;
-      const double volume = components[c.i].volume + components[c.j].volume;
-      const std::uint64_t key = mix64(static_cast<std::uint64_t>(c.i) << 32 | static_cast<std::uint32_t>(c.j));
-      c.cost = model.addedVolume(c.hull, {&hulls[c.i], &hulls[c.j]}, kModelMergeSamples, key, kModelMergeGrowth * volume);
-      c.screened = c.cost <= kModelMergeGrowth * volume;
+    arena.execute([&] {
+      tbb::parallel_for(std::size_t(0), fresh.size(), [&](std::size_t k) {
+        Candidate& c = screened[k];
+        c.i = fresh[k].first, c.j = fresh[k].second;
+        std::vector<Vec3> corners = hulls[c.i].vertices;
+        corners.insert(corners.end(), hulls[c.j].vertices.begin(), hulls[c.j].vertices.end());
+        c.hull = convexHull(corners).mesh;
+        const double volume = components[c.i].volume + components[c.j].volume;
+        const std::uint64_t key = mix64(static_cast<std::uint64_t>(c.i) << 32 | static_cast<std::uint32_t>(c.j));
+        c.cost = model.addedVolume(c.hull, {&hulls[c.i], &hulls[c.j]}, kModelMergeSamples, key, kModelMergeGrowth * volume);
+        c.screened = c.cost <= kModelMergeGrowth * volume;
+      });
     });
     for (Candidate& c : screened) measured[{c.i, c.j}] = std::move(c);
     std::vector<Candidate*> order;
