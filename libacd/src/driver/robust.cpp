@@ -7,7 +7,6 @@
 #include <acd/algo/stopwatch.hpp>
 #include <acd/diagnosis.hpp>
 #include <acd/algo/normalize.hpp>
-#include <acd/algo/parallel.hpp>
 #include <acd/repair.hpp>
 #include <acd/robust.hpp>
 
@@ -17,7 +16,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 #include <set>
 #include <sstream>
 
@@ -414,9 +412,7 @@ bool redoUntangled(Decomposition& d, const TriMesh& shell, int index, const Deco
 /// stands off them (by its offset, and more where it bridges a gap or a fold).
 void measureWrapHullsAgainstInput(Decomposition& result, const TriMesh& wrappedInput) {
   const TriMesh input = applyNormalization(wrappedInput, result.normalization);
-  std::unique_ptr<const ModelExcess> built;  // on the decomposition's threads
-  workerArena(result.options.threads).execute([&] { built = std::make_unique<const ModelExcess>(input); });
-  const ModelExcess& model = *built;
+  const ModelExcess model(input, ModelSolid::Whole, result.options.threads);
   const double tau = result.options.tau;
   for (Component& c : result.components) {
     if (!c.ofWrap) continue;

@@ -14,7 +14,6 @@
 
 #include <algorithm>
 #include <map>
-#include <memory>
 #include <utility>
 
 namespace acd {
@@ -43,10 +42,8 @@ int mergeAcrossShells(std::vector<Component>& components, const TriMesh& shells,
   // sampled volumes, and so the order of merges, do not depend on the input's pose.
   const Normalization frame = o.invariant ? canonicalFrame({shells}) : normalization;
   auto toFrame = [&](const TriMesh& m) { return o.invariant ? canonicalMesh(m, frame).mesh : applyNormalization(m, frame); };
+  const ModelExcess model(applyNormalization(shells, frame), ModelSolid::AnyClosedShell, o.threads);
   tbb::task_arena arena = workerArena(o.threads);  // the decomposition's threads, not all the machine's
-  std::unique_ptr<const ModelExcess> built;
-  arena.execute([&] { built = std::make_unique<const ModelExcess>(applyNormalization(shells, frame), ModelSolid::AnyClosedShell); });
-  const ModelExcess& model = *built;
   std::vector<TriMesh> hulls(n);  // in the frame
   std::vector<Box3> boxes(n);
   for (int i = 0; i < n; ++i) {

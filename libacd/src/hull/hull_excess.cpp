@@ -4,6 +4,7 @@
 #include <acd/algo/face_grid.hpp>
 #include <acd/algo/hull_excess.hpp>
 #include <acd/algo/inside.hpp>
+#include <acd/algo/parallel.hpp>
 #include <acd/algo/random.hpp>
 #include <acd/algo/shell_inside.hpp>
 
@@ -253,18 +254,22 @@ HullExcess measureHullExcess(const TriMesh& mesh, const TriMesh& hull, double li
 }
 
 struct ModelExcess::Impl {
-  Impl(const TriMesh& model, ModelSolid solid) : triangles(trianglesOf(model)) {
+  Impl(const TriMesh& model, ModelSolid solid, int threads) : triangles(trianglesOf(model)) {
     // The inside test and the distance tree share nothing: built side by side.
-    tbb::parallel_invoke(
-        [&] {
-          if (solid == ModelSolid::Whole) whole = std::make_unique<InsideTest>(model);
-          else shells = std::make_unique<ShellsInside>(model);
-        },
-        [&] {
-          tree.insert(triangles.begin(), triangles.end());
-          tree.build();
-          tree.accelerate_distance_queries();
-        });
+    auto build = [&] {
+      tbb::parallel_invoke(
+          [&] {
+            if (solid == ModelSolid::Whole) whole = std::make_unique<InsideTest>(model);
+            else shells = std::make_unique<ShellsInside>(model);
+          },
+          [&] {
+            tree.insert(triangles.begin(), triangles.end());
+            tree.build();
+            tree.accelerate_distance_queries();
+          });
+    };
+    if (threads > 0) workerArena(threads).execute(build);
+    else build();
   }
   bool insideClosed(const Vec3& q) const { return whole ? whole->inside(q) : shells->insideClosed(q); }
   bool insideOpen(const Vec3& q) const { return shells && shells->insideOpen(q); }
@@ -276,7 +281,8 @@ struct ModelExcess::Impl {
   mutable FaceSearches searched;
 };
 
-ModelExcess::ModelExcess(const TriMesh& model, ModelSolid solid) : impl_(std::make_unique<Impl>(model, solid)) {}
+ModelExcess::ModelExcess(const TriMesh& model, ModelSolid solid, int threads)
+    : impl_(std::make_unique<Impl>(model, solid, threads)) {}
 ModelExcess::~ModelExcess() = default;
 
 int ModelExcess::openShells() const { return impl_->shells ? impl_->shells->openShells() : 0; }

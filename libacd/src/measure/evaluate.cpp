@@ -33,7 +33,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <memory>
 #include <map>
 #include <numeric>
 #include <string>
@@ -613,10 +612,8 @@ HullsOffInput hullsOffInput(const TriMesh& input, const Decomposition& d, bool h
   if (!measure) {
     for (std::size_t i = 0; i < d.components.size(); ++i) out.excess[i] = d.components[i].hullExcess;
   } else {
+    const ModelExcess solid(applyNormalization(input, d.normalization), ModelSolid::AnyClosedShell, d.options.threads);
     tbb::task_arena arena = workerArena(d.options.threads);
-    std::unique_ptr<const ModelExcess> model;
-    arena.execute([&] { model = std::make_unique<const ModelExcess>(applyNormalization(input, d.normalization), ModelSolid::AnyClosedShell); });
-    const ModelExcess& solid = *model;
     arena.execute([&] {
       tbb::parallel_for(std::size_t{0}, d.components.size(), [&](std::size_t i) {
         // The search decides "beyond the limit?" and settles patches below it, so a value found

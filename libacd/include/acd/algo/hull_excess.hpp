@@ -39,7 +39,9 @@ enum class ModelSolid { Whole, AnyClosedShell };
 
 class ModelExcess {
  public:
-  explicit ModelExcess(const TriMesh& model, ModelSolid solid = ModelSolid::Whole);
+  /// Built on at most `threads` threads (0: those of the caller's task arena), its inside test and
+  /// distance tree side by side.
+  explicit ModelExcess(const TriMesh& model, ModelSolid solid = ModelSolid::Whole, int threads = 0);
   ~ModelExcess();
   ModelExcess(const ModelExcess&) = delete;
   ModelExcess& operator=(const ModelExcess&) = delete;
