@@ -217,9 +217,7 @@ std::vector<int> facesCrossingOthers(const TriMesh& mesh, const std::vector<int>
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
     if (degenerate(mesh, static_cast<int>(f))) continue;
     FloatBox b = floatBoxOf(mesh, static_cast<int>(f));
-    bool meets = true;
-    for (int k = 0; k < 3; ++k) meets = meets && b.lo[k] <= around.hi[k] && around.lo[k] <= b.hi[k];
-    if (meets) all.push_back(FaceBox(b.lo.data(), b.hi.data(), static_cast<int>(f)));
+    if (boxesMeet(b, around)) all.push_back(FaceBox(b.lo.data(), b.hi.data(), static_cast<int>(f)));
   }
   std::vector<const FaceBox*> somePointers, allPointers;
   for (const FaceBox& b : some) somePointers.push_back(&b);
