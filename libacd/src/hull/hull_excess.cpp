@@ -371,7 +371,7 @@ HullExcess InputExcess::searchFrom(const TriMesh& hull, double limit, double res
   const Impl& m = *impl_;
   Triangle nearestFace;  // the probe's, read by the search before the next probe
   return branchAndBound(hull, limit, resolution,
-                        [&](const Vec3& q, const Patch&, double radius, Vec3& nearest, double& reach,
+                        [&](const Vec3& q, const Patch& p, double radius, Vec3& nearest, double& reach,
                             const Triangle*& face) {
                           nearest = q;  // the grids give distances only
                           // The stand-in's surface and the input's lie within the stand-off of each
@@ -379,17 +379,32 @@ HullExcess InputExcess::searchFrom(const TriMesh& hull, double limit, double res
                           // enough to settle most patches without the input's (finer) grid.
                           const double off = m.standOff;
                           const double within = limit + radius;
-                          const double w = m.standInFaces.nearest(q, std::max(off + radius, within)).distance;
+                          const FaceGrid::Nearest s = m.standInFaces.nearest(q, std::max(off + radius, within));
+                          const double w = s.distance;
                           // Farther than the stand-off (and the patch's radius) from the stand-in's
                           // surface, the whole patch is on one side of the input, the stand-in's.
                           const bool clear = w > off + radius;
                           if (clear && m.standInSide.inside(q)) return -1.0;
                           if (clear && w - off > limit) return w - off;  // beyond, and no nearer than that
-                          if (w + off + radius <= limit) {
+                          // No point of the patch is farther from the stand-in than its corners are
+                          // from the stand-in's face nearest to q (the distance to one triangle is
+                          // convex), nor farther from the input than that and the stand-off. The
+                          // stand-in's faces are as large as tau allows whatever the input's
+                          // resolution, so this settles the band's patches without the input's
+                          // grid (at most w + radius: the old bound, never looser).
+                          double far = w + radius;
+                          if (s.face >= 0 && w + off + radius > limit) {
+                            const Face& t = m.standIn.faces[s.face];
+                            const Vec3 &a = m.standIn.vertices[t[0]], &b = m.standIn.vertices[t[1]], &c = m.standIn.vertices[t[2]];
+                            double corners = 0.0;
+                            for (const Vec3& x : p.corner) corners = std::max(corners, (closestPointOnTriangle(x, a, b, c) - x).norm());
+                            far = std::min(far, corners);
+                          }
+                          if (far + off <= limit) {
                             // Outside, at least w - off from the input; no point of the patch
-                            // farther than w + off + radius: settled.
+                            // farther than far + off: settled.
                             const double d = clear ? std::max(0.0, w - off) : 0.0;
-                            reach = w + off + radius - d;
+                            reach = far + off - d;
                             return d;
                           }
                           // Only the distance decides beyond limit + radius: a value there is a
