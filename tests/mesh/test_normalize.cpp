@@ -86,3 +86,30 @@ TEST(MinimumSphereNormalization, RepeatedPointsInAnyOrderGiveTheSameSphere) {
   EXPECT_EQ(a.center, b.center);
   EXPECT_NEAR(1.0 / a.scale, 4.0, 1e-9);  // the torus's outer radius (its rings' vertices lie on it)
 }
+
+// The last vertex list's sphere is remembered: asked again on the same vertices it comes back
+// as it was; a list that differs in one vertex's last bit, or in its length, gets its own.
+TEST(MinimumSphereNormalization, AskedAgainOnlyTheSameVerticesGetTheSameSphere) {
+  const TriMesh box = shapes::box(Vec3(0, 0, 0), Vec3(2, 2, 2));
+  const Normalization first = minimumSphereNormalization(box);
+  EXPECT_TRUE(first.center.isApprox(Vec3(1, 1, 1), 1e-12));
+  EXPECT_NEAR(1.0 / first.scale, std::sqrt(3.0), 1e-12);
+
+  TriMesh moved = box;
+  const auto corner = std::max_element(moved.vertices.begin(), moved.vertices.end(),
+                                       [](const Vec3& a, const Vec3& b) { return a.sum() < b.sum(); });
+  *corner = Vec3(4, 4, 4);  // the box's far corner pulled out along the diagonal: a larger sphere
+  const Normalization pulled = minimumSphereNormalization(moved);
+  EXPECT_NEAR(1.0 / pulled.scale, 2.0 * std::sqrt(3.0), 1e-12);  // half the diagonal from the origin to it
+  EXPECT_TRUE(pulled.center.isApprox(Vec3(2, 2, 2), 1e-12));
+
+  (*corner).x() = std::nextafter(4.0, 5.0);  // one bit apart: not the same vertices
+  EXPECT_NE(minimumSphereNormalization(moved).center.x(), pulled.center.x());
+
+  moved.vertices.push_back(Vec3(-4, -4, -4));  // one more vertex
+  EXPECT_NEAR(1.0 / minimumSphereNormalization(moved).scale, 4.0 * std::sqrt(3.0), 1e-12);
+
+  const Normalization again = minimumSphereNormalization(box);
+  EXPECT_EQ(again.center, first.center);
+  EXPECT_EQ(again.scale, first.scale);
+}
