@@ -103,7 +103,7 @@ TEST(MinimumSphereNormalization, AskedAgainOnlyTheSameVerticesGetTheSameSphere) 
   EXPECT_NEAR(1.0 / pulled.scale, 2.0 * std::sqrt(3.0), 1e-12);  // half the diagonal from the origin to it
   EXPECT_TRUE(pulled.center.isApprox(Vec3(2, 2, 2), 1e-12));
 
-  (*corner).x() = std::nextafter(4.0, 5.0);  // one bit apart: not the same vertices
+  corner->x() = std::nextafter(4.0, 5.0);  // one bit apart: not the same vertices
   EXPECT_NE(minimumSphereNormalization(moved).center.x(), pulled.center.x());
 
   moved.vertices.push_back(Vec3(-4, -4, -4));  // one more vertex

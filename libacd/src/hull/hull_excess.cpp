@@ -379,8 +379,8 @@ HullExcess InputExcess::searchFrom(const TriMesh& hull, double limit, double res
                           // enough to settle most patches without the input's (finer) grid.
                           const double off = m.standOff;
                           const double within = limit + radius;
-                          const FaceGrid::Nearest s = m.standInFaces.nearest(q, std::max(off + radius, within));
-                          const double w = s.distance;
+                          const FaceGrid::Nearest onStandIn = m.standInFaces.nearest(q, std::max(off + radius, within));
+                          const double w = onStandIn.distance;
                           // Farther than the stand-off (and the patch's radius) from the stand-in's
                           // surface, the whole patch is on one side of the input, the stand-in's.
                           const bool clear = w > off + radius;
@@ -393,8 +393,8 @@ HullExcess InputExcess::searchFrom(const TriMesh& hull, double limit, double res
                           // resolution, so this settles the band's patches without the input's
                           // grid (at most w + radius: the old bound, never looser).
                           double far = w + radius;
-                          if (s.face >= 0 && w + off + radius > limit) {
-                            const Face& t = m.standIn.faces[s.face];
+                          if (onStandIn.face >= 0 && w + off + radius > limit) {
+                            const Face& t = m.standIn.faces[onStandIn.face];
                             const Vec3 &a = m.standIn.vertices[t[0]], &b = m.standIn.vertices[t[1]], &c = m.standIn.vertices[t[2]];
                             double corners = 0.0;
                             for (const Vec3& x : p.corner) corners = std::max(corners, (closestPointOnTriangle(x, a, b, c) - x).norm());
