@@ -395,10 +395,9 @@ HullExcess InputExcess::searchFrom(const TriMesh& hull, double limit, double res
                           double far = w + radius;
                           if (onStandIn.face >= 0 && w + off + radius > limit) {
                             const Face& t = m.standIn.faces[onStandIn.face];
-                            const Vec3 &a = m.standIn.vertices[t[0]], &b = m.standIn.vertices[t[1]], &c = m.standIn.vertices[t[2]];
-                            double corners = 0.0;
-                            for (const Vec3& x : p.corner) corners = std::max(corners, (closestPointOnTriangle(x, a, b, c) - x).norm());
-                            far = std::min(far, corners);
+                            const Triangle standInFace(toPoint(m.standIn.vertices[t[0]]), toPoint(m.standIn.vertices[t[1]]),
+                                                       toPoint(m.standIn.vertices[t[2]]));
+                            far = std::min(far, farthestCornerFrom(standInFace, p).first);
                           }
                           if (far + off <= limit) {
                             // Outside, at least w - off from the input; no point of the patch
